@@ -1,0 +1,20 @@
+# Every dependency comes from a Debian 12 package (scripts/setup.sh installs them); nothing is downloaded.
+find_package(Threads REQUIRED)
+find_package(glm REQUIRED)                      # libglm-dev
+find_package(ZLIB REQUIRED)                     # zlib1g-dev: CRC-32 of .vxm files
+find_package(nlohmann_json 3.10 REQUIRED)       # nlohmann-json3-dev: CLI --json output
+find_package(CLI11 REQUIRED)                    # libcli11-dev: command-line parsing
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)   # libstb-dev: PNG writing (stbi_write_png lives in libstb.so)
+
+set(OpenGL_GL_PREFERENCE GLVND)
+find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)   # libopengl-dev, libegl-dev
+find_package(glfw3 3.3 REQUIRED)                      # libglfw3-dev
+pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)   # libimgui-dev (holds the GLFW + OpenGL3 backends)
+
+if(VOXMOD_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(VOXMOD_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()

@@ -1,0 +1,12 @@
+# Compiler warnings and sanitizers, applied to voxmod's own targets through voxmod_target_options().
+add_library(voxmod_options INTERFACE)
+target_compile_options(voxmod_options INTERFACE -Wall -Wextra -Wpedantic -Wshadow -Wconversion-null
+  -Wnon-virtual-dtor -Woverloaded-virtual -Wimplicit-fallthrough)
+if(VOXMOD_WERROR)
+  target_compile_options(voxmod_options INTERFACE -Werror)
+endif()
+if(VOXMOD_SANITIZE)
+  target_compile_options(voxmod_options INTERFACE -fsanitize=${VOXMOD_SANITIZE} -fno-omit-frame-pointer
+    -fno-sanitize-recover=all)
+  target_link_options(voxmod_options INTERFACE -fsanitize=${VOXMOD_SANITIZE})
+endif()

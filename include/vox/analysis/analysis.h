@@ -1,0 +1,141 @@
+#pragma once
+// Geometric analysis of a voxel model (thesis chapter 5.2): surface statistics, sections, skin removal, X-ray
+// thickness, mass properties, booleans. No GL; the CLI and the GUI call these with the same params structs.
+// Images follow vox/core/image.h (row 0 at the top). Counts are in voxels; *_mm values in model units.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include "vox/core/image.h"
+#include "vox/core/mesh.h"
+#include "vox/core/progress.h"
+#include "vox/core/result.h"
+#include "vox/core/voxel_grid.h"
+
+namespace vox {
+
+enum class Axis { kX = 0, kY = 1, kZ = 2 };
+const char* axisName(Axis a);  // "x", "y", "z"
+std::optional<Axis> parseAxis(const std::string& s);
+
+// ---- Surface and codes (thesis Table 5.1) ----
+struct SurfaceStats {
+  int64_t filled = 0;
+  int64_t surface_voxels = 0;                // filled with at least one empty face neighbour
+  std::array<int64_t, 64> code_histogram{};  // over all filled voxels; [63] = interior
+  int64_t suspect_voxels = 0;                // four or five free faces: likely voxelization errors (thesis 4.3.3)
+};
+SurfaceStats computeSurfaceStats(const VoxelGrid& grid);
+
+// ---- Section (thesis 5.2.1) ----
+struct SectionParams {
+  Axis axis = Axis::kZ;
+  int32_t index = 0;  // voxel index along the axis, 0 <= index < n_axis
+};
+struct Section {
+  Axis axis = Axis::kZ;
+  int32_t index = 0;
+  double position = 0.0;  // model-unit coordinate of the cut plane (the voxel centres' plane)
+  int64_t filled = 0;
+  // Filled mask, 0 or 1. Image axes: X section -> (y right, z up), Y section -> (x right, z up),
+  // Z section -> (x right, y up); "up" means row 0 holds the largest index.
+  Image2D<uint8_t> mask;
+};
+Result<Section> computeSection(const VoxelGrid& grid, const SectionParams& params);
+// Filled voxels in one section, without building the image. O(section words).
+int64_t sectionCount(const VoxelGrid& grid, Axis axis, int32_t index);
+// A picture of the section: material in a solid colour, outline voxels (material with an empty in-plane
+// neighbour) darker, empty space light grey; `scale` pixels per voxel.
+ImageRgb renderSection(const Section& section, int32_t scale = 1);
+
+// ---- Skin removal (thesis 5.2.2) ----
+// Every filled voxel with at least one empty face neighbour (6-connectivity) is removed at once, decided on the
+// configuration before the layer. The depth of a voxel is the layer (1-based) that removes it; the last non-empty
+// layer is the core (the thickest region).
+class DepthMap {
+ public:
+  int32_t layers() const { return int32_t(removed_per_layer_.size()); }
+  const std::vector<int64_t>& removedPerLayer() const { return removed_per_layer_; }
+  int64_t coreVoxels() const { return removed_per_layer_.empty() ? 0 : removed_per_layer_.back(); }
+  // Voxels still present after peeling k layers (k = 0: the original; k >= layers(): empty).
+  VoxelGrid remainingAfter(int32_t k) const;
+  // Voxels removed by layer k (1-based); the core is removedBy(layers()).
+  VoxelGrid removedBy(int32_t k) const;
+  // Depth of a voxel (0 for empty voxels).
+  int32_t depthAt(int32_t x, int32_t y, int32_t z) const;
+  size_t memoryBytes() const;
+
+ private:
+  friend Result<DepthMap> computeDepthMap(const VoxelGrid&, const ProgressFn&, int32_t);
+  std::vector<int64_t> removed_per_layer_;
+  std::vector<VoxelGrid> depth_bits_;  // binary digits of the depth, one grid per bit, least significant first
+  VoxelGrid original_;
+};
+// Peels up to max_layers (all when < 0). Cost: O(layers * words).
+Result<DepthMap> computeDepthMap(const VoxelGrid& grid, const ProgressFn& progress = {}, int32_t max_layers = -1);
+
+struct PeelParams {
+  int32_t layers = 1;  // ignored when all = true
+  bool all = false;
+};
+struct PeelResult {
+  VoxelGrid remaining;
+  std::vector<int64_t> removed_per_layer;
+  int64_t remaining_count = 0;
+  int64_t core_voxels = 0;  // voxels of the last non-empty layer peeled (with all = true: the thickest region)
+};
+Result<PeelResult> peelSkin(const VoxelGrid& grid, const PeelParams& params, const ProgressFn& progress = {});
+// One layer of skin removal, for callers that step.
+VoxelGrid peelOneLayer(const VoxelGrid& grid, int64_t* removed = nullptr);
+
+// ---- X-ray thickness (thesis 5.2.3) ----
+enum class XrayMode { kMin, kMax, kTotal };
+const char* xrayModeName(XrayMode m);  // "min", "max", "total"
+std::optional<XrayMode> parseXrayMode(const std::string& s);
+struct XrayParams {
+  Axis axis = Axis::kZ;
+  XrayMode mode = XrayMode::kTotal;
+};
+struct XrayResult {
+  Axis axis = Axis::kZ;
+  XrayMode mode = XrayMode::kTotal;
+  double voxel_size = 1.0;
+  std::string units;
+  // Per ray: min / max length of the filled runs, or their total, in voxels; 0 where the ray hits nothing.
+  // Image axes as for Section.
+  Image2D<int32_t> thickness;
+  int64_t rays_hit = 0;
+  int64_t min = 0, max = 0;  // over rays that hit material
+  double mean = 0.0;
+};
+Result<XrayResult> computeXray(const VoxelGrid& grid, const XrayParams& params);
+// Colour-scaled image with a colour bar and a legend (values in voxels and model units); `scale` pixels per ray.
+ImageRgb renderXray(const XrayResult& xray, int32_t scale = 1);
+// CSV: header "u,v,thickness_voxels,thickness_<units>", one line per ray that hits material.
+std::string xrayCsv(const XrayResult& xray);
+
+// ---- Mass properties (thesis 2.6.1) ----
+struct MassProperties {
+  int64_t filled = 0;
+  double volume = 0.0;            // filled * h^3
+  glm::dvec3 centroid{0.0};       // of the voxel centres
+  glm::dmat3 inertia{0.0};        // about the centroid, unit density, each voxel a solid cube (products negative)
+  Box3d bbox;                     // outer faces of the filled voxels
+  glm::ivec3 bbox_min_ijk{0}, bbox_max_ijk{-1};  // inclusive voxel indices
+  // Discretisation bound on |volume - true volume| for a grid made by centre sampling: surface voxels * h^3
+  // (every voxel the surface passes through may be wrongly classified).
+  double volume_error_bound = 0.0;
+};
+MassProperties computeMassProperties(const VoxelGrid& grid);
+
+// ---- Booleans (thesis 7.2) ----
+enum class BoolOp { kUnion, kIntersection, kDifference };
+// Both grids must have the same dims and frame (same lattice); otherwise an error says what differs.
+Result<VoxelGrid> booleanOp(const VoxelGrid& a, const VoxelGrid& b, BoolOp op);
+
+}  // namespace vox

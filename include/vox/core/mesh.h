@@ -1,0 +1,53 @@
+#pragma once
+// Triangle soup as read from an STL file: vertices as stored (float32), no shared-vertex structure. Topology
+// (watertightness) is measured by welding vertices with exactly equal coordinates, as the shared corpus does.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace vox {
+
+struct Triangle {
+  glm::vec3 v[3];
+};
+
+// Axis-aligned box in model units. An empty box has min > max.
+struct Box3d {
+  glm::dvec3 min{1e300};
+  glm::dvec3 max{-1e300};
+  bool empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
+  glm::dvec3 extent() const { return empty() ? glm::dvec3(0) : max - min; }
+  void expand(const glm::dvec3& p);
+};
+
+struct TriangleMesh {
+  std::vector<Triangle> triangles;
+  std::string name;  // usually the source file's name; used in messages
+
+  // Bounding box of all vertices, float32 promoted to double (SPEC section 1).
+  Box3d bounds() const;
+};
+
+struct MeshTopology {
+  int64_t vertices = 0;              // distinct positions (exact float equality; -0 == +0)
+  int64_t edges = 0;                 // distinct undirected edges
+  int64_t boundary_edges = 0;        // used by exactly one triangle
+  int64_t nonmanifold_edges = 0;     // used by three or more triangles
+  int64_t inconsistent_edges = 0;    // two-triangle edges traversed in the same direction by both (mixed winding)
+  int64_t degenerate_triangles = 0;  // a repeated vertex or exactly zero area
+  bool watertight() const { return boundary_edges == 0 && nonmanifold_edges == 0; }
+};
+
+// Welds vertices by exact coordinate equality and counts edges by use. O(T log T).
+MeshTopology analyzeTopology(const TriangleMesh& mesh);
+
+// Signed volume by the divergence theorem (positive for an outward-oriented closed mesh), in model units cubed.
+// Summed about the bounding-box centre to limit cancellation.
+double signedVolume(const TriangleMesh& mesh);
+
+// True when the triangle has a repeated vertex or exactly zero area (its cross product is zero in double).
+bool isDegenerate(const Triangle& t);
+
+}  // namespace vox

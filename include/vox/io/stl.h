@@ -1,0 +1,33 @@
+#pragma once
+// STL reader (binary and ASCII, chosen by content: a binary file whose 80-byte header starts with "solid" is still
+// binary when its size matches 84 + 50 * count). Errors name the file, and the line for ASCII, e.g.
+// "part.stl:88: expected 'vertex', found 'endloop'".
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "vox/core/mesh.h"
+#include "vox/core/result.h"
+
+namespace vox::io {
+
+struct StlLoad {
+  TriangleMesh mesh;                  // degenerate triangles are kept (they cross no ray); see warnings
+  bool ascii = false;
+  std::string header;                 // binary: the 80-byte header (trimmed); ASCII: the first solid's name
+  MeshTopology topology;              // watertightness: boundary and non-manifold edge counts
+  std::vector<std::string> warnings;  // e.g. "part.stl: 3 degenerate triangles", "part.stl: not watertight: ..."
+};
+
+// Reads an STL file. Fails on: missing/unreadable file, empty mesh, truncated binary data, a binary triangle count
+// that does not match the file size, NaN/Inf coordinates, bad ASCII tokens.
+Result<StlLoad> loadStl(const std::filesystem::path& path);
+// The same from bytes in memory; `name` is used in messages (for tests and fuzzing).
+Result<StlLoad> parseStl(std::span<const uint8_t> bytes, const std::string& name);
+
+// Writes a binary STL atomically (used by tests and tools to generate meshes).
+Status saveStlBinary(const TriangleMesh& mesh, const std::filesystem::path& path);
+
+}  // namespace vox::io

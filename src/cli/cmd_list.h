@@ -1,0 +1,10 @@
+#pragma once
+// One function per subcommand (cmd_<name>.cpp); commands.cpp lists them in its table.
+namespace CLI {
+class App;
+}
+namespace vox::cli {
+struct CommandContext;
+void addInfoCommand(CLI::App& sub, CommandContext& ctx);
+void addConvertCommand(CLI::App& sub, CommandContext& ctx);
+}  // namespace vox::cli

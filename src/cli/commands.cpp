@@ -1,0 +1,48 @@
+#include "cli/commands.h"
+
+#include <cstdio>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/cmd_list.h"
+
+namespace vox::cli {
+
+// The explicit table: name, one-line summary, the function that adds its options (cmd_<name>.cpp).
+const std::vector<Command>& commands() {
+  static const std::vector<Command> table = {
+      {"info", "Describe a mesh or voxel file (dims, voxel size, filled and surface voxels)", addInfoCommand},
+      {"convert", "Convert between voxel formats (.vxm, .binvox)", addConvertCommand},
+  };
+  return table;
+}
+
+const Command* findCommand(const std::string& name) {
+  for (const Command& c : commands())
+    if (name == c.name) return &c;
+  return nullptr;
+}
+
+int runCommandLine(int argc, char** argv) {
+  CLI::App app{"voxmod: voxel solid modeler. With no subcommand, or with a mesh or voxel file, it opens the "
+               "modeler window; with a subcommand it works headless.",
+               "voxmod"};
+  app.set_version_flag("--version", "voxmod 0.1.0");
+  app.require_subcommand(1);
+  app.footer("Run 'voxmod SUBCOMMAND --help' for a subcommand's options. Exit codes: 0 ok, 1 usage, "
+             "2 input or output error, 3 no usable OpenGL (render).");
+  CommandContext ctx;
+  for (const Command& c : commands()) {
+    CLI::App* sub = app.add_subcommand(c.name, c.summary);
+    c.add(*sub, ctx);
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 1;  // --help and --version exit 0; every parse error is a usage error (1)
+  }
+  return ctx.exit_code;
+}
+
+}  // namespace vox::cli

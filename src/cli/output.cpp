@@ -1,0 +1,41 @@
+#include "cli/output.h"
+
+#include <cstdio>
+#include <iostream>
+
+namespace vox::cli {
+
+void Output::say(const std::string& line) const {
+  std::FILE* f = json_ ? stderr : stdout;
+  std::fprintf(f, "%s\n", line.c_str());
+}
+
+void Output::warn(const std::string& line) {
+  std::fprintf(stderr, "warning: %s\n", line.c_str());
+}
+
+int exitCodeFor(const Error& e) {
+  switch (e.code) {
+    case ErrorCode::kInvalidArgument: return kExitUsage;
+    case ErrorCode::kNoOpenGL: return kExitNoGL;
+    default: return kExitIo;
+  }
+}
+
+int Output::fail(const Error& error) { return fail(exitCodeFor(error), error.message); }
+
+int Output::fail(int exit_code, const std::string& message) {
+  std::fprintf(stderr, "voxmod: error: %s\n", message.c_str());
+  if (json_) {
+    data_["error"] = message;
+    std::cout << data_.dump() << std::endl;
+  }
+  return exit_code;
+}
+
+int Output::finish() {
+  if (json_) std::cout << data_.dump() << std::endl;
+  return kExitOk;
+}
+
+}  // namespace vox::cli

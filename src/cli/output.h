@@ -1,0 +1,39 @@
+#pragma once
+// How subcommands talk: with --json, exactly one JSON object on stdout and human messages on stderr; without it,
+// a short human summary on stdout. Errors always go to stderr (and into the JSON object as "error").
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "vox/core/result.h"
+
+namespace vox::cli {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitUsage = 1;
+inline constexpr int kExitIo = 2;
+inline constexpr int kExitNoGL = 3;
+
+class Output {
+ public:
+  explicit Output(bool json) : json_(json) {}
+  bool json() const { return json_; }
+  nlohmann::ordered_json& data() { return data_; }
+  // Human line: stdout without --json, stderr with it (stdout then holds only the JSON object).
+  void say(const std::string& line) const;
+  void warn(const std::string& line);  // also collected into "warnings" when the command reports them
+  // Prints the error, emits the JSON object (with "error") and returns the exit code for it.
+  int fail(const Error& error);
+  int fail(int exit_code, const std::string& message);
+  // Emits the JSON object (when --json) and returns 0.
+  int finish();
+
+ private:
+  bool json_;
+  nlohmann::ordered_json data_ = nlohmann::ordered_json::object();
+};
+
+// Exit code for an error: usage problems 1, no OpenGL 3, everything else (input/output) 2.
+int exitCodeFor(const Error& e);
+
+}  // namespace vox::cli

@@ -1,0 +1,67 @@
+#include "vox/core/grid_placement.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace vox {
+namespace {
+
+Result<GridPlacement> place(const Box3d& bounds, double h, int64_t resolution) {
+  const glm::dvec3 e = bounds.extent();
+  GridPlacement p;
+  p.resolution = int32_t(resolution);
+  p.frame.origin = bounds.min;
+  p.frame.voxel_size = h;
+  auto axis = [&](double extent) {
+    // ceil(extent / h) may come out one too high through rounding on the longest axis; that axis has R voxels.
+    const double n = std::ceil(extent / h);
+    return int32_t(std::clamp<double>(n, 1.0, double(resolution)));
+  };
+  p.dims = Dims{axis(e.x), axis(e.y), axis(e.z)};
+  return p;
+}
+
+Status checkBounds(const Box3d& bounds) {
+  if (bounds.empty()) return makeError(ErrorCode::kInvalidArgument, "the mesh has no vertices");
+  const glm::dvec3 e = bounds.extent();
+  for (int a = 0; a < 3; ++a) {
+    if (!std::isfinite(bounds.min[a]) || !std::isfinite(bounds.max[a]))
+      return makeError(ErrorCode::kInvalidArgument, "the bounding box is not finite");
+  }
+  if (std::max({e.x, e.y, e.z}) <= 0.0)
+    return makeError(ErrorCode::kInvalidArgument, "the mesh has zero extent (all vertices coincide)");
+  return Ok{};
+}
+
+}  // namespace
+
+Result<GridPlacement> placeGridByResolution(const Box3d& bounds, int64_t resolution) {
+  if (resolution < 1 || resolution > kMaxResolution) {
+    return makeError(ErrorCode::kInvalidArgument, "resolution " + std::to_string(resolution) +
+                                                      " is out of range (1 to " + std::to_string(kMaxResolution) + ")");
+  }
+  if (auto s = checkBounds(bounds); !s) return s.error();
+  const glm::dvec3 e = bounds.extent();
+  const double extent = std::max({e.x, e.y, e.z});
+  return place(bounds, extent / double(resolution), resolution);
+}
+
+Result<GridPlacement> placeGridByVoxelSize(const Box3d& bounds, double voxel_size) {
+  if (!(voxel_size > 0.0) || !std::isfinite(voxel_size)) {
+    return makeError(ErrorCode::kInvalidArgument, "voxel size must be a positive number");
+  }
+  if (auto s = checkBounds(bounds); !s) return s.error();
+  const glm::dvec3 e = bounds.extent();
+  const double extent = std::max({e.x, e.y, e.z});
+  const double r = std::ceil(extent / voxel_size);
+  if (r > double(kMaxResolution)) {
+    return makeError(ErrorCode::kLimit, "voxel size " + std::to_string(voxel_size) + " gives " +
+                                            std::to_string(int64_t(std::min(r, 1e15))) +
+                                            " voxels on the longest axis (at most " +
+                                            std::to_string(kMaxResolution) + ")");
+  }
+  return place(bounds, voxel_size, std::max<int64_t>(1, int64_t(r)));
+}
+
+}  // namespace vox

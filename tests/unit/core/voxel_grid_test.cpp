@@ -1,0 +1,207 @@
+#include "vox/core/voxel_grid.h"
+
+#include <gtest/gtest.h>
+
+#include "vox/core/grid_placement.h"
+#include "vox/core/neighbour_code.h"
+#include "vox/core/surface.h"
+
+namespace vox {
+namespace {
+
+VoxelGrid box(Dims d, glm::ivec3 lo, glm::ivec3 hi) {  // filled box [lo, hi)
+  VoxelGrid g(d);
+  for (int z = lo.z; z < hi.z; ++z)
+    for (int y = lo.y; y < hi.y; ++y) g.fillRun(y, z, lo.x, hi.x);
+  return g;
+}
+
+TEST(VoxelGrid, newGridIsEmptyAndAllocatesNoLayers) {
+  VoxelGrid g(Dims{10, 20, 30});
+  EXPECT_EQ(g.filledCount(), 0);
+  EXPECT_EQ(g.allocatedLayers(), 0);
+  EXPECT_FALSE(g.get(0, 0, 0));
+  EXPECT_FALSE(g.get(-1, -1, -1));  // padding reads as empty
+  EXPECT_FALSE(g.get(10, 20, 30));
+}
+
+TEST(VoxelGrid, setResetAndReadBackEveryCornerAndWordBoundary) {
+  VoxelGrid g(Dims{130, 3, 2});  // 132 padded bits: three words per row
+  for (int x : {0, 1, 62, 63, 64, 65, 126, 127, 128, 129}) {
+    g.set(x, 2, 1);
+    EXPECT_TRUE(g.get(x, 2, 1)) << x;
+    EXPECT_FALSE(g.get(x, 1, 1)) << x;
+  }
+  EXPECT_EQ(g.filledCount(), 10);
+  g.reset(63, 2, 1);
+  EXPECT_FALSE(g.get(63, 2, 1));
+  EXPECT_EQ(g.filledCount(), 9);
+  EXPECT_EQ(g.allocatedLayers(), 1);  // only layer z = 1 holds voxels
+}
+
+TEST(VoxelGrid, resetOnEmptyLayerDoesNotAllocate) {
+  VoxelGrid g(Dims{4, 4, 4});
+  g.reset(1, 1, 1);
+  EXPECT_EQ(g.allocatedLayers(), 0);
+}
+
+TEST(VoxelGrid, fillRunMatchesPerVoxelSetsAcrossWords) {
+  for (auto [x0, x1] : std::vector<std::pair<int, int>>{{0, 1}, {0, 200}, {5, 63}, {62, 66}, {63, 64}, {127, 190}}) {
+    VoxelGrid a(Dims{200, 1, 1}), b(Dims{200, 1, 1});
+    a.fillRun(0, 0, x0, x1);
+    for (int x = x0; x < x1; ++x) b.set(x, 0, 0);
+    for (int x = -1; x <= 200; ++x) ASSERT_EQ(a.get(x, 0, 0), b.get(x, 0, 0)) << x0 << ".." << x1 << " at " << x;
+    EXPECT_EQ(a.filledCount(), x1 - x0);
+  }
+}
+
+TEST(VoxelGrid, fillRunClampsToGridAndKeepsPaddingEmpty) {
+  VoxelGrid g(Dims{64, 1, 1});
+  g.fillRun(0, 0, -5, 500);
+  EXPECT_EQ(g.filledCount(), 64);
+  EXPECT_FALSE(g.get(-1, 0, 0));
+  EXPECT_FALSE(g.get(64, 0, 0));
+}
+
+TEST(VoxelGrid, indexUses64BitArithmeticAt4096Cubed) {
+  VoxelGrid g(Dims{4096, 4096, 4096});
+  const int64_t last = g.index(4095, 4095, 4095);
+  EXPECT_EQ(last, int64_t(4096) * 4096 * 4096 - 1);
+  EXPECT_EQ(g.coordinates(last), glm::ivec3(4095, 4095, 4095));
+  EXPECT_EQ(g.coordinates(g.index(7, 4000, 3000)), glm::ivec3(7, 4000, 3000));
+  g.set(4095, 4095, 4095);  // allocates one layer of 4098 rows x 65 words
+  EXPECT_TRUE(g.get(4095, 4095, 4095));
+  EXPECT_EQ(g.allocatedLayers(), 1);
+}
+
+TEST(VoxelGrid, neighbourCodeBitsFollowSpecOrder) {
+  // Centre voxel with exactly one neighbour at a time: each direction sets its own bit (SPEC section 2).
+  struct Case {
+    glm::ivec3 offset;
+    uint8_t bit;
+  };
+  for (Case c : {Case{{0, -1, 0}, 32}, Case{{-1, 0, 0}, 16}, Case{{1, 0, 0}, 8}, Case{{0, 1, 0}, 4},
+                 Case{{0, 0, -1}, 2}, Case{{0, 0, 1}, 1}}) {
+    VoxelGrid g(Dims{3, 3, 3});
+    g.set(1, 1, 1);
+    g.set(1 + c.offset.x, 1 + c.offset.y, 1 + c.offset.z);
+    EXPECT_EQ(g.neighbourCode(1, 1, 1), c.bit);
+  }
+  VoxelGrid full = box(Dims{3, 3, 3}, {0, 0, 0}, {3, 3, 3});
+  EXPECT_EQ(full.neighbourCode(1, 1, 1), kCodeInterior);
+  EXPECT_EQ(full.neighbourCode(0, 0, 0), kCodeXPlus | kCodeYPlus | kCodeZPlus);  // border: outside is empty
+}
+
+TEST(NeighbourCode, classicTableMatchesSpecEntries) {
+  EXPECT_EQ(classicIntensity(0), 20);
+  EXPECT_EQ(classicIntensity(2), 20);
+  EXPECT_EQ(classicIntensity(28), 20);  // the misprinted second "2"
+  EXPECT_EQ(classicIntensity(29), 10);
+  EXPECT_EQ(classicIntensity(53), 19);
+  EXPECT_EQ(classicIntensity(62), 17);  // table rules over Figure 5.2
+  EXPECT_EQ(freeFaces(0), 6);
+  EXPECT_EQ(freeFaces(62), 1);
+  EXPECT_EQ(freeFaces(63), 0);
+}
+
+TEST(VoxelGrid, neighbourAtAndCellDistances) {
+  VoxelGrid g(Dims{5, 5, 5});
+  EXPECT_EQ(g.neighbourAt({2, 2, 2}, Direction::kXPlus, 2), glm::ivec3(4, 2, 2));
+  EXPECT_EQ(g.neighbourAt({2, 2, 2}, Direction::kYMinus, 2), glm::ivec3(2, 0, 2));
+  EXPECT_FALSE(g.neighbourAt({2, 2, 2}, Direction::kZPlus, 3).has_value());
+  EXPECT_EQ(cellDistance({0, 0, 0}, {3, -4, 5}), 12);
+  EXPECT_EQ(chebyshevDistance({0, 0, 0}, {3, -4, 5}), 5);
+}
+
+TEST(VoxelGrid, copiesShareLayersUntilWritten) {
+  VoxelGrid a = box(Dims{8, 8, 8}, {1, 1, 1}, {7, 7, 7});
+  VoxelGrid b = a;  // snapshot
+  for (int z = 0; z < 8; ++z) EXPECT_TRUE(a.sharesLayerWith(b, z)) << z;
+  b.reset(3, 3, 3);
+  EXPECT_TRUE(a.get(3, 3, 3));   // the snapshot keeps its data
+  EXPECT_FALSE(b.get(3, 3, 3));
+  EXPECT_FALSE(a.sharesLayerWith(b, 3));
+  EXPECT_TRUE(a.sharesLayerWith(b, 4));
+  EXPECT_EQ(a.filledCount(), 216);
+  EXPECT_EQ(b.filledCount(), 215);
+}
+
+TEST(VoxelGrid, clearAndReleaseEmptyLayers) {
+  VoxelGrid g = box(Dims{8, 8, 8}, {0, 0, 2}, {8, 8, 4});
+  EXPECT_EQ(g.allocatedLayers(), 2);
+  const size_t full = g.memoryBytes();
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) g.reset(x, y, 3);
+  g.releaseEmptyLayers();
+  EXPECT_EQ(g.allocatedLayers(), 1);
+  EXPECT_LT(g.memoryBytes(), full);
+  g.clear();
+  EXPECT_EQ(g.filledCount(), 0);
+  EXPECT_EQ(g.allocatedLayers(), 0);
+  EXPECT_EQ(g.dims(), (Dims{8, 8, 8}));
+}
+
+TEST(Surface, cubeSurfaceCountAndCodesMatchBruteForce) {
+  VoxelGrid g = box(Dims{70, 9, 9}, {1, 1, 1}, {69, 8, 8});  // spans two words per row
+  g.reset(30, 4, 4);  // an interior cavity adds six surface voxels
+  int64_t brute = 0;
+  for (int z = 0; z < 9; ++z)
+    for (int y = 0; y < 9; ++y)
+      for (int x = 0; x < 70; ++x)
+        if (g.get(x, y, z) && g.neighbourCode(x, y, z) != kCodeInterior) ++brute;
+  EXPECT_EQ(countSurfaceVoxels(g), brute);
+  int64_t visited = 0;
+  forEachSurfaceVoxel(g, [&](int32_t x, int32_t y, int32_t z, uint8_t code) {
+    ++visited;
+    ASSERT_TRUE(g.get(x, y, z));
+    ASSERT_EQ(code, g.neighbourCode(x, y, z)) << x << "," << y << "," << z;
+  });
+  EXPECT_EQ(visited, brute);
+  const int64_t shell = 68 * 7 * 7 - 66 * 5 * 5;
+  EXPECT_EQ(brute, shell + 6);
+}
+
+TEST(GridPlacement, longestAxisHasExactlyRVoxels) {
+  Box3d b;
+  b.expand({0.1371, 0.2459, 0.3187});
+  b.expand({1.3716, 1.4804, 1.5532});
+  for (int r : {1, 64, 100, 128, 1000, 4096}) {
+    auto p = placeGridByResolution(b, r);
+    ASSERT_TRUE(p.ok());
+    EXPECT_EQ(std::max({p->dims.nx, p->dims.ny, p->dims.nz}), r);
+    EXPECT_DOUBLE_EQ(p->frame.voxel_size, (1.5532 - 0.3187) / r);
+  }
+  Box3d flat;
+  flat.expand({0, 0, 0});
+  flat.expand({203.2, 304.8, 0});
+  auto p = placeGridByResolution(flat, 100);
+  ASSERT_TRUE(p.ok());
+  EXPECT_EQ(p->dims, (Dims{67, 100, 1}));  // a zero-thickness axis still has one voxel
+}
+
+TEST(GridPlacement, rejectsAbsurdRequestsWithReasons) {
+  Box3d b;
+  b.expand({0, 0, 0});
+  b.expand({1, 2, 3});
+  auto zero = placeGridByResolution(b, 0);
+  ASSERT_FALSE(zero.ok());
+  EXPECT_EQ(zero.error().message, "resolution 0 is out of range (1 to 4096)");
+  EXPECT_FALSE(placeGridByResolution(b, 5000).ok());
+  EXPECT_FALSE(placeGridByVoxelSize(b, -1.0).ok());
+  auto tiny = placeGridByVoxelSize(b, 1e-9);
+  ASSERT_FALSE(tiny.ok());
+  EXPECT_EQ(tiny.error().code, ErrorCode::kLimit);
+  auto ok = placeGridByVoxelSize(b, 0.1);
+  ASSERT_TRUE(ok.ok());
+  EXPECT_EQ(ok->dims, (Dims{10, 20, 30}));
+  EXPECT_FALSE(placeGridByResolution(Box3d{}, 10).ok());
+}
+
+TEST(VoxelGrid, estimateGridBytesCoversAllocatedLayers) {
+  VoxelGrid g = box(Dims{100, 50, 10}, {0, 0, 0}, {100, 50, 10});
+  EXPECT_GE(estimateGridBytes(g.dims()), uint64_t(g.wordsPerLayer()) * 8 * 10);
+  EXPECT_LE(g.memoryBytes(), estimateGridBytes(g.dims()) + 4096);
+}
+
+}  // namespace
+}  // namespace vox
