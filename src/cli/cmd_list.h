@@ -5,6 +5,11 @@ class App;
 }
 namespace vox::cli {
 struct CommandContext;
+void addVoxelizeCommand(CLI::App& sub, CommandContext& ctx);
 void addInfoCommand(CLI::App& sub, CommandContext& ctx);
+void addSectionCommand(CLI::App& sub, CommandContext& ctx);
+void addPeelCommand(CLI::App& sub, CommandContext& ctx);
+void addXrayCommand(CLI::App& sub, CommandContext& ctx);
+void addMassCommand(CLI::App& sub, CommandContext& ctx);
 void addConvertCommand(CLI::App& sub, CommandContext& ctx);
 }  // namespace vox::cli

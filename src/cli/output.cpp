@@ -12,6 +12,7 @@ void Output::say(const std::string& line) const {
 
 void Output::warn(const std::string& line) {
   std::fprintf(stderr, "warning: %s\n", line.c_str());
+  warnings_.push_back(line);
 }
 
 int exitCodeFor(const Error& e) {
@@ -28,12 +29,14 @@ int Output::fail(int exit_code, const std::string& message) {
   std::fprintf(stderr, "voxmod: error: %s\n", message.c_str());
   if (json_) {
     data_["error"] = message;
+    data_["warnings"] = warnings_;
     std::cout << data_.dump() << std::endl;
   }
   return exit_code;
 }
 
 int Output::finish() {
+  data_["warnings"] = warnings_;
   if (json_) std::cout << data_.dump() << std::endl;
   return kExitOk;
 }

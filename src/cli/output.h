@@ -2,6 +2,7 @@
 // How subcommands talk: with --json, exactly one JSON object on stdout and human messages on stderr; without it,
 // a short human summary on stdout. Errors always go to stderr (and into the JSON object as "error").
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -21,7 +22,7 @@ class Output {
   nlohmann::ordered_json& data() { return data_; }
   // Human line: stdout without --json, stderr with it (stdout then holds only the JSON object).
   void say(const std::string& line) const;
-  void warn(const std::string& line);  // also collected into "warnings" when the command reports them
+  void warn(const std::string& line);  // on stderr, and collected into the JSON object's "warnings" list
   // Prints the error, emits the JSON object (with "error") and returns the exit code for it.
   int fail(const Error& error);
   int fail(int exit_code, const std::string& message);
@@ -31,9 +32,16 @@ class Output {
  private:
   bool json_;
   nlohmann::ordered_json data_ = nlohmann::ordered_json::object();
+  std::vector<std::string> warnings_;
 };
 
 // Exit code for an error: usage problems 1, no OpenGL 3, everything else (input/output) 2.
 int exitCodeFor(const Error& e);
+
+// JSON helpers.
+template <class V>
+nlohmann::ordered_json jsonVec3(const V& v) {
+  return nlohmann::ordered_json::array({v[0], v[1], v[2]});
+}
 
 }  // namespace vox::cli

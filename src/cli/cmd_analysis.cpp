@@ -1,0 +1,215 @@
+// The analysis subcommands (SPEC section 5): section, peel, xray, mass. Each binds its flags to the same params
+// struct the GUI edits (vox/analysis/analysis.h) and FILE may be a mesh, voxelized on the fly.
+#include <CLI/CLI.hpp>
+
+#include "cli/cmd_list.h"
+#include "cli/commands.h"
+#include "cli/model_input.h"
+#include "vox/analysis/analysis.h"
+#include "vox/io/file_util.h"
+#include "vox/io/image_io.h"
+#include "vox/io/voxel_file.h"
+
+namespace vox::cli {
+namespace {
+
+struct Common {
+  std::string file;
+  bool json = false;
+  MeshOptions mesh;
+};
+
+void addCommon(CLI::App& sub, Common& c) {
+  sub.add_option("FILE", c.file, "Voxel file (.vxm, .binvox) or mesh (.stl, voxelized with --res)")->required();
+  sub.add_flag("--json", c.json, "Print one JSON object on stdout");
+  addMeshOptions(sub, c.mesh);
+}
+
+CLI::Validator axisCheck() { return CLI::IsMember({"x", "y", "z"}); }
+
+// ---- section ----
+struct SectionOptions {
+  Common c;
+  std::string axis = "z", out;
+  int32_t index = 0;
+  int32_t scale = 1;
+};
+
+int runSection(const SectionOptions& o) {
+  Output out(o.c.json);
+  auto model = loadModel(o.c.file, o.c.mesh, out);
+  if (!model) return out.fail(model.error());
+  SectionParams p;
+  p.axis = parseAxis(o.axis).value();
+  p.index = o.index;
+  auto section = computeSection(model->grid, p);
+  if (!section) return out.fail(section.error());
+  if (auto s = io::savePng(renderSection(*section, o.scale), o.out); !s) return out.fail(s.error());
+  auto& d = out.data();
+  d["axis"] = o.axis;
+  d["index"] = o.index;
+  d["position"] = section->position;
+  d["filled"] = section->filled;
+  d["width"] = section->mask.width;
+  d["height"] = section->mask.height;
+  d["output"] = o.out;
+  out.say("section " + o.axis + " = " + std::to_string(o.index) + " (at " + std::to_string(section->position) + " " +
+          model->grid.frame().units + "): " + std::to_string(section->filled) + " filled voxels; wrote " + o.out);
+  return out.finish();
+}
+
+// ---- peel ----
+struct PeelOptions {
+  Common c;
+  int32_t layers = 1;
+  bool all = false;
+  std::string out;
+};
+
+int runPeel(const PeelOptions& o) {
+  Output out(o.c.json);
+  auto model = loadModel(o.c.file, o.c.mesh, out);
+  if (!model) return out.fail(model.error());
+  PeelParams p;
+  p.layers = o.layers;
+  p.all = o.all;
+  auto r = peelSkin(model->grid, p, terminalProgress("peeling"));
+  if (!r) return out.fail(r.error());
+  if (!o.out.empty()) {
+    if (auto s = io::saveVoxelFile(r->remaining, o.out); !s) return out.fail(s.error());
+  }
+  auto& d = out.data();
+  d["removed_per_layer"] = r->removed_per_layer;
+  d["layers"] = r->removed_per_layer.size();
+  d["remaining"] = r->remaining_count;
+  d["core_voxels"] = r->core_voxels;
+  if (!o.out.empty()) d["output"] = o.out;
+  out.say("peeled " + std::to_string(r->removed_per_layer.size()) + " layers; " +
+          std::to_string(r->remaining_count) + " voxels remain; last layer (core) " +
+          std::to_string(r->core_voxels) + " voxels");
+  return out.finish();
+}
+
+// ---- xray ----
+struct XrayOptions {
+  Common c;
+  std::string axis = "z", mode = "total", out, csv;
+  int32_t scale = 1;
+};
+
+int runXray(const XrayOptions& o) {
+  Output out(o.c.json);
+  auto model = loadModel(o.c.file, o.c.mesh, out);
+  if (!model) return out.fail(model.error());
+  XrayParams p;
+  p.axis = parseAxis(o.axis).value();
+  p.mode = parseXrayMode(o.mode).value();
+  auto x = computeXray(model->grid, p);
+  if (!x) return out.fail(x.error());
+  if (auto s = io::savePng(renderXray(*x, o.scale), o.out); !s) return out.fail(s.error());
+  if (!o.csv.empty()) {
+    if (auto s = io::writeFileAtomic(o.csv, xrayCsv(*x)); !s) return out.fail(s.error());
+  }
+  const double h = model->grid.voxelSize();
+  auto& d = out.data();
+  d["axis"] = o.axis;
+  d["mode"] = o.mode;
+  d["rays_hit"] = x->rays_hit;
+  d["min"] = x->min;
+  d["max"] = x->max;
+  d["mean"] = x->mean;
+  d["min_mm"] = double(x->min) * h;
+  d["max_mm"] = double(x->max) * h;
+  d["mean_mm"] = x->mean * h;
+  d["output"] = o.out;
+  if (!o.csv.empty()) d["csv"] = o.csv;
+  out.say("x-ray " + o.mode + " along " + o.axis + ": " + std::to_string(x->rays_hit) + " rays hit; min " +
+          std::to_string(x->min) + ", max " + std::to_string(x->max) + ", mean " + std::to_string(x->mean) +
+          " voxels (voxel size " + std::to_string(h) + " " + model->grid.frame().units + "); wrote " + o.out);
+  return out.finish();
+}
+
+// ---- mass ----
+struct MassOptions {
+  Common c;
+};
+
+int runMass(const MassOptions& o) {
+  Output out(o.c.json);
+  auto model = loadModel(o.c.file, o.c.mesh, out);
+  if (!model) return out.fail(model.error());
+  const MassProperties m = computeMassProperties(model->grid);
+  auto& d = out.data();
+  d["filled"] = m.filled;
+  d["volume"] = m.volume;
+  d["volume_error_bound"] = m.volume_error_bound;
+  d["centroid"] = jsonVec3(m.centroid);
+  nlohmann::ordered_json inertia = nlohmann::ordered_json::array();
+  for (int r = 0; r < 3; ++r) inertia.push_back({m.inertia[0][r], m.inertia[1][r], m.inertia[2][r]});
+  d["inertia"] = inertia;
+  d["bbox"] = {{"min", jsonVec3(m.bbox.min)}, {"max", jsonVec3(m.bbox.max)}};
+  d["bbox_min_ijk"] = jsonVec3(m.bbox_min_ijk);
+  d["bbox_max_ijk"] = jsonVec3(m.bbox_max_ijk);
+  d["units"] = model->grid.frame().units;
+  out.say("volume   " + std::to_string(m.volume) + " (+/- " + std::to_string(m.volume_error_bound) + ")");
+  out.say("centroid " + std::to_string(m.centroid.x) + " " + std::to_string(m.centroid.y) + " " +
+          std::to_string(m.centroid.z));
+  for (int r = 0; r < 3; ++r) {
+    out.say(std::string(r == 0 ? "inertia  " : "         ") + std::to_string(m.inertia[0][r]) + " " +
+            std::to_string(m.inertia[1][r]) + " " + std::to_string(m.inertia[2][r]));
+  }
+  out.say("bbox     " + std::to_string(m.bbox.min.x) + " " + std::to_string(m.bbox.min.y) + " " +
+          std::to_string(m.bbox.min.z) + "  to  " + std::to_string(m.bbox.max.x) + " " +
+          std::to_string(m.bbox.max.y) + " " + std::to_string(m.bbox.max.z));
+  return out.finish();
+}
+
+}  // namespace
+
+void addSectionCommand(CLI::App& sub, CommandContext& ctx) {
+  auto o = std::make_shared<SectionOptions>();
+  addCommon(sub, o->c);
+  sub.add_option("--axis", o->axis, "Section normal: x, y or z")->required()->check(axisCheck());
+  sub.add_option("--index", o->index, "Voxel index along the axis (0-based)")->required();
+  sub.add_option("-o,--output", o->out, "Output PNG")->required();
+  sub.add_option("--scale", o->scale, "Pixels per voxel (default 1)")->check(CLI::Range(1, 64));
+  sub.callback([o, &ctx] { ctx.exit_code = runSection(*o); });
+}
+
+void addPeelCommand(CLI::App& sub, CommandContext& ctx) {
+  auto o = std::make_shared<PeelOptions>();
+  addCommon(sub, o->c);
+  auto* layers = sub.add_option("--layers", o->layers, "Number of skin layers to remove")->check(CLI::NonNegativeNumber);
+  auto* all = sub.add_flag("--all", o->all, "Peel until nothing is left (reports the core)");
+  layers->excludes(all);
+  sub.add_option("-o,--output", o->out, "Write the remaining voxels to this voxel file");
+  sub.callback([o, layers, all, &ctx] {
+    if (layers->count() == 0 && all->count() == 0) {
+      std::fprintf(stderr, "voxmod peel: give --layers N or --all\n");
+      ctx.exit_code = kExitUsage;
+      return;
+    }
+    ctx.exit_code = runPeel(*o);
+  });
+}
+
+void addXrayCommand(CLI::App& sub, CommandContext& ctx) {
+  auto o = std::make_shared<XrayOptions>();
+  addCommon(sub, o->c);
+  sub.add_option("--axis", o->axis, "Ray direction: x, y or z")->required()->check(axisCheck());
+  sub.add_option("--mode", o->mode, "Per ray: min, max or total thickness")
+      ->required()
+      ->check(CLI::IsMember({"min", "max", "total"}));
+  sub.add_option("-o,--output", o->out, "Output PNG (colour scale and legend)")->required();
+  sub.add_option("--csv", o->csv, "Also write the per-ray thickness as CSV");
+  sub.add_option("--scale", o->scale, "Pixels per ray (default 1)")->check(CLI::Range(1, 64));
+  sub.callback([o, &ctx] { ctx.exit_code = runXray(*o); });
+}
+
+void addMassCommand(CLI::App& sub, CommandContext& ctx) {
+  auto o = std::make_shared<MassOptions>();
+  addCommon(sub, o->c);
+  sub.callback([o, &ctx] { ctx.exit_code = runMass(*o); });
+}
+
+}  // namespace vox::cli

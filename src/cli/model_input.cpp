@@ -1,0 +1,87 @@
+#include "cli/model_input.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include <CLI/CLI.hpp>
+
+#include "vox/io/stl.h"
+#include "vox/io/voxel_file.h"
+
+namespace vox::cli {
+
+void addMeshOptions(CLI::App& sub, MeshOptions& options) {
+  auto* res = sub.add_option("--res", options.params.resolution,
+                             "For a mesh FILE: voxels along the longest axis (1-4096, default 200)");
+  auto* size = sub.add_option("--voxel-size", options.params.voxel_size,
+                              "For a mesh FILE: voxel size in model units (instead of --res)");
+  res->excludes(size);
+  sub.add_option("--mode", options.mode_text, "For a mesh FILE: parity|nonzero|vote|auto (default auto)")
+      ->check(CLI::IsMember({"parity", "nonzero", "vote", "auto"}));
+  sub.add_option("--threads", options.params.threads, "Worker threads (default: all cores)")
+      ->check(CLI::Range(0, 1024));
+  sub.add_option("--memory-limit", options.memory_limit_mib,
+                 "Refuse grids needing more than this many MiB (default: 80% of physical memory)")
+      ->check(CLI::PositiveNumber);
+}
+
+double nowSeconds() {
+  using namespace std::chrono;
+  return duration<double>(steady_clock::now().time_since_epoch()).count();
+}
+
+ProgressFn terminalProgress(const std::string& label) {
+  if (!isatty(STDERR_FILENO)) return {};
+  auto last = std::make_shared<int>(-1);
+  return [label, last](double f) {
+    const int pct = int(f * 100.0);
+    if (pct != *last) {
+      *last = pct;
+      std::fprintf(stderr, "\r%s %3d%%%s", label.c_str(), pct, pct >= 100 ? "\n" : "");
+      std::fflush(stderr);
+    }
+    return true;
+  };
+}
+
+Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptions& options, Output& out) {
+  LoadedModel m;
+  const double t0 = nowSeconds();
+  if (io::isVoxelFile(file)) {
+    auto grid = io::loadVoxelFile(file);
+    if (!grid) return grid.error();
+    m.grid = std::move(grid).value();
+    m.load_s = nowSeconds() - t0;
+    return m;
+  }
+  auto stl = io::loadStl(file);
+  if (!stl) return stl.error();
+  m.load_s = nowSeconds() - t0;
+  for (const std::string& w : stl->warnings) out.warn(w);
+  m.from_mesh = true;
+  m.triangles = int64_t(stl->mesh.triangles.size());
+  m.topology = stl->topology;
+
+  VoxelizeParams params = options.params;
+  auto mode = parseFillMode(options.mode_text);
+  if (!mode) return makeError(ErrorCode::kInvalidArgument, "unknown --mode '" + options.mode_text + "'");
+  params.mode = *mode;
+  if (options.memory_limit_mib > 0) params.memory_limit_bytes = uint64_t(options.memory_limit_mib) << 20;
+  const double t1 = nowSeconds();
+  auto result = voxelizeSolid(stl->mesh, params, terminalProgress("voxelizing"), &stl->topology);
+  if (!result) {
+    return makeError(result.error().code, file.filename().string() + ": " + result.error().message);
+  }
+  m.voxelize_s = nowSeconds() - t1;
+  for (const std::string& w : result->warnings) out.warn(w);
+  m.mode_used = fillModeName(result->mode_used);
+  out.say("voxelized " + file.filename().string() + " with mode " + m.mode_used + " (" + result->mode_reason + ")");
+  m.grid = std::move(result->grid);
+  m.grid.frame().source = file.filename().string();
+  return m;
+}
+
+}  // namespace vox::cli

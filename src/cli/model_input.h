@@ -1,0 +1,46 @@
+#pragma once
+// FILE arguments: a voxel file (.vxm, .binvox) is read; anything else is read as an STL mesh and voxelized with
+// the --res / --voxel-size / --mode / --threads options (SPEC section 5: default resolution 200).
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "cli/output.h"
+#include "vox/core/mesh.h"
+#include "vox/core/voxel_grid.h"
+#include "vox/voxelize/voxelize.h"
+
+namespace CLI {
+class App;
+}
+
+namespace vox::cli {
+
+struct MeshOptions {
+  VoxelizeParams params;
+  std::string mode_text = "auto";
+  int64_t memory_limit_mib = 0;
+};
+
+// Adds --res, --voxel-size, --mode, --threads, --memory-limit to a subcommand.
+void addMeshOptions(CLI::App& sub, MeshOptions& options);
+
+struct LoadedModel {
+  VoxelGrid grid;
+  bool from_mesh = false;
+  int64_t triangles = 0;         // when from_mesh
+  MeshTopology topology;         // when from_mesh
+  std::string mode_used;         // when from_mesh
+  double load_s = 0.0, voxelize_s = 0.0;
+};
+
+// Reads FILE; messages and warnings go through `out`. Progress goes to stderr when it is a terminal.
+Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptions& options, Output& out);
+
+// Seconds since an arbitrary start (steady clock).
+double nowSeconds();
+
+// Progress printer for a terminal: "voxelizing  42%" on stderr, rewritten in place; silent otherwise.
+ProgressFn terminalProgress(const std::string& label);
+
+}  // namespace vox::cli
