@@ -1,0 +1,164 @@
+// The command line as scripts use it (SPEC section 5): exit codes, JSON keys, images, error messages.
+#include <nlohmann/json.hpp>
+
+#include "support/test_support.h"
+#include "vox/core/mesh.h"
+#include "vox/io/image_io.h"
+#include "vox/io/stl.h"
+
+namespace vox {
+namespace {
+
+using test::runVoxmod;
+using test::TempDir;
+using json = nlohmann::json;
+
+// Axis-aligned box [0, 1]^3 as a closed, outward-oriented mesh: at --res n it fills an n^3 grid exactly
+// (centres are strictly inside), so peel, mass and X-ray have closed-form answers.
+TriangleMesh unitBox() {
+  const glm::vec3 p[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  const int f[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                        {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+  TriangleMesh m;
+  for (auto& t : f) m.triangles.push_back({{p[t[0]], p[t[1]], p[t[2]]}});
+  return m;
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override { ASSERT_TRUE(io::saveStlBinary(unitBox(), box_stl()).ok()); }
+  std::string box_stl() const { return (tmp_ / "box.stl").string(); }
+  std::string path(const std::string& name) const { return (tmp_ / name).string(); }
+  TempDir tmp_;
+};
+
+json parse(const test::RunResult& r) {
+  EXPECT_FALSE(r.out.empty()) << r.err;
+  return json::parse(r.out);
+}
+
+TEST_F(Cli, helpListsEverySubcommandAndExitsZero) {
+  auto r = runVoxmod({"--help"});
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* sub : {"voxelize", "info", "section", "peel", "xray", "mass", "convert"})
+    EXPECT_NE(r.out.find(sub), std::string::npos) << sub;
+}
+
+TEST_F(Cli, unknownOptionIsUsageError) {
+  auto r = runVoxmod({"info", box_stl(), "--bogus"});
+  EXPECT_EQ(r.exit_code, 1);
+}
+
+TEST_F(Cli, voxelizeReportsSpecKeysAndInfoAgrees) {
+  auto r = runVoxmod({"voxelize", box_stl(), "--res", "10", "-o", path("box.vxm"), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = parse(r);
+  for (const char* key : {"triangles", "dims", "voxel_size", "origin", "filled", "volume", "load_s", "voxelize_s",
+                          "write_s", "total_s", "warnings"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["triangles"], 12);
+  EXPECT_EQ(j["dims"], json::array({10, 10, 10}));
+  EXPECT_EQ(j["filled"], 1000);
+  EXPECT_DOUBLE_EQ(j["voxel_size"].get<double>(), 0.1);
+  EXPECT_NEAR(j["volume"].get<double>(), 1.0, 1e-12);
+  EXPECT_EQ(j["mode"], "nonzero");  // auto on a closed mesh
+
+  auto info = runVoxmod({"info", path("box.vxm"), "--json"});
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  const json i = parse(info);
+  EXPECT_EQ(i["filled"], 1000);
+  EXPECT_EQ(i["surface_voxels"], 1000 - 512);
+  EXPECT_EQ(i["dims"], json::array({10, 10, 10}));
+}
+
+TEST_F(Cli, convertRoundTripsThroughBinvox) {
+  ASSERT_EQ(runVoxmod({"voxelize", box_stl(), "--res", "12", "-o", path("a.vxm")}).exit_code, 0);
+  ASSERT_EQ(runVoxmod({"convert", path("a.vxm"), path("b.binvox")}).exit_code, 0);
+  ASSERT_EQ(runVoxmod({"convert", path("b.binvox"), path("c.vxm")}).exit_code, 0);
+  const json a = parse(runVoxmod({"info", path("a.vxm"), "--json"}));
+  const json c = parse(runVoxmod({"info", path("c.vxm"), "--json"}));
+  EXPECT_EQ(a["filled"], c["filled"]);
+  EXPECT_EQ(a["surface_voxels"], c["surface_voxels"]);
+}
+
+TEST_F(Cli, peelAllOfABoxRemovesShellsDownToTheCore) {
+  auto r = runVoxmod({"peel", box_stl(), "--res", "10", "--all", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = parse(r);
+  EXPECT_EQ(j["removed_per_layer"], json::array({488, 296, 152, 56, 8}));
+  EXPECT_EQ(j["remaining"], 0);
+  EXPECT_EQ(j["core_voxels"], 8);
+}
+
+TEST_F(Cli, peelNeedsLayersOrAll) {
+  EXPECT_EQ(runVoxmod({"peel", box_stl(), "--res", "10"}).exit_code, 1);
+}
+
+TEST_F(Cli, massOfABoxIsItsVolumeAndCentre) {
+  auto r = runVoxmod({"mass", box_stl(), "--res", "10", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = parse(r);
+  EXPECT_NEAR(j["volume"].get<double>(), 1.0, 1e-12);
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(j["centroid"][a].get<double>(), 0.5, 1e-12);
+  // Solid unit cube about its centre: I = 1/6 on the diagonal (voxel cubes sum to the exact value).
+  EXPECT_NEAR(j["inertia"][0][0].get<double>(), 1.0 / 6.0, 1e-12);
+  EXPECT_NEAR(j["inertia"][0][1].get<double>(), 0.0, 1e-12);
+  EXPECT_TRUE(j.contains("bbox"));
+}
+
+TEST_F(Cli, sectionWritesImageOfTheRightSize) {
+  auto r = runVoxmod({"section", box_stl(), "--res", "10", "--axis", "x", "--index", "3", "-o", path("s.png"),
+                      "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(parse(r)["filled"], 100);
+  auto png = io::loadPng(path("s.png"));
+  ASSERT_TRUE(png.ok()) << png.error().message;
+  EXPECT_EQ(png->width, 10);
+  EXPECT_EQ(png->height, 10);
+}
+
+TEST_F(Cli, xrayReportsThicknessInVoxelsAndModelUnits) {
+  auto r = runVoxmod({"xray", box_stl(), "--res", "10", "--axis", "z", "--mode", "total", "-o", path("x.png"),
+                      "--csv", path("x.csv"), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = parse(r);
+  EXPECT_EQ(j["min"], 10);
+  EXPECT_EQ(j["max"], 10);
+  EXPECT_DOUBLE_EQ(j["mean"].get<double>(), 10.0);
+  EXPECT_NEAR(j["max_mm"].get<double>(), 1.0, 1e-12);
+  EXPECT_TRUE(io::loadPng(path("x.png")).ok());
+  EXPECT_NE(test::readFile(path("x.csv")).find('\n'), std::string::npos);
+}
+
+TEST_F(Cli, missingInputNamesTheFileAndExitsTwo) {
+  auto r = runVoxmod({"info", path("nope.stl"), "--json"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("nope.stl"), std::string::npos) << r.err;
+  EXPECT_TRUE(parse(r).contains("error"));
+}
+
+TEST_F(Cli, malformedStlIsAnInputError) {
+  test::writeFile(path("bad.stl"), "solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 nan\n");
+  auto r = runVoxmod({"info", path("bad.stl")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("bad.stl"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, absurdResolutionIsRefusedWithAReason) {
+  auto r = runVoxmod({"voxelize", box_stl(), "--res", "0", "-o", path("x.vxm")});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("resolution"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, unwritableOutputFailsAndKeepsTheOldFile) {
+  ASSERT_EQ(runVoxmod({"voxelize", box_stl(), "--res", "8", "-o", path("keep.vxm")}).exit_code, 0);
+  const std::string before = test::readFile(path("keep.vxm"));
+  // A path below a regular file cannot be created, even by root.
+  auto r = runVoxmod({"voxelize", box_stl(), "--res", "9", "-o", path("keep.vxm") + "/sub.vxm"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("sub.vxm"), std::string::npos) << r.err;
+  EXPECT_EQ(test::readFile(path("keep.vxm")), before);
+}
+
+}  // namespace
+}  // namespace vox
