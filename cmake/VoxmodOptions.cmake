@@ -10,3 +10,7 @@ if(VOXMOD_SANITIZE)
     -fno-sanitize-recover=all)
   target_link_options(voxmod_options INTERFACE -fsanitize=${VOXMOD_SANITIZE})
 endif()
+if(VOXMOD_BUILD_FUZZ)
+  # Coverage instrumentation for every library the fuzz targets link; the targets add -fsanitize=fuzzer.
+  target_compile_options(voxmod_options INTERFACE -fsanitize=fuzzer-no-link)
+endif()
