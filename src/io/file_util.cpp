@@ -1,0 +1,149 @@
+// Whole-file reads and atomic writes with POSIX calls, so every failure can report the path and errno's reason.
+// The atomic save follows the usual recipe (write a temporary file in the target's directory, fsync it, rename it
+// over the target, fsync the directory): rename() within one file system is atomic, so readers see either the old
+// file or the complete new one, never a partial write.
+#include "vox/io/file_util.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <random>
+
+namespace vox::io {
+
+namespace {
+
+std::string reason(int err) { return std::strerror(err); }
+
+// Closes a descriptor on every path out of a function.
+class FdCloser {
+ public:
+  explicit FdCloser(int fd) : fd_(fd) {}
+  ~FdCloser() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  FdCloser(const FdCloser&) = delete;
+  FdCloser& operator=(const FdCloser&) = delete;
+  int release() {
+    const int fd = fd_;
+    fd_ = -1;
+    return fd;
+  }
+
+ private:
+  int fd_;
+};
+
+// A name no other writer is likely to pick: the pid, a process-wide counter and a random number. O_EXCL makes a
+// collision an EEXIST that we retry, never a shared file.
+std::string tempSuffix() {
+  static std::atomic<uint64_t> counter{0};
+  thread_local std::mt19937_64 rng{std::random_device{}()};
+  return ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1)) + "-" +
+         std::to_string(rng() % 1000000);
+}
+
+}  // namespace
+
+Result<std::vector<uint8_t>> readFileBytes(const std::filesystem::path& path) {
+  const std::string p = path.string();
+  int fd;
+  do {
+    fd = ::open(p.c_str(), O_RDONLY | O_CLOEXEC);
+  } while (fd < 0 && errno == EINTR);
+  if (fd < 0) return makeError(ErrorCode::kIo, p + ": cannot open: " + reason(errno));
+  FdCloser closer(fd);
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) return makeError(ErrorCode::kIo, p + ": cannot stat: " + reason(errno));
+  if (S_ISDIR(st.st_mode)) return makeError(ErrorCode::kIo, p + ": is a directory, not a file");
+
+  std::vector<uint8_t> bytes;
+  // The size from fstat is only a hint (pipes report 0, files may grow): read until end of file.
+  if (S_ISREG(st.st_mode) && st.st_size > 0) bytes.reserve(size_t(st.st_size));
+  size_t used = 0;
+  for (;;) {
+    if (bytes.size() - used < 65536) bytes.resize(std::max<size_t>(used + 65536, bytes.capacity()));
+    const ssize_t n = ::read(fd, bytes.data() + used, bytes.size() - used);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return makeError(ErrorCode::kIo, p + ": read failed: " + reason(errno));
+    }
+    if (n == 0) break;
+    used += size_t(n);
+  }
+  bytes.resize(used);
+  return bytes;
+}
+
+Status writeFileAtomic(const std::filesystem::path& path, std::span<const uint8_t> bytes) {
+  const std::string p = path.string();
+  if (path.filename().empty()) return makeError(ErrorCode::kIo, p + ": cannot write: the path names no file");
+  const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+
+  // Keep the mode of a file we replace; a new file gets 0666 minus the umask, like any other created file.
+  mode_t mode = 0666;
+  struct stat old {};
+  const bool replacing = ::stat(p.c_str(), &old) == 0;
+  if (replacing && S_ISDIR(old.st_mode)) return makeError(ErrorCode::kIo, p + ": cannot write: is a directory");
+
+  std::string temp;
+  int fd = -1;
+  for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+    temp = (dir / ("." + path.filename().string() + tempSuffix())).string();
+    fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, mode);
+    if (fd < 0 && errno != EEXIST && errno != EINTR) break;
+  }
+  if (fd < 0) {
+    return makeError(ErrorCode::kIo,
+                     p + ": cannot create a temporary file in '" + dir.string() + "': " + reason(errno));
+  }
+  FdCloser closer(fd);
+  // From here on every failure removes the temporary file; the target is untouched until rename().
+  auto fail = [&](const std::string& what, int err) -> Status {
+    ::close(closer.release());
+    ::unlink(temp.c_str());
+    return makeError(ErrorCode::kIo, p + ": " + what + ": " + reason(err));
+  };
+  if (replacing && ::fchmod(fd, old.st_mode & 07777) != 0) return fail("cannot set permissions", errno);
+
+  size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return fail("write failed", errno);
+    }
+    done += size_t(n);
+  }
+  if (::fsync(fd) != 0) return fail("fsync failed", errno);
+  const int fd_to_close = closer.release();
+  if (::close(fd_to_close) != 0) {
+    const int err = errno;
+    ::unlink(temp.c_str());
+    return makeError(ErrorCode::kIo, p + ": close failed: " + reason(err));
+  }
+  if (::rename(temp.c_str(), p.c_str()) != 0) {
+    const int err = errno;
+    ::unlink(temp.c_str());
+    return makeError(ErrorCode::kIo, p + ": cannot replace the file: " + reason(err));
+  }
+  // Make the rename itself durable. Best effort: some file systems refuse fsync on a directory, and the data is
+  // already complete under its final name.
+  const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir_fd >= 0) {
+    (void)::fsync(dir_fd);
+    ::close(dir_fd);
+  }
+  return Ok{};
+}
+
+Status writeFileAtomic(const std::filesystem::path& path, const std::string& text) {
+  return writeFileAtomic(path, std::span<const uint8_t>(reinterpret_cast<const uint8_t*>(text.data()), text.size()));
+}
+
+}  // namespace vox::io

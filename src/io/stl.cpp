@@ -1,0 +1,313 @@
+// STL reader and binary writer. Format: 3D Systems, "StereoLithography Interface Specification" (1988/1989):
+// binary = 80-byte header, uint32 triangle count, then 50 bytes per triangle (normal, three vertices as float32
+// little-endian, uint16 attribute); ASCII = "solid name" { "facet normal n n n" "outer loop" 3 x "vertex x y z"
+// "endloop" "endfacet" } "endsolid name".
+//
+// Binary or ASCII is decided by content, because the first five bytes lie: binary exporters often begin the header
+// with "solid" (../shared/meshes/plate_holes.stl). The rule, in order:
+//  1. size >= 84 and size == 84 + 50 * count (count = uint32 at offset 80)  -> binary. An ASCII file could only
+//     match by accident if bytes 80..83, read as text, gave a count whose size equals the file's: text bytes are
+//     >= 0x09, so the count would be >= 0x09090909 and the file >= 7.5 GB.
+//  2. else it starts with "solid" (after whitespace / a UTF-8 byte-order mark) and holds no NUL byte -> ASCII.
+//     Text never contains NUL; binary triangle data almost always does (the attribute bytes are usually zero).
+//  3. else binary, and the size does not match the count: reported as truncated or as a size mismatch.
+// ASCII numbers are parsed straight to float32 with std::from_chars (correctly rounded, no locale).
+#include "vox/io/stl.h"
+
+#include <algorithm>
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+
+#include "vox/io/file_util.h"
+
+namespace vox::io {
+
+namespace {
+
+constexpr size_t kBinaryHeaderBytes = 80;
+constexpr size_t kBinaryPrefixBytes = 84;  // header + uint32 count
+constexpr size_t kBinaryTriangleBytes = 50;
+
+uint32_t loadU32(const uint8_t* p) {
+  uint32_t v;
+  std::memcpy(&v, p, 4);
+  if constexpr (std::endian::native == std::endian::big) v = __builtin_bswap32(v);
+  return v;
+}
+
+float loadF32(const uint8_t* p) { return std::bit_cast<float>(loadU32(p)); }
+
+void storeU32(uint8_t* p, uint32_t v) {
+  if constexpr (std::endian::native == std::endian::big) v = __builtin_bswap32(v);
+  std::memcpy(p, &v, 4);
+}
+
+// A token for a message: printable, at most 40 characters.
+std::string quoteToken(std::string_view t) {
+  std::string s;
+  for (char c : t.substr(0, 40)) s += (c >= 32 && c < 127) ? c : '?';
+  if (t.size() > 40) s += "...";
+  return "'" + s + "'";
+}
+
+std::string trimmed(std::string_view s) {
+  size_t b = 0, e = s.size();
+  while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r' || s[b] == '\0')) ++b;
+  while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r' || s[e - 1] == '\0')) --e;
+  return std::string(s.substr(b, e - b));
+}
+
+bool isSpace(uint8_t c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t' || c == '\f' || c == '\v'; }
+
+// Keywords are matched case-insensitively: some exporters write "SOLID" / "FACET NORMAL".
+bool keywordIs(std::string_view token, std::string_view keyword) {
+  if (token.size() != keyword.size()) return false;
+  for (size_t i = 0; i < token.size(); ++i) {
+    if (char(token[i] | 0x20) != keyword[i]) return false;
+  }
+  return true;
+}
+
+// ---- ASCII ----
+
+class AsciiParser {
+ public:
+  AsciiParser(std::span<const uint8_t> bytes, const std::string& name)
+      : p_(reinterpret_cast<const char*>(bytes.data())), end_(p_ + bytes.size()), name_(name) {}
+
+  Status parse(StlLoad& out) {
+    // Skip a UTF-8 byte-order mark (written by some Windows tools).
+    if (end_ - p_ >= 3 && std::memcmp(p_, "\xEF\xBB\xBF", 3) == 0) p_ += 3;
+    // A rough bound from the file size (a facet takes at least ~60 bytes of text): never from untrusted counts.
+    out.mesh.triangles.reserve(size_t(end_ - p_) / 256);
+    bool first_solid = true;
+    std::string_view tok = next();
+    for (;;) {
+      if (!keywordIs(tok, "solid")) {
+        return fail(first_solid ? "expected 'solid'" : "expected 'solid' or end of file", tok);
+      }
+      const std::string solid_name = trimmed(restOfLine());
+      if (first_solid) out.header = solid_name;
+      first_solid = false;
+      if (Status s = parseFacets(out.mesh); !s.ok()) return s;
+      restOfLine();  // the name after endsolid, if any; it need not match
+      tok = next();
+      if (tok.empty()) return Ok{};
+    }
+  }
+
+ private:
+  Status parseFacets(TriangleMesh& mesh) {
+    for (;;) {
+      std::string_view tok = next();
+      if (keywordIs(tok, "endsolid")) return Ok{};
+      if (!keywordIs(tok, "facet")) return fail("expected 'facet' or 'endsolid'", tok);
+      tok = next();
+      // The normal is optional here (some writers omit it) and never used: voxmod derives orientation from the
+      // vertex order. Its values must still be numbers; NaN normals (written for degenerate facets) are accepted.
+      if (keywordIs(tok, "normal")) {
+        float n;
+        for (int i = 0; i < 3; ++i) {
+          if (Status s = number(n, false); !s.ok()) return s;
+        }
+        tok = next();
+      }
+      if (!keywordIs(tok, "outer")) return fail("expected 'outer'", tok);
+      if (Status s = expect("loop"); !s.ok()) return s;
+      Triangle t;
+      for (glm::vec3& v : t.v) {
+        if (Status s = expect("vertex"); !s.ok()) return s;
+        for (int i = 0; i < 3; ++i) {
+          if (Status s = number(v[i], true); !s.ok()) return s;
+        }
+      }
+      if (Status s = expect("endloop"); !s.ok()) return s;
+      if (Status s = expect("endfacet"); !s.ok()) return s;
+      mesh.triangles.push_back(t);
+    }
+  }
+
+  // Next whitespace-separated token; empty at end of file. Counts lines as it skips newlines.
+  std::string_view next() {
+    while (p_ < end_ && isSpace(uint8_t(*p_))) {
+      if (*p_ == '\n') ++line_;
+      ++p_;
+    }
+    token_line_ = line_;
+    const char* b = p_;
+    while (p_ < end_ && !isSpace(uint8_t(*p_))) ++p_;
+    return {b, size_t(p_ - b)};
+  }
+
+  // The rest of the current line (without the newline), consumed.
+  std::string_view restOfLine() {
+    const char* b = p_;
+    while (p_ < end_ && *p_ != '\n') ++p_;
+    return {b, size_t(p_ - b)};
+  }
+
+  Status expect(std::string_view keyword) {
+    const std::string_view tok = next();
+    if (!keywordIs(tok, keyword)) return fail("expected '" + std::string(keyword) + "'", tok);
+    return Ok{};
+  }
+
+  Status number(float& value, bool finite_required) {
+    const std::string_view tok = next();
+    if (tok.empty()) return fail("expected a number", tok);
+    const char* b = tok.data();
+    const char* e = b + tok.size();
+    if (*b == '+' && e - b > 1) ++b;  // from_chars rejects an explicit plus sign; some writers emit one
+    const auto [ptr, ec] = std::from_chars(b, e, value);
+    if (ec == std::errc::result_out_of_range) {
+      // Out of float range: a coordinate beyond ~3.4e38 (or a denormal underflow, which we accept as is).
+      double d = 0;
+      const auto r = std::from_chars(b, e, d);
+      if (r.ec == std::errc() && r.ptr == e && std::fabs(d) < 1.0) {
+        value = float(d);
+        return Ok{};
+      }
+      return failAt("number out of float32 range: " + quoteToken(tok));
+    }
+    if (ec != std::errc() || ptr != e) return fail("expected a number", tok);
+    if (finite_required && !std::isfinite(value)) {
+      return failAt("vertex coordinate is not finite: " + quoteToken(tok));
+    }
+    return Ok{};
+  }
+
+  Status fail(const std::string& what, std::string_view found) {
+    return failAt(what + ", found " + (found.empty() ? std::string("end of file") : quoteToken(found)));
+  }
+  Status failAt(const std::string& what) {
+    return makeError(ErrorCode::kParse, name_ + ":" + std::to_string(token_line_) + ": " + what);
+  }
+
+  const char* p_;
+  const char* end_;
+  const std::string& name_;
+  int64_t line_ = 1;
+  int64_t token_line_ = 1;
+};
+
+// ---- Binary ----
+
+Status parseBinary(std::span<const uint8_t> bytes, const std::string& name, StlLoad& out) {
+  const uint64_t count = loadU32(bytes.data() + kBinaryHeaderBytes);
+  // Only now, with the size confirmed by the caller, is the count trusted enough to allocate for.
+  out.mesh.triangles.resize(size_t(count));
+  const uint8_t* p = bytes.data() + kBinaryPrefixBytes;
+  for (uint64_t i = 0; i < count; ++i, p += kBinaryTriangleBytes) {
+    Triangle& t = out.mesh.triangles[size_t(i)];
+    bool finite = true;
+    for (int c = 0; c < 3; ++c) {
+      for (int a = 0; a < 3; ++a) {
+        const float f = loadF32(p + 12 + 12 * c + 4 * a);  // skip the 12-byte normal
+        finite &= std::isfinite(f);
+        t.v[c][a] = f;
+      }
+    }
+    if (!finite) {
+      return makeError(ErrorCode::kParse, name + ": binary STL triangle " + std::to_string(i + 1) + " of " +
+                                              std::to_string(count) + " (byte offset " +
+                                              std::to_string(kBinaryPrefixBytes + i * kBinaryTriangleBytes) +
+                                              ") has a non-finite vertex coordinate (NaN or infinity)");
+    }
+  }
+  return Ok{};
+}
+
+bool startsWithSolid(std::span<const uint8_t> bytes) {
+  size_t i = 0;
+  if (bytes.size() >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF) i = 3;
+  while (i < bytes.size() && isSpace(bytes[i])) ++i;
+  const std::string_view rest(reinterpret_cast<const char*>(bytes.data()) + i, std::min<size_t>(5, bytes.size() - i));
+  return keywordIs(rest, "solid");
+}
+
+}  // namespace
+
+Result<StlLoad> parseStl(std::span<const uint8_t> bytes, const std::string& name) {
+  StlLoad out;
+  out.mesh.name = name;
+  if (bytes.empty()) return makeError(ErrorCode::kParse, name + ": file is empty");
+
+  const uint64_t size = bytes.size();
+  const uint64_t count = size >= kBinaryPrefixBytes ? loadU32(bytes.data() + kBinaryHeaderBytes) : 0;
+  const uint64_t expected = kBinaryPrefixBytes + kBinaryTriangleBytes * count;
+  const bool solid = startsWithSolid(bytes);
+
+  if (size >= kBinaryPrefixBytes && size == expected) {
+    out.ascii = false;
+    out.header = trimmed(std::string_view(reinterpret_cast<const char*>(bytes.data()), kBinaryHeaderBytes));
+    if (count == 0) return makeError(ErrorCode::kParse, name + ": binary STL contains no triangles");
+    if (Status s = parseBinary(bytes, name, out); !s.ok()) return s.error();
+  } else if (solid && std::memchr(bytes.data(), 0, bytes.size()) == nullptr) {
+    out.ascii = true;
+    AsciiParser parser(bytes, name);
+    if (Status s = parser.parse(out); !s.ok()) return s.error();
+    if (out.mesh.triangles.empty()) return makeError(ErrorCode::kParse, name + ": ASCII STL contains no triangles");
+  } else {
+    const std::string why =
+        solid ? " (it starts with 'solid' but holds binary data, so it is not ASCII)" : std::string();
+    if (size < kBinaryPrefixBytes) {
+      return makeError(ErrorCode::kParse, name + ": not an STL file: " + std::to_string(size) +
+                                              " bytes is shorter than a binary STL header (84 bytes)" +
+                                              (solid ? why : " and it does not start with 'solid'"));
+    }
+    const std::string sizes = "header declares " + std::to_string(count) + " triangles (" + std::to_string(expected) +
+                              " bytes) but the file has " + std::to_string(size) + " bytes";
+    if (size < expected) return makeError(ErrorCode::kParse, name + ": binary STL truncated: " + sizes + why);
+    return makeError(ErrorCode::kParse, name + ": binary STL size mismatch: " + sizes + " (" +
+                                            std::to_string(size - expected) + " extra)" + why);
+  }
+
+  out.topology = analyzeTopology(out.mesh);
+  const MeshTopology& t = out.topology;
+  if (t.degenerate_triangles > 0) {
+    out.warnings.push_back(name + ": " + std::to_string(t.degenerate_triangles) +
+                           " degenerate triangles (zero area; kept)");
+  }
+  if (!t.watertight()) {
+    out.warnings.push_back(name + ": not watertight: " + std::to_string(t.boundary_edges) + " boundary edges, " +
+                           std::to_string(t.nonmanifold_edges) +
+                           " non-manifold edges (vertices welded by exact equality)");
+  }
+  return out;
+}
+
+Result<StlLoad> loadStl(const std::filesystem::path& path) {
+  auto bytes = readFileBytes(path);
+  if (!bytes.ok()) return bytes.error();
+  return parseStl(bytes.value(), path.string());
+}
+
+Status saveStlBinary(const TriangleMesh& mesh, const std::filesystem::path& path) {
+  if (mesh.triangles.size() > UINT32_MAX) {
+    return makeError(ErrorCode::kLimit, path.string() + ": " + std::to_string(mesh.triangles.size()) +
+                                            " triangles do not fit a binary STL (at most 4294967295)");
+  }
+  std::vector<uint8_t> bytes(kBinaryPrefixBytes + kBinaryTriangleBytes * mesh.triangles.size(), 0);
+  // The header must not start with "solid", or naive readers would take the file for ASCII.
+  const std::string header = "binary STL written by voxmod" + (mesh.name.empty() ? "" : ": " + mesh.name);
+  std::memcpy(bytes.data(), header.data(), std::min(header.size(), kBinaryHeaderBytes));
+  storeU32(bytes.data() + kBinaryHeaderBytes, uint32_t(mesh.triangles.size()));
+  uint8_t* p = bytes.data() + kBinaryPrefixBytes;
+  for (const Triangle& t : mesh.triangles) {
+    // The facet normal from the vertex order (right-hand rule), zero for a degenerate triangle.
+    const glm::vec3 e1 = t.v[1] - t.v[0], e2 = t.v[2] - t.v[0];
+    glm::vec3 n(e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x);
+    const float len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    n = len > 0 && std::isfinite(len) ? n / len : glm::vec3(0);
+    for (int a = 0; a < 3; ++a) storeU32(p + 4 * a, std::bit_cast<uint32_t>(n[a]));
+    for (int c = 0; c < 3; ++c) {
+      for (int a = 0; a < 3; ++a) storeU32(p + 12 + 12 * c + 4 * a, std::bit_cast<uint32_t>(t.v[c][a]));
+    }
+    p += kBinaryTriangleBytes;  // the attribute bytes stay zero
+  }
+  return writeFileAtomic(path, bytes);
+}
+
+}  // namespace vox::io
