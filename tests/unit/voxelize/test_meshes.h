@@ -1,0 +1,32 @@
+#pragma once
+// Meshes built in code for the voxelizer tests, each outward-oriented and closed unless its name says otherwise.
+#include <cstdint>
+#include <functional>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include "vox/core/mesh.h"
+#include "vox/core/voxel_grid.h"
+
+namespace vox::test {
+
+// Axis-aligned box [lo, hi], 12 triangles.
+TriangleMesh boxMesh(glm::dvec3 lo, glm::dvec3 hi);
+// Unit-radius icosphere about `centre` with `subdivisions` rounds of 4:1 splitting (20 * 4^n triangles), scaled.
+TriangleMesh icosphere(glm::dvec3 centre, double radius, int subdivisions);
+// Torus about the Z axis through `centre`: ring radius R, tube radius r, n x m quads split in two.
+TriangleMesh torus(glm::dvec3 centre, double ring_radius, double tube_radius, int n, int m);
+// Every vertex mapped by p -> centre + rotation * (p - centre).
+TriangleMesh transformed(const TriangleMesh& mesh, const glm::dmat3& rotation, glm::dvec3 centre);
+// Rotation by `degrees` about the unit axis.
+glm::dmat3 rotation(glm::dvec3 axis, double degrees);
+// The two meshes' triangles in one soup.
+TriangleMesh combined(const TriangleMesh& a, const TriangleMesh& b);
+
+// Number of voxels where the two grids differ; grids may have different dims (outside one grid reads as empty).
+int64_t mismatches(const VoxelGrid& a, const VoxelGrid& b);
+// Grid of the same dims and frame as `like`, filled where inside(centre) is true, centre per SPEC section 1.
+VoxelGrid gridFromPredicate(const VoxelGrid& like, const std::function<bool(const glm::dvec3&)>& inside);
+
+}  // namespace vox::test
