@@ -86,15 +86,17 @@ Status writeFileAtomic(const std::filesystem::path& path, std::span<const uint8_
   const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
 
   // Keep the mode of a file we replace; a new file gets 0666 minus the umask, like any other created file.
-  mode_t mode = 0666;
+  // (A target that is a directory is not special-cased: rename() refuses it, and that path is the one that
+  // exercises the clean-up of the temporary file.)
+  const mode_t mode = 0666;
   struct stat old {};
-  const bool replacing = ::stat(p.c_str(), &old) == 0;
-  if (replacing && S_ISDIR(old.st_mode)) return makeError(ErrorCode::kIo, p + ": cannot write: is a directory");
+  const bool replacing = ::stat(p.c_str(), &old) == 0 && S_ISREG(old.st_mode);
 
   std::string temp;
   int fd = -1;
   for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
-    temp = (dir / ("." + path.filename().string() + tempSuffix())).string();
+    // The name is cut so that the temporary name stays within NAME_MAX (255) even for a long target name.
+    temp = (dir / ("." + path.filename().string().substr(0, 150) + tempSuffix())).string();
     fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, mode);
     if (fd < 0 && errno != EEXIST && errno != EINTR) break;
   }
