@@ -62,12 +62,16 @@ class DepthMap {
   int32_t layers() const { return int32_t(removed_per_layer_.size()); }
   const std::vector<int64_t>& removedPerLayer() const { return removed_per_layer_; }
   int64_t coreVoxels() const { return removed_per_layer_.empty() ? 0 : removed_per_layer_.back(); }
-  // Voxels still present after peeling k layers (k = 0: the original; k >= layers(): empty).
+  // True when the peel ran until nothing was left (not stopped by max_layers).
+  bool complete() const { return rest_count_ == 0; }
+  // Voxels still present after peeling k layers (k = 0: the original; k >= layers(): empty for a complete map,
+  // otherwise what was left after the last layer peeled). O(words x bits of depth), word operations per layer.
   VoxelGrid remainingAfter(int32_t k) const;
-  // Voxels removed by layer k (1-based); the core is removedBy(layers()).
+  // Voxels removed by layer k (1-based); the core is removedBy(layers()). Empty outside 1..layers().
   VoxelGrid removedBy(int32_t k) const;
-  // Depth of a voxel (0 for empty voxels).
+  // Depth of a voxel (0 for empty voxels, and for voxels a map stopped by max_layers did not reach).
   int32_t depthAt(int32_t x, int32_t y, int32_t z) const;
+  // Bytes held by the depth bit planes and the remainder; the original grid is a snapshot shared with the caller.
   size_t memoryBytes() const;
 
  private:
@@ -75,8 +79,11 @@ class DepthMap {
   std::vector<int64_t> removed_per_layer_;
   std::vector<VoxelGrid> depth_bits_;  // binary digits of the depth, one grid per bit, least significant first
   VoxelGrid original_;
+  VoxelGrid rest_;  // voxels left after the last layer peeled (empty when complete)
+  int64_t rest_count_ = 0;
 };
-// Peels up to max_layers (all when < 0). Cost: O(layers * words).
+// Peels up to max_layers (all when < 0). Cost: per layer, O(words spanned by what is left) (the peel tracks the
+// shrinking extent of every row), parallel over Z; memory: ceil(log2(layers + 1)) bit-plane grids.
 Result<DepthMap> computeDepthMap(const VoxelGrid& grid, const ProgressFn& progress = {}, int32_t max_layers = -1);
 
 struct PeelParams {
@@ -90,7 +97,7 @@ struct PeelResult {
   int64_t core_voxels = 0;  // voxels of the last non-empty layer peeled (with all = true: the thickest region)
 };
 Result<PeelResult> peelSkin(const VoxelGrid& grid, const PeelParams& params, const ProgressFn& progress = {});
-// One layer of skin removal, for callers that step.
+// One layer of skin removal, for callers that step. O(allocated words), parallel over Z; the input is not modified.
 VoxelGrid peelOneLayer(const VoxelGrid& grid, int64_t* removed = nullptr);
 
 // ---- X-ray thickness (thesis 5.2.3) ----
@@ -122,10 +129,10 @@ std::string xrayCsv(const XrayResult& xray);
 // ---- Mass properties (thesis 2.6.1) ----
 struct MassProperties {
   int64_t filled = 0;
-  double volume = 0.0;            // filled * h^3
-  glm::dvec3 centroid{0.0};       // of the voxel centres
-  glm::dmat3 inertia{0.0};        // about the centroid, unit density, each voxel a solid cube (products negative)
-  Box3d bbox;                     // outer faces of the filled voxels
+  double volume = 0.0;       // filled * h^3
+  glm::dvec3 centroid{0.0};  // of the voxel centres
+  glm::dmat3 inertia{0.0};   // about the centroid, unit density, each voxel a solid cube (products negative)
+  Box3d bbox;                // outer faces of the filled voxels
   glm::ivec3 bbox_min_ijk{0}, bbox_max_ijk{-1};  // inclusive voxel indices
   // Discretisation bound on |volume - true volume| for a grid made by centre sampling: surface voxels * h^3
   // (every voxel the surface passes through may be wrongly classified).
