@@ -217,7 +217,8 @@ DrawStats PointRenderer::draw(const Camera& camera, int32_t width, int32_t heigh
                     : (params.lut == Lut::kClassic ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(0.78f, 0.84f, 0.92f));
 
   // Projected size of one point (2^k voxels) in pixels is proj[1][1] * (height / 2) * scale / w_clip.
-  const double point_scale = kPointClosingFactor * scale * proj[1][1] * double(height) * 0.5;
+  const double coverage = pointCoverageFactor(camera, params.round_points, aspect);
+  const double point_scale = coverage * scale * proj[1][1] * double(height) * 0.5;
   const double depth_at_target = camera.projection == Projection::kPerspective ? camera.distance : 1.0;
   stats.point_size_px =
       params.point_size_px > 0.0 ? params.point_size_px : std::clamp(point_scale / depth_at_target, 1.0, 255.0);

@@ -52,6 +52,28 @@ IntensityTable litTable(const glm::dvec3& light_dir_world, double ambient) {
   return t;
 }
 
-double closedPointSize(double pixels_per_voxel) { return std::max(1.0, pixels_per_voxel * kPointClosingFactor); }
+double pointCoverageFactor(const Camera& camera, bool round_points, double aspect) {
+  const glm::dvec3 r = camera.rightAxis(), u = camera.upAxis();
+  double factor = 0.0;
+  if (round_points) {
+    // The longest of the four cube diagonals projected onto the screen plane.
+    for (const glm::dvec3 d : {glm::dvec3(1, 1, 1), glm::dvec3(1, 1, -1), glm::dvec3(1, -1, 1), glm::dvec3(-1, 1, 1)}) {
+      factor = std::max(factor, std::hypot(glm::dot(d, r), glm::dot(d, u)));
+    }
+  } else {
+    const auto l1 = [](const glm::dvec3& a) { return std::abs(a.x) + std::abs(a.y) + std::abs(a.z); };
+    factor = std::max(l1(r), l1(u));
+  }
+  if (camera.projection == Projection::kPerspective) {
+    const double tan_half = std::tan(camera.fov_y_deg * (3.14159265358979323846 / 360.0));
+    const double tan_corner = tan_half * std::sqrt(1.0 + aspect * aspect);
+    factor *= std::sqrt(1.0 + tan_corner * tan_corner);  // 1 / cos of the corner angle
+  }
+  return factor * 1.02;
+}
+
+double closedPointSize(double pixels_per_voxel, double coverage_factor) {
+  return std::max(1.0, pixels_per_voxel * coverage_factor);
+}
 
 }  // namespace vox::render

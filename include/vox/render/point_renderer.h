@@ -35,7 +35,8 @@ struct DrawParams {
   // Section face colour at full intensity; it is shaded like a surface whose only free face is the cut face.
   glm::vec3 cut_colour{0.95f, 0.35f, 0.25f};
   Section section;
-  double point_size_px = 0.0;  // > 0: fixed point diameter in pixels; 0: closedPointSize(projected voxel size)
+  double point_size_px = 0.0;  // > 0: fixed point diameter in pixels; 0: closedPointSize (shading.h), which keeps
+                               // the surface closed
   bool round_points = false;   // thesis "point smooth": round instead of square points
   bool cull_back_groups = true;
   // Level of detail: draw a 2^k-downsampled point set (k >= 1, the smallest whose point count fits

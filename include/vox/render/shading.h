@@ -6,6 +6,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "vox/render/camera.h"
+
 namespace vox::render {
 
 // Which table shades the surface points.
@@ -35,12 +37,24 @@ IntensityTable litTable(const glm::dvec3& light_dir_world, double ambient);
 inline constexpr glm::dvec3 kDefaultLightView{0.35, 0.5, 0.8};
 inline constexpr double kDefaultAmbient = 0.25;
 
-// Point diameter in pixels that keeps a surface closed, from the projected size of one voxel edge in pixels
-// (`pixels_per_voxel`, see camera.h pixelsPerVoxel). The centres of the points of a flat voxel face form a 2D
-// lattice whose basis vectors are at most pixels_per_voxel long on screen; the largest empty circle of such a lattice
-// has radius pixels_per_voxel / sqrt(2) (square lattice, e.g. a face seen from above with the camera yawed 45
-// degrees). Both square and round points therefore get a diameter of sqrt(2) * pixels_per_voxel, at least 1 pixel.
-double closedPointSize(double pixels_per_voxel);
-inline constexpr double kPointClosingFactor = 1.41421356237;
+// ---- Point size (thesis 6.2: the point size S follows the zoom and the resolution) ----
+//
+// Every pixel inside the silhouette of a solid sees, first, a surface voxel: the ray enters that voxel's cube through
+// a face whose neighbour is empty, a face turned towards the eye, so the voxel's code group is drawn. The pixel lies
+// inside that cube's projection. A point drawn at the cube's centre that covers the cube's whole projection
+// therefore leaves no pixel of the silhouette uncovered. With p = pixels per voxel edge (camera.h
+// pixelsPerVoxel), the projection of a unit cube reaches, from its centre,
+//  - along the screen's x axis: p/2 * (|r.x| + |r.y| + |r.z|), r = the camera's right axis, and likewise along y
+//    with the up axis; a square point of side p * max of the two sums covers it (1 in axis views, sqrt 2 for a face
+//    turned 45 degrees on screen, at most sqrt 3);
+//  - in any direction: p/2 * the longest projected cube diagonal; a round point of that diameter covers it
+//    (sqrt 2 in axis views, at most sqrt 3).
+// Under perspective, a cube off the view axis at angle t projects larger by up to 1 / cos t; the factor includes
+// that for the corners of the view. A 2% margin keeps pixel centres lying exactly on a point's edge covered.
+// Returns the diameter of a point in units of p.
+double pointCoverageFactor(const Camera& camera, bool round_points, double aspect);
+
+// Point diameter in pixels for `pixels_per_voxel` and a coverage factor: at least 1 pixel.
+double closedPointSize(double pixels_per_voxel, double coverage_factor);
 
 }  // namespace vox::render

@@ -56,13 +56,52 @@ TEST(LitTable, isAmbientPlusDiffuseOfTheMeanFreeFaceNormal) {
   }
 }
 
-TEST(PointSize, closesTheLargestGapOfAFaceLattice) {
-  // A face seen head-on with the camera yawed 45 degrees: point centres on a square lattice of side s rotated by
-  // 45 degrees; the point farthest from all centres is s / sqrt(2) from the nearest one in both x and y.
-  EXPECT_NEAR(closedPointSize(2.0), 2.0 * std::sqrt(2.0), 1e-9);
-  EXPECT_NEAR(closedPointSize(10.0) / 2, 10.0 / std::sqrt(2.0), 1e-6);
-  EXPECT_EQ(closedPointSize(0.3), 1.0);  // never below one pixel
-  EXPECT_EQ(closedPointSize(0.0), 1.0);
+Camera view(double yaw, double pitch, Projection proj = Projection::kOrthographic) {
+  Camera c;
+  c.yaw_deg = yaw;
+  c.pitch_deg = pitch;
+  c.projection = proj;
+  return c;
+}
+
+TEST(PointSize, squarePointsCoverTheProjectedCube) {
+  const double m = 1.02;                                                     // the documented margin
+  EXPECT_NEAR(pointCoverageFactor(view(0, 0), false, 1.0), 1.0 * m, 1e-12);  // axis view: a cube is a square
+  EXPECT_NEAR(pointCoverageFactor(view(90, 0), false, 1.0), 1.0 * m, 1e-12);
+  EXPECT_NEAR(pointCoverageFactor(view(45, 90), false, 1.0), std::sqrt(2.0) * m, 1e-12);  // face turned 45 deg
+  Camera iso;
+  iso.projection = Projection::kOrthographic;
+  iso.setStandardView(StandardView::kIso);
+  // Iso: up = (-1, 2, -1) / sqrt 6 has the larger L1 norm, 4 / sqrt 6.
+  EXPECT_NEAR(pointCoverageFactor(iso, false, 1.0), 4.0 / std::sqrt(6.0) * m, 1e-12);
+}
+
+TEST(PointSize, roundPointsCoverTheLongestProjectedDiagonal) {
+  const double m = 1.02;
+  EXPECT_NEAR(pointCoverageFactor(view(0, 0), true, 1.0), std::sqrt(2.0) * m, 1e-12);  // the square's diagonal
+  Camera iso;
+  iso.projection = Projection::kOrthographic;
+  iso.setStandardView(StandardView::kIso);
+  EXPECT_NEAR(pointCoverageFactor(iso, true, 1.0), std::sqrt(8.0 / 3.0) * m, 1e-12);
+  // Never more than the cube's full diagonal, whatever the view.
+  for (double yaw = -180; yaw < 180; yaw += 7.5)
+    for (double pitch = -90; pitch <= 90; pitch += 7.5) {
+      EXPECT_LE(pointCoverageFactor(view(yaw, pitch), true, 1.0), std::sqrt(3.0) * m + 1e-12);
+      EXPECT_LE(pointCoverageFactor(view(yaw, pitch), false, 1.0), std::sqrt(3.0) * m + 1e-12);
+      EXPECT_GE(pointCoverageFactor(view(yaw, pitch), false, 1.0), 1.0 * m - 1e-12);
+    }
+}
+
+TEST(PointSize, perspectiveAddsTheOffAxisGrowthOfTheViewCorners) {
+  const Camera c = view(0, 0, Projection::kPerspective);  // fov 30 degrees
+  const double tan_corner = std::tan(15.0 * 3.14159265358979323846 / 180.0) * std::sqrt(2.0);
+  EXPECT_NEAR(pointCoverageFactor(c, false, 1.0), 1.02 * std::sqrt(1 + tan_corner * tan_corner), 1e-12);
+}
+
+TEST(PointSize, isTheProjectedVoxelTimesTheFactorAndAtLeastOnePixel) {
+  EXPECT_NEAR(closedPointSize(2.5, 1.4), 3.5, 1e-12);
+  EXPECT_EQ(closedPointSize(0.3, 1.4), 1.0);
+  EXPECT_EQ(closedPointSize(0.0, 1.0), 1.0);
 }
 
 }  // namespace
