@@ -24,6 +24,7 @@
 #include <limits>
 
 #include "voxelize/exact_predicates.h"
+#include "voxelize/parallel.h"
 
 namespace vox::voxelize_detail {
 namespace {
@@ -39,9 +40,15 @@ inline int edgeSide(double pv, double pw, double qv, double qw, double v, double
   return 0;
 }
 
-// Index of the first centre >= value in a non-decreasing array of centres (exact comparison).
-int32_t firstAtOrAbove(const std::vector<double>& centres, double value) {
-  return int32_t(std::lower_bound(centres.begin(), centres.end(), value) - centres.begin());
+// Index of the first centre >= value (n when none): estimated from the grid formula, then settled by exact
+// comparisons with the stored centres (non-decreasing), usually one or two.
+int32_t firstAtOrAbove(const std::vector<double>& centres, double origin, double h, double value) {
+  const int32_t n = int32_t(centres.size());
+  const double estimate = std::ceil((value - origin) / h - 0.5);
+  int32_t i = estimate >= double(n) ? n : estimate > 0.0 ? int32_t(estimate) : 0;  // NaN-safe clamp
+  while (i > 0 && centres[size_t(i) - 1] >= value) --i;
+  while (i < n && centres[size_t(i)] < value) ++i;
+  return i;
 }
 
 std::vector<double> centresAlong(const GridPlacement& placement, int axis) {
@@ -56,14 +63,14 @@ std::vector<double> centresAlong(const GridPlacement& placement, int axis) {
 
 }  // namespace
 
-RayCaster::RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, RayAxes axes)
+RayCaster::RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, RayAxes axes, int threads)
     : axes_(axes), h_(placement.frame.voxel_size) {
   cu_ = centresAlong(placement, axes.u);
   cv_ = centresAlong(placement, axes.v);
   cw_ = centresAlong(placement, axes.w);
-  tris_.reserve(mesh.triangles.size());
-  for (const Triangle& in : mesh.triangles) {
-    Tri t;
+  const double ov = placement.frame.origin[axes.v], ow = placement.frame.origin[axes.w];
+  // Fills t from the input triangle; false when no displaced ray can cross it.
+  auto prepare = [&](const Triangle& in, Tri& t) {
     for (int k = 0; k < 3; ++k) {
       t.p[k][0] = in.v[k][axes.u];
       t.p[k][1] = in.v[k][axes.v];
@@ -72,22 +79,48 @@ RayCaster::RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, R
     // Orientation of the projection = sign of the normal's u component, exactly. Zero area: no displaced ray
     // can be strictly inside (the three edge signs sum to the area), so the triangle is never crossed.
     t.sign = orient2d(t.p[0][1], t.p[0][2], t.p[1][1], t.p[1][2], t.p[2][1], t.p[2][2]);
-    if (t.sign == 0) continue;
-    const double vmin = std::min({t.p[0][1], t.p[1][1], t.p[2][1]});
-    const double vmax = std::max({t.p[0][1], t.p[1][1], t.p[2][1]});
-    const double wmin = std::min({t.p[0][2], t.p[1][2], t.p[2][2]});
-    const double wmax = std::max({t.p[0][2], t.p[1][2], t.p[2][2]});
+    if (t.sign == 0) return false;
     // The displaced ray (v + eps^3, w + eps^2) can be inside the projection only when min <= centre < max on both
     // axes: at centre == max it is already past the maximum.
-    t.row_lo = firstAtOrAbove(cw_, wmin);
-    t.row_hi = firstAtOrAbove(cw_, wmax);
-    t.ray_lo = firstAtOrAbove(cv_, vmin);
-    t.ray_hi = firstAtOrAbove(cv_, vmax);
-    if (t.row_lo >= t.row_hi || t.ray_lo >= t.ray_hi) continue;
-    tris_.push_back(t);
+    t.row_lo = firstAtOrAbove(cw_, ow, h_, std::min({t.p[0][2], t.p[1][2], t.p[2][2]}));
+    t.row_hi = firstAtOrAbove(cw_, ow, h_, std::max({t.p[0][2], t.p[1][2], t.p[2][2]}));
+    if (t.row_lo >= t.row_hi) return false;
+    t.ray_lo = firstAtOrAbove(cv_, ov, h_, std::min({t.p[0][1], t.p[1][1], t.p[2][1]}));
+    t.ray_hi = firstAtOrAbove(cv_, ov, h_, std::max({t.p[0][1], t.p[1][1], t.p[2][1]}));
+    return t.ray_lo < t.ray_hi;
+  };
+  // Counting sort by first row, so a sweep activates triangles in order. Chunks of the input are contiguous and
+  // scattered in chunk order, so the result (row, then input order) does not depend on the number of threads.
+  const int64_t nt = int64_t(mesh.triangles.size());
+  const size_t rows = cw_.size();
+  threads = int(std::clamp<int64_t>(threads, 1, std::max<int64_t>(1, nt / 16384)));
+  std::vector<int32_t> first_row(size_t(nt), -1);
+  std::vector<std::vector<size_t>> count(size_t(threads), std::vector<size_t>(rows, 0));
+  forChunks(nt, threads, [&](int c, int64_t begin, int64_t end) {
+    auto& mine = count[size_t(c)];
+    for (int64_t i = begin; i < end; ++i) {
+      Tri t;
+      if (!prepare(mesh.triangles[size_t(i)], t)) continue;
+      first_row[size_t(i)] = t.row_lo;
+      ++mine[size_t(t.row_lo)];
+    }
+  });
+  size_t total = 0;
+  for (size_t r = 0; r < rows; ++r) {
+    for (auto& mine : count) {
+      const size_t n = mine[r];
+      mine[r] = total;  // becomes the chunk's next slot in row r
+      total += n;
+    }
   }
-  // Sorted by first row, so a sweep activates triangles in order; stable for reproducible crossing order.
-  std::stable_sort(tris_.begin(), tris_.end(), [](const Tri& a, const Tri& b) { return a.row_lo < b.row_lo; });
+  tris_.resize(total);
+  forChunks(nt, threads, [&](int c, int64_t begin, int64_t end) {
+    auto& next = count[size_t(c)];
+    for (int64_t i = begin; i < end; ++i) {
+      const int32_t r = first_row[size_t(i)];
+      if (r >= 0) prepare(mesh.triangles[size_t(i)], tris_[next[size_t(r)]++]);
+    }
+  });
 }
 
 RayCaster::RowSweep::RowSweep(const RayCaster& caster, int32_t row_begin) : caster_(caster), row_(row_begin) {
@@ -149,37 +182,74 @@ void RayCaster::rowCrossings(const Tri& t, int32_t row, std::vector<Crossing>& o
       j1 = int32_t(std::clamp(last, double(j0), double(j1)));
     }
   }
+  Plane plane;
+  bool have_plane = false;
   for (int32_t j = j0; j < j1; ++j) {
     const double v = cv_[size_t(j)];
     if (edgeSide(av, aw, bv, bw, v, w) != t.sign) continue;
     if (edgeSide(bv, bw, cv, cw, v, w) != t.sign) continue;
     if (edgeSide(cv, cw, av, aw, v, w) != t.sign) continue;
-    out.push_back(Crossing{j, firstPast(t, v, w), t.sign});
+    if (!have_plane) {
+      plane = Plane(t);
+      have_plane = true;
+    }
+    out.push_back(Crossing{j, firstPast(plane, v, w), t.sign});
   }
 }
 
-int32_t RayCaster::firstPast(const Tri& t, double v, double w) const {
-  const double a[3] = {t.p[0][0], t.p[0][1], t.p[0][2]};
-  const double b[3] = {t.p[1][0], t.p[1][1], t.p[1][2]};
-  const double c[3] = {t.p[2][0], t.p[2][1], t.p[2][2]};
-  // Centre i = (u_i + eps, v + eps^3, w + eps^2) is past the crossing iff it lies on the side of T's plane that
-  // the normal n = (B - A) x (C - A) points to when n.u > 0 (or away from when n.u < 0): sign(n . (P - A)) equals
-  // t.sign, or n . (P - A) is exactly 0, where the displacement eps along u (coefficient n.u) decides in favour of
-  // "past". orient3d(A, B, C, P) = -sign(n . (P - A)), so: past iff orient3d != t.sign.
+RayCaster::Plane::Plane(const Tri& t) : sign(t.sign) {
+  for (int k = 0; k < 3; ++k) {
+    a[k] = t.p[0][k];
+    b[k] = t.p[1][k];
+    c[k] = t.p[2][k];
+  }
+  // Normal (B - A) x (C - A) in double, with a bound on each component's error: the differences, the products and
+  // the difference of the products each round once (relative error u), so |error| <= (4u + O(u^2)) * (|first
+  // product| + |second product|); 8u leaves room for the higher-order terms.
+  const double d1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double d2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const double p[6] = {d1[1] * d2[2], d1[2] * d2[1], d1[2] * d2[0], d1[0] * d2[2], d1[0] * d2[1], d1[1] * d2[0]};
+  for (int k = 0; k < 3; ++k) {
+    n[k] = p[2 * k] - p[2 * k + 1];
+    n_error[k] = 8.0 * kUnitRoundoff * (std::abs(p[2 * k]) + std::abs(p[2 * k + 1]));
+  }
+  reliable = std::isfinite(n[0]) && std::abs(n[0]) > 4.0 * n_error[0];
+  umin = std::min({a[0], b[0], c[0]});
+  umax = std::max({a[0], b[0], c[0]});
+}
+
+int32_t RayCaster::firstPast(const Plane& pl, double v, double w) const {
+  // The crossing lies at u = x_c = a.u - (n.v (v - a.v) + n.w (w - a.w)) / n.u. Centre i = (u_i + eps, v + eps^3,
+  // w + eps^2) is past it iff u_i >= x_c (at u_i == x_c the displacement eps along u puts it past).
+  //
+  // Fast path: x_c in double with a forward error bound `margin` (first-order error analysis of the formula, using
+  // the normal's error bounds; the constants are twice what the analysis needs). A centre farther than `margin`
+  // from the estimate is decided by comparing doubles.
+  const double rv = v - pl.a[1], rw = w - pl.a[2];
+  const double num = pl.n[1] * rv + pl.n[2] * rw;
+  double x = pl.a[0] - num / pl.n[0];
+  double margin = std::numeric_limits<double>::infinity();
+  if (pl.reliable) {
+    const double u8 = 8.0 * kUnitRoundoff;
+    const double num_error = (pl.n_error[1] + u8 * std::abs(pl.n[1])) * std::abs(rv) +
+                             (pl.n_error[2] + u8 * std::abs(pl.n[2])) * std::abs(rw);
+    const double q = std::abs(num / pl.n[0]);
+    const double q_error = (num_error + q * pl.n_error[0]) / (std::abs(pl.n[0]) - pl.n_error[0]) + u8 * q;
+    margin = (q_error + u8 * std::abs(x)) * 1.001;
+    if (!std::isfinite(margin)) margin = std::numeric_limits<double>::infinity();
+  }
+  // The crossing lies inside the triangle, so clamping to the vertices' u range only moves the estimate closer.
+  if (!(x >= pl.umin)) x = pl.umin;  // also catches NaN
+  if (!(x <= pl.umax)) x = pl.umax;
+  // Exact decision otherwise: orient3d(A, B, C, P) = -sign(n . (P - A)); the centre is past iff n . (P - A) has
+  // the sign of n.u or is exactly 0 (then the eps displacement along u, coefficient n.u, decides for "past").
   auto past = [&](int32_t i) {
+    const double d = cu_[size_t(i)] - x;
+    if (d > margin) return true;
+    if (-d > margin) return false;
     const double p[3] = {cu_[size_t(i)], v, w};
-    return orient3d(a, b, c, p) != t.sign;
+    return orient3d(pl.a, pl.b, pl.c, p) != pl.sign;
   };
-  // Estimate from the plane equation in double; the exact tests below correct it (usually not at all).
-  const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-  const double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  const double nu = e1[1] * e2[2] - e1[2] * e2[1];
-  const double nv = e1[2] * e2[0] - e1[0] * e2[2];
-  const double nw = e1[0] * e2[1] - e1[1] * e2[0];
-  double x = a[0] - (nv * (v - a[1]) + nw * (w - a[2])) / nu;
-  const double umin = std::min({a[0], b[0], c[0]}), umax = std::max({a[0], b[0], c[0]});
-  if (!(x >= umin)) x = umin;  // also catches NaN from a rounded-to-zero nu
-  if (!(x <= umax)) x = umax;
   const int32_t n = length();
   int32_t i = int32_t(std::clamp(std::ceil((x - cu_[0]) / h_), 0.0, double(n)));
   if (i < n && !past(i)) {

@@ -33,9 +33,9 @@ struct Crossing {
 class RayCaster {
  public:
   // Prepares the triangles for this ray family: float32 vertices in (u, v, w) order, the rows and rays each can
-  // cross, sorted by first row. Triangles whose projection onto (v, w) has exactly zero area are dropped: no
-  // displaced ray crosses them. O(T log T) time, about 56 bytes per triangle.
-  RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, RayAxes axes);
+  // cross, sorted by first row (counting sort, on up to `threads` threads). Triangles whose projection onto (v, w)
+  // has exactly zero area are dropped: no displaced ray crosses them. O(T + rows) time, 56 bytes per triangle.
+  RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, RayAxes axes, int threads);
 
   int32_t rows() const { return int32_t(cw_.size()); }
   int32_t raysPerRow() const { return int32_t(cv_.size()); }
@@ -69,8 +69,19 @@ class RayCaster {
     int32_t sign;            // exact sign of the normal's u component (orientation of the projection), never 0
   };
 
+  // A crossed triangle's vertices in double and its normal with error bounds, set up once per triangle and row.
+  struct Plane {
+    Plane() = default;
+    explicit Plane(const Tri& t);
+    double a[3], b[3], c[3];
+    double n[3], n_error[3];  // (B - A) x (C - A) in double; |n[k] - exact| <= n_error[k]
+    double umin, umax;        // the vertices' u range, which holds every crossing
+    bool reliable;            // |n.u| well above its error bound: the estimate's error bound holds
+    int32_t sign;
+  };
+
   void rowCrossings(const Tri& t, int32_t row, std::vector<Crossing>& out) const;
-  int32_t firstPast(const Tri& t, double v, double w) const;
+  int32_t firstPast(const Plane& plane, double v, double w) const;
 
   RayAxes axes_;
   double h_ = 1.0;

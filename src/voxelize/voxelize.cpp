@@ -447,7 +447,11 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
   }
 
   int64_t degenerate = 0;
-  for (const Triangle& t : mesh.triangles) degenerate += isDegenerate(t) ? 1 : 0;
+  if (topology) {
+    degenerate = topology->degenerate_triangles;
+  } else {
+    for (const Triangle& t : mesh.triangles) degenerate += isDegenerate(t) ? 1 : 0;
+  }
   if (degenerate > 0) {
     result.warnings.push_back(plural(degenerate, "degenerate triangle") + " (zero area) ignored: they cross no ray");
   }
@@ -472,7 +476,7 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
     if (!vote) {
       const Rule rule = result.mode_used == FillMode::kParity ? Rule::kParity : Rule::kNonzero;
       VoxelGrid grid(dims, frame);
-      const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongX);
+      const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongX, threads);
       std::vector<PassScratch> scratch(static_cast<size_t>(threads));
       const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t z, const auto& crossings) {
         fillRowAlongX(grid, z, crossings, rule, scratch[size_t(t)]);
@@ -495,7 +499,7 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       VoxelGrid gx(dims, frame), gy(dims, frame);
       std::vector<int64_t> odd(3, 0);
       {
-        const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongX);
+        const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongX, threads);
         std::vector<PassScratch> scratch(static_cast<size_t>(threads));
         const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t z, const auto& crossings) {
           fillRowAlongX(gx, z, crossings, Rule::kParity, scratch[size_t(t)]);
@@ -504,7 +508,7 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
         odd[0] = sumStats(scratch, caster).odd_rays;
       }
       {
-        const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongY);
+        const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongY, threads);
         std::vector<PassScratch> scratch(static_cast<size_t>(threads));
         const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t z, const auto& crossings) {
           toggleRowAlongY(gy, z, crossings, scratch[size_t(t)]);
@@ -516,7 +520,7 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       {
         std::vector<uint64_t*> layers(static_cast<size_t>(dims.nz));
         for (int32_t z = 0; z < dims.nz; ++z) layers[size_t(z)] = gz.mutableLayerWords(z);
-        const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongZ);
+        const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongZ, threads);
         std::vector<PassScratch> scratch(static_cast<size_t>(threads));
         const int64_t wpr = gz.wordsPerRow();
         const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t y, const auto& crossings) {

@@ -1,0 +1,27 @@
+#pragma once
+// Small std::thread helpers for the voxelizer (internal).
+#include <algorithm>
+#include <cstdint>
+#include <thread>
+#include <vector>
+
+namespace vox::voxelize_detail {
+
+// Splits [0, n) into `threads` contiguous chunks in order and calls f(chunk, begin, end) for each, chunk 0 on the
+// calling thread. Contiguous, ordered chunks let callers merge per-chunk results deterministically.
+template <class F>
+void forChunks(int64_t n, int threads, F&& f) {
+  threads = int(std::clamp<int64_t>(threads, 1, std::max<int64_t>(n, 1)));
+  auto bounds = [&](int t) { return n * t / threads; };
+  if (threads == 1) {
+    f(0, int64_t(0), n);
+    return;
+  }
+  std::vector<std::thread> pool;
+  pool.reserve(size_t(threads) - 1);
+  for (int t = 1; t < threads; ++t) pool.emplace_back([&, t] { f(t, bounds(t), bounds(t + 1)); });
+  f(0, int64_t(0), bounds(1));
+  for (auto& th : pool) th.join();
+}
+
+}  // namespace vox::voxelize_detail
