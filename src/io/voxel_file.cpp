@@ -61,10 +61,11 @@ Status checkDims(const Dims& d, const std::string& name) {
 }
 
 // Memory for `layers` allocated Z layers of a grid with dims d, compared with the machine's memory.
-Status checkLayerMemory(const Dims& d, int64_t layers, const std::string& name) {
+// `extra` is working memory the decoder needs besides the grid.
+Status checkLayerMemory(const Dims& d, int64_t layers, const std::string& name, uint64_t extra = 0) {
   const Dims one{d.nx, d.ny, 1};
   const uint64_t layer_bytes = estimateGridBytes(one) - estimateGridBytes(Dims{d.nx, d.ny, 0});
-  const uint64_t need = layer_bytes * uint64_t(layers + 1);  // + the shared zero layer
+  const uint64_t need = layer_bytes * uint64_t(layers + 1) + extra;  // + the shared zero layer
   const uint64_t have = physicalMemoryBytes();
   if (need > have) {
     return makeError(ErrorCode::kLimit, name + ": grid " + dimsText(d) + " with " + std::to_string(layers) +
@@ -194,20 +195,38 @@ class RunEncoder {
   uint64_t filled_ = 0;
 };
 
-// Runs of one row's unpadded words: whole empty or full words cost O(1); otherwise one countr_zero per run.
-void encodeRow(const std::vector<uint64_t>& words, int32_t nx, RunEncoder& enc, bool& state) {
-  const size_t n = words.size();
-  for (size_t w = 0; w < n; ++w) {
-    const int bits = (w + 1 == n && (nx & 63)) ? (nx & 63) : 64;
+// Calls sink.add(value, length) for the runs of the first `nbits` bits of `words` (bit b of word w is element
+// 64 w + b). Whole empty or full words cost O(1); otherwise one countr_zero per run. Zero-length runs may be
+// passed; sinks ignore them.
+template <class Sink>
+void emitRuns(const uint64_t* words, int64_t nbits, Sink& sink) {
+  bool state = false;
+  const int64_t n = (nbits + 63) / 64;
+  for (int64_t w = 0; w < n; ++w) {
+    const int bits = (w + 1 == n && (nbits & 63)) ? int(nbits & 63) : 64;
     const uint64_t valid = bits == 64 ? ~uint64_t(0) : (uint64_t(1) << bits) - 1;
     int pos = 0;
     while (pos < bits) {
       // Bits that differ from the current state, from pos on: the run of `state` ends at the first of them.
       const uint64_t diff = ((state ? ~words[w] : words[w]) & valid) >> pos;
       const int len = diff == 0 ? bits - pos : std::countr_zero(diff);
-      enc.add(state, uint64_t(len));
+      sink.add(state, uint64_t(len));
       pos += len;
       if (pos < bits) state = !state;
+    }
+  }
+}
+
+// Transposes a 64 x 64 bit matrix in place: afterwards bit c of a[r] is what bit r of a[c] was. The recursive
+// block swap of Hacker's Delight (H. S. Warren, 2nd ed., section 7-3), for 64-bit words, least significant bit
+// first: swap the off-diagonal 32 x 32 blocks, then the 16 x 16 blocks inside each, and so on.
+void transpose64(uint64_t* a) {
+  uint64_t m = 0x00000000FFFFFFFFull;
+  for (int j = 32; j != 0; j >>= 1, m ^= (m << j)) {
+    for (int k = 0; k < 64; k = ((k | j) + 1) & ~j) {
+      const uint64_t t = ((a[k] >> j) ^ a[k | j]) & m;
+      a[k] ^= t << j;
+      a[k | j] ^= t;
     }
   }
 }
@@ -264,16 +283,14 @@ std::vector<uint8_t> encodeVxm(const VoxelGrid& grid) {
   if (!grid.empty()) {
     const uint64_t layer_voxels = uint64_t(grid.nx()) * uint64_t(grid.ny());
     std::vector<uint64_t> words(size_t((int64_t(grid.nx()) + 63) / 64));
-    bool state = false;
     for (int32_t z = 0; z < grid.nz(); ++z) {
       if (!grid.layerAllocated(z)) {
         enc.add(false, layer_voxels);
-        state = false;
         continue;
       }
       for (int32_t y = 0; y < grid.ny(); ++y) {
         unpaddedRow(grid, y, z, words);
-        encodeRow(words, grid.nx(), enc, state);
+        emitRuns(words.data(), grid.nx(), enc);
       }
     }
   }
@@ -473,6 +490,64 @@ bool parseInt(std::string_view s, int64_t& v) {
   return r.ec == std::errc() && r.ptr == s.data() + s.size();
 }
 
+// (value, count) byte pairs with counts of at most 255, merging adjacent runs of one value.
+class BinvoxRuns {
+ public:
+  explicit BinvoxRuns(std::vector<uint8_t>& out) : out_(out) {}
+  void add(bool filled, uint64_t n) {
+    if (n == 0) return;
+    if (uint8_t(filled) != value_) {
+      flush();
+      value_ = uint8_t(filled);
+    }
+    run_ += n;
+  }
+  void flush() {
+    while (run_ > 0) {
+      const uint64_t piece = std::min<uint64_t>(run_, 255);
+      out_.push_back(value_);
+      out_.push_back(uint8_t(piece));
+      run_ -= piece;
+    }
+  }
+
+ private:
+  std::vector<uint8_t>& out_;
+  uint8_t value_ = 0;
+  uint64_t run_ = 0;
+};
+
+// y-columns of up to 64 consecutive x values, for the Z layers that hold voxels (numbered compactly, so empty
+// layers cost nothing): column(xi, z) is yWords() words, bit y of the column = voxel (x0 + xi, y, z).
+class ColumnBlocks {
+ public:
+  template <class LayerUsed>
+  ColumnBlocks(const Dims& dims, LayerUsed used) : y_words_((int64_t(dims.ny) + 63) / 64) {
+    width_ = std::min<int64_t>(64, dims.nx);
+    slots_.assign(size_t(dims.nz), -1);
+    for (int32_t z = 0; z < dims.nz; ++z) {
+      if (used(z)) slots_[size_t(z)] = count_++;
+    }
+    words_.assign(size_t(width_ * count_ * y_words_), 0);
+  }
+  // Bytes the buffer would take, for memory checks before it is built.
+  static uint64_t bytesFor(const Dims& dims, int64_t layers) {
+    return uint64_t(std::min<int64_t>(64, dims.nx)) * uint64_t(layers) * uint64_t((int64_t(dims.ny) + 63) / 64) * 8;
+  }
+  int32_t slot(int32_t z) const { return slots_[size_t(z)]; }
+  int64_t yWords() const { return y_words_; }
+  int64_t blockWidth() const { return width_; }
+  uint64_t* column(int64_t xi, int32_t z) { return words_.data() + (xi * count_ + slots_[size_t(z)]) * y_words_; }
+  void clear() { std::fill(words_.begin(), words_.end(), 0); }
+
+ private:
+  int64_t y_words_;
+  int64_t width_ = 0;
+  int32_t count_ = 0;
+  std::vector<int32_t> slots_;
+  std::vector<uint64_t> words_;
+};
+
 std::vector<std::string_view> splitWords(std::string_view line) {
   std::vector<std::string_view> out;
   size_t i = 0;
@@ -495,37 +570,46 @@ std::vector<uint8_t> encodeBinvox(const VoxelGrid& grid) {
                        shortestDouble(f.origin.z) + "\nscale " + shortestDouble(double(d) * f.voxel_size) + "\ndata\n";
   std::vector<uint8_t> out(header.begin(), header.end());
   if (d == 0) return out;
-  uint8_t value = 0;
-  uint64_t run = 0;
-  auto emit = [&](uint8_t v, uint64_t n) {
-    if (n == 0) return;
-    if (v != value) {
-      while (run > 0) {
-        const uint64_t piece = std::min<uint64_t>(run, 255);
-        out.push_back(value);
-        out.push_back(uint8_t(piece));
-        run -= piece;
-      }
-      value = v;
-    }
-    run += n;
-  };
+  BinvoxRuns runs(out);
+  // Binvox wants columns along y; the grid stores rows along x. Blocks of 64 x 64 bits are transposed into a
+  // buffer of y-columns for 64 consecutive x and every allocated layer, which is then emitted as runs in the
+  // file's order (x, then z, then y), one countr_zero per run.
+  ColumnBlocks cols(grid.dims(), [&](int32_t z) { return grid.layerAllocated(z); });
   const int64_t wpr = grid.wordsPerRow();
-  for (int32_t x = 0; x < d; ++x) {
-    const int64_t xp = int64_t(x) + 1;
-    for (int32_t z = 0; z < d; ++z) {
-      // Voxels past the grid (the padding to D^3) and whole unallocated layers are one empty run.
-      if (x >= grid.nx() || z >= grid.nz() || !grid.layerAllocated(z)) {
-        emit(0, uint64_t(d));
-        continue;
+  uint64_t block[64];
+  for (int64_t x0 = 0; x0 < d; x0 += 64) {
+    const int64_t bx = x0 >> 6;
+    if (x0 < grid.nx()) {
+      for (int32_t z = 0; z < grid.nz(); ++z) {
+        if (cols.slot(z) < 0) continue;
+        const uint64_t* layer = grid.layerWords(z);
+        for (int64_t yw = 0; yw < cols.yWords(); ++yw) {
+          for (int i = 0; i < 64; ++i) {
+            const int64_t y = yw * 64 + i;
+            if (y >= grid.ny()) {
+              block[i] = 0;
+              continue;
+            }
+            const uint64_t* row = layer + (y + 1) * wpr;  // unpadded word bx = padded bits 64 bx + 1 ..
+            block[i] = (row[bx] >> 1) | (bx + 1 < wpr ? row[bx + 1] << 63 : 0);
+          }
+          transpose64(block);
+          for (int64_t xi = 0; xi < cols.blockWidth(); ++xi) cols.column(xi, z)[yw] = block[xi];
+        }
       }
-      const uint64_t* layer = grid.layerWords(z) + (xp >> 6);
-      const int shift = int(xp & 63);
-      for (int32_t y = 0; y < grid.ny(); ++y) emit(uint8_t((layer[(int64_t(y) + 1) * wpr] >> shift) & 1u), 1);
-      emit(0, uint64_t(d - grid.ny()));
+    }
+    for (int64_t x = x0; x < std::min<int64_t>(x0 + 64, d); ++x) {
+      for (int32_t z = 0; z < d; ++z) {
+        if (x >= grid.nx() || z >= grid.nz() || cols.slot(z) < 0) {
+          runs.add(false, uint64_t(d));  // padding to D^3, or an empty layer
+          continue;
+        }
+        emitRuns(cols.column(x - x0, z), grid.ny(), runs);
+        runs.add(false, uint64_t(d - grid.ny()));
+      }
     }
   }
-  emit(value == 0 ? 1 : 0, 1);  // flush the last run (the extra one-voxel run is never written)
+  runs.flush();
   return out;
 }
 
@@ -641,7 +725,9 @@ Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string
                                               (data_bytes % 2 ? " and end with half a pair" : ""));
     }
     const int64_t layers = std::count(layer_used.begin(), layer_used.end(), uint8_t(1));
-    if (Status s = checkLayerMemory(dims, layers, name); !s.ok()) return s.error();
+    if (Status s = checkLayerMemory(dims, layers, name, ColumnBlocks::bytesFor(dims, layers)); !s.ok()) {
+      return s.error();
+    }
   }
 
   GridFrame frame;
@@ -651,14 +737,36 @@ Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string
   frame.voxel_size = scale / double(std::max({dims.nx, dims.ny, dims.nz}));
   frame.source = baseName(name);
   VoxelGrid grid(dims, frame);
-  // Pass 2: set bits. A filled run walks y within one (x, z) column of a Z layer, so it is a loop over rows of
-  // that layer setting one bit each.
+  // Pass 2: the runs of 64 consecutive x values (a block of the file) are set into y-columns with word masks,
+  // then 64 x 64 bit blocks are transposed into the grid's x-rows: the reverse of encodeBinvox.
+  ColumnBlocks cols(dims, [&](int32_t z) { return layer_used[size_t(z)] != 0; });
   const int64_t wpr = grid.wordsPerRow();
+  int64_t block_x0 = -1;  // first x of the block in the buffer; -1 while the buffer is empty
+  uint64_t block[64];
+  auto flushBlock = [&]() {
+    if (block_x0 < 0) return;
+    const int64_t bx = block_x0 >> 6;
+    for (int32_t z = 0; z < dims.nz; ++z) {
+      if (cols.slot(z) < 0) continue;
+      uint64_t* layer = grid.mutableLayerWords(z);
+      for (int64_t yw = 0; yw < cols.yWords(); ++yw) {
+        for (int64_t xi = 0; xi < 64; ++xi) block[xi] = xi < cols.blockWidth() ? cols.column(xi, z)[yw] : 0;
+        transpose64(block);
+        for (int64_t i = 0; i < 64 && yw * 64 + i < dims.ny; ++i) {
+          if (block[i] == 0) continue;
+          uint64_t* row = layer + (yw * 64 + i + 1) * wpr;  // voxel x = padded bit x + 1
+          row[bx] |= block[i] << 1;
+          if (bx + 1 < wpr) row[bx + 1] |= block[i] >> 63;
+        }
+      }
+    }
+    cols.clear();
+    block_x0 = -1;
+  };
   uint64_t k = 0;
   for (size_t i = 0; i < pairs; ++i) {
-    const uint8_t v = data[2 * i];
     uint64_t n = data[2 * i + 1];
-    if (v == 0) {
+    if (data[2 * i] == 0) {
       k += n;
       continue;
     }
@@ -666,15 +774,23 @@ Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string
       const uint64_t y0 = k % width;
       const uint64_t col = k / width;  // x * height + z
       const int32_t z = int32_t(col % height);
-      const int64_t xp = int64_t(col / height) + 1;
+      const int64_t x = int64_t(col / height);
       const uint64_t len = std::min<uint64_t>(n, width - y0);
-      uint64_t* layer = grid.mutableLayerWords(z) + (xp >> 6);
-      const uint64_t bit = uint64_t(1) << (xp & 63);
-      for (uint64_t y = y0; y < y0 + len; ++y) layer[int64_t(y + 1) * wpr] |= bit;
+      if (block_x0 >= 0 && (x >> 6) != (block_x0 >> 6)) flushBlock();
+      block_x0 = x & ~int64_t(63);
+      // Bits y0 .. y0 + len - 1 of the column: at most 255 bits, so a few words.
+      uint64_t* c = cols.column(x - block_x0, z);
+      for (uint64_t y = y0; y < y0 + len;) {
+        const uint64_t w = y >> 6, b = y & 63;
+        const uint64_t take = std::min<uint64_t>(64 - b, y0 + len - y);
+        c[w] |= (take == 64 ? ~uint64_t(0) : ((uint64_t(1) << take) - 1)) << b;
+        y += take;
+      }
       k += len;
       n -= len;
     }
   }
+  flushBlock();
   return grid;
 }
 

@@ -2,6 +2,7 @@
 // a word, exactly on a word, one voxel wide), frames, damaged files, and dispatch by extension.
 #include "vox/io/voxel_file.h"
 
+#include <array>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -172,6 +173,51 @@ TEST(Binvox, nonCubicGridIsPaddedToTheLargestDimension) {
   EXPECT_EQ(mismatches, 0);
   EXPECT_EQ(r->filledCount(), g.filledCount());
   EXPECT_NEAR(r->frame().voxel_size, 0.1, 1e-16);
+}
+
+TEST(Binvox, paddedRoundTripIsBitExactForAwkwardNonCubicDims) {
+  // Blocks of 64 x values and 64 y values are transposed inside the codec: sizes either side of 64 on every axis.
+  uint32_t seed = 200;
+  for (const Dims& d : {Dims{130, 3, 70}, Dims{3, 130, 70}, Dims{70, 70, 130}, Dims{65, 63, 1}, Dims{1, 1, 129}}) {
+    SCOPED_TRACE(std::to_string(d.nx) + "x" + std::to_string(d.ny) + "x" + std::to_string(d.nz));
+    const VoxelGrid g = randomGrid(d, 0.3, seed++);
+    const auto r = decodeBinvox(encodeBinvox(g), "t.binvox");
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    const int32_t n = std::max({d.nx, d.ny, d.nz});
+    ASSERT_EQ(r->dims(), (Dims{n, n, n}));
+    int64_t mismatches = 0;
+    for (int z = 0; z < n; ++z)
+      for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) mismatches += r->get(x, y, z) != (g.inBounds(x, y, z) && g.get(x, y, z));
+    EXPECT_EQ(mismatches, 0);
+  }
+}
+
+TEST(Binvox, decoderAgreesWithTheIndexFormulaOnRandomFiles) {
+  // Random run streams over non-cubic "dim d w h" files, checked against index = x * w * h + z * w + y.
+  std::mt19937 rng(42);
+  for (const auto& [dx, dy, dz] : {std::array{70, 130, 5}, std::array{5, 70, 130}, std::array{129, 1, 65}}) {
+    const int64_t total = int64_t(dx) * dy * dz;
+    std::string file =
+        "#binvox 1\ndim " + std::to_string(dx) + " " + std::to_string(dy) + " " + std::to_string(dz) + "\ndata\n";
+    std::vector<uint8_t> voxels;
+    while (int64_t(voxels.size()) < total) {
+      const uint8_t v = uint8_t(rng() % 2);
+      const int64_t n = std::min<int64_t>(1 + rng() % 255, total - int64_t(voxels.size()));
+      file += char(v);
+      file += char(n);
+      voxels.insert(voxels.end(), size_t(n), v);
+    }
+    const auto r = decodeBinvox(std::vector<uint8_t>(file.begin(), file.end()), "r.binvox");
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    ASSERT_EQ(r->dims(), (Dims{dx, dy, dz}));
+    int64_t mismatches = 0;
+    for (int x = 0; x < dx; ++x)
+      for (int z = 0; z < dz; ++z)
+        for (int y = 0; y < dy; ++y)
+          mismatches += r->get(x, y, z) != (voxels[size_t(int64_t(x) * dy * dz + int64_t(z) * dy + y)] == 1);
+    EXPECT_EQ(mismatches, 0) << dx << "x" << dy << "x" << dz;
+  }
 }
 
 TEST(Binvox, scaleIsTheCubeEdgeAndIndexOrderIsYThenZThenX) {
