@@ -1,7 +1,8 @@
 #pragma once
-// STL reader (binary and ASCII, chosen by content: a binary file whose 80-byte header starts with "solid" is still
-// binary when its size matches 84 + 50 * count). Errors name the file, and the line for ASCII, e.g.
-// "part.stl:88: expected 'vertex', found 'endloop'".
+// STL reader (binary and ASCII, chosen by content, docs/file-format.md): binary when the size is exactly
+// 84 + 50 * count (even if the header starts with "solid"); else ASCII when the file starts with "solid" and holds
+// no NUL byte; else a binary file of the wrong size (an error saying truncated or size mismatch). Errors name the
+// file, and the line for ASCII, e.g. "part.stl:88: expected 'vertex', found 'endloop'".
 #include <cstdint>
 #include <filesystem>
 #include <span>
@@ -14,7 +15,7 @@
 namespace vox::io {
 
 struct StlLoad {
-  TriangleMesh mesh;                  // degenerate triangles are kept (they cross no ray); see warnings
+  TriangleMesh mesh;  // degenerate triangles are kept (they cross no ray); see warnings
   bool ascii = false;
   std::string header;                 // binary: the 80-byte header (trimmed); ASCII: the first solid's name
   MeshTopology topology;              // watertightness: boundary and non-manifold edge counts

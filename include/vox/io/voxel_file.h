@@ -23,6 +23,8 @@ Result<VoxelGrid> loadVxm(const std::filesystem::path& path);
 // .binvox: the grid padded to D^3 with D = the largest dim, translate = origin, scale = D * voxel_size.
 // Reading gives a D^3 grid (the file does not record the unpadded dims) with origin = translate and
 // voxel_size = scale / D. Files without translate/scale lines (some writers) read with origin 0, scale 1.
+// A non-cubic "dim d w h" reads as nx = d, ny = w, nz = h (binvox's read_binvox.cc), voxel_size = scale / max.
+// Only "#binvox 1" is read. frame.source is the file name.
 std::vector<uint8_t> encodeBinvox(const VoxelGrid& grid);
 Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string& name);
 Status saveBinvox(const VoxelGrid& grid, const std::filesystem::path& path);
