@@ -80,17 +80,17 @@ uint8_t cutFaceCode(const Section& section) {
   return uint8_t(63 & ~bit);
 }
 
-}  // namespace
-
-Result<std::unique_ptr<PointRenderer>> PointRenderer::create() {
-  if (!glGetString(GL_VERSION)) return makeError(ErrorCode::kNoOpenGL, "no current OpenGL context");
+// Compiles and links points.vert with points.frag, the latter with `defines` inserted after its #version line.
+Result<GLuint> buildProgram(const std::string& defines) {
   std::string log;
   const GLuint vs = compileShader(GL_VERTEX_SHADER, shaders::kPointsVert, log);
   if (!vs) return makeError(ErrorCode::kNoOpenGL, "points.vert does not compile:\n" + log);
-  const GLuint fs = compileShader(GL_FRAGMENT_SHADER, shaders::kPointsFrag, log);
+  std::string frag = shaders::kPointsFrag;
+  frag.insert(frag.find('\n') + 1, defines);
+  const GLuint fs = compileShader(GL_FRAGMENT_SHADER, frag.c_str(), log);
   if (!fs) {
     glDeleteShader(vs);
-    return makeError(ErrorCode::kNoOpenGL, "points.frag does not compile:\n" + log);
+    return makeError(ErrorCode::kNoOpenGL, "points.frag (" + defines + ") does not compile:\n" + log);
   }
   const GLuint program = glCreateProgram();
   glAttachShader(program, vs);
@@ -108,8 +108,22 @@ Result<std::unique_ptr<PointRenderer>> PointRenderer::create() {
     glDeleteProgram(program);
     return makeError(ErrorCode::kNoOpenGL, std::string("point shaders do not link:\n") + text.c_str());
   }
+  return program;
+}
+
+}  // namespace
+
+Result<std::unique_ptr<PointRenderer>> PointRenderer::create() {
+  if (!glGetString(GL_VERSION)) return makeError(ErrorCode::kNoOpenGL, "no current OpenGL context");
+  auto square = buildProgram("");
+  if (!square) return square.error();
+  auto round = buildProgram("#define VOX_ROUND_POINTS 1\n");
+  if (!round) {
+    glDeleteProgram(*square);
+    return round.error();
+  }
   std::unique_ptr<PointRenderer> r(new PointRenderer());
-  r->program_ = program;
+  r->programs_ = {*square, *round};
   glGenVertexArrays(1, &r->vao_);
   glGenVertexArrays(1, &r->cut_vao_);
   glGenBuffers(1, &r->cut_vbo_);
@@ -126,7 +140,9 @@ PointRenderer::~PointRenderer() {
   if (cut_vbo_) glDeleteBuffers(1, &cut_vbo_);
   if (vao_) glDeleteVertexArrays(1, &vao_);
   if (cut_vao_) glDeleteVertexArrays(1, &cut_vao_);
-  if (program_) glDeleteProgram(program_);
+  for (GLuint p : programs_) {
+    if (p) glDeleteProgram(p);
+  }
 }
 
 void PointRenderer::setGrid(const VoxelGrid& grid) {
@@ -163,6 +179,11 @@ void PointRenderer::updateLayers(const VoxelGrid& grid, int32_t z0, int32_t z1) 
 }
 
 Box3 PointRenderer::bounds() const { return bounds_; }
+
+void PointRenderer::prepare() {
+  Level& base = levels_[0];
+  if (base.built && base.uploaded_version != base.cloud.version()) upload(base);
+}
 
 PointRenderer::Level& PointRenderer::level(int k) {
   Level& lvl = levels_[size_t(k)];
@@ -226,8 +247,9 @@ DrawStats PointRenderer::draw(const Camera& camera, int32_t width, int32_t heigh
   Section section = params.section;
   if (section.active()) section.index = section.index >> k;  // indices >= 0 (validated by callers)
 
-  glUseProgram(program_);
-  auto loc = [&](const char* name) { return glGetUniformLocation(program_, name); };
+  const GLuint program = programs_[params.round_points ? 1 : 0];
+  glUseProgram(program);
+  auto loc = [&](const char* name) { return glGetUniformLocation(program, name); };
   glUniformMatrix4fv(loc("u_view_proj"), 1, GL_FALSE, glm::value_ptr(view_proj));
   glUniform1f(loc("u_scale"), float(scale));
   glUniform1fv(loc("u_intensity"), 64, table.data());
@@ -239,7 +261,6 @@ DrawStats PointRenderer::draw(const Camera& camera, int32_t width, int32_t heigh
   glUniform1i(loc("u_section_axis"), int(section.axis) - 1);
   glUniform1i(loc("u_section_index"), section.index);
   glUniform1i(loc("u_section_keep_below"), section.side == SectionSide::kBelow ? 1 : 0);
-  glUniform1i(loc("u_round"), params.round_points ? 1 : 0);
 
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);

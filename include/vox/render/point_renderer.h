@@ -71,6 +71,11 @@ class PointRenderer {
   // the point buffer (a memcpy-speed copy of all points). Falls back to setGrid when the dims changed.
   void updateLayers(const VoxelGrid& grid, int32_t z0, int32_t z1);
 
+  // Uploads the full-detail points now if they changed since the last upload; draw() otherwise does it on first
+  // use. Lets a caller time the upload or do it outside a frame. O(points): a copy into draw order and one
+  // glBufferSubData (glBufferData when the buffer must grow).
+  void prepare();
+
   // Tight box of the surface voxels in voxel-index space (the grid's box when it has none): for Camera::fitToBox.
   Box3 bounds() const;
   const PointCloud& cloud() const { return levels_[0].cloud; }
@@ -93,7 +98,8 @@ class PointRenderer {
   Level& level(int k);  // builds coarse levels on first use
   void upload(Level& lvl);
 
-  uint32_t program_ = 0, vao_ = 0, cut_vao_ = 0, cut_vbo_ = 0;
+  std::array<uint32_t, 2> programs_{};  // square points, round points
+  uint32_t vao_ = 0, cut_vao_ = 0, cut_vbo_ = 0;
   int64_t cut_capacity_ = 0;
   std::array<Level, 5> levels_;
   Box3 bounds_;
