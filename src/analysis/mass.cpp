@@ -5,11 +5,8 @@
 // Everything is summed in exact integers over voxel indices (count, sums of i, j, k, and of their squares and
 // products) and converted to model units once at the end, so the result does not depend on summation order or
 // thread count and matches the reference (../shared/reference/README.md section 6) to rounding. Sums over a row
-// come from popcounts of the row's words under six masks that select the bits of the bit position, so a row costs
-// O(words) regardless of how many voxels it holds:
-//   sum of positions   = sum_k 2^k popcount(w & M_k)
-//   sum of squares     = sum_k sum_l 2^(k+l) popcount(w & M_k & M_l)
-// where M_k selects the positions whose bit k is set.
+// come from per-byte tables (count, sum and sum of squares of the set bit positions of each byte value), so a row
+// costs O(words) regardless of how many voxels it holds; full words, the bulk of a solid, take a shortcut.
 #include <algorithm>
 #include <bit>
 #include <climits>
@@ -23,25 +20,40 @@ namespace {
 
 __extension__ typedef __int128 Int128;  // exact second moments: 16384^5 exceeds int64
 
-constexpr uint64_t kPosBit[6] = {0xAAAAAAAAAAAAAAAAull, 0xCCCCCCCCCCCCCCCCull, 0xF0F0F0F0F0F0F0F0ull,
-                                 0xFF00FF00FF00FF00ull, 0xFFFF0000FFFF0000ull, 0xFFFFFFFF00000000ull};
-
 struct WordSums {
   int64_t n = 0, s = 0, ss = 0;  // count, sum of bit positions, sum of squared bit positions (within the word)
 };
 
+// For each byte value: the number of set bits, the sum of their positions and the sum of the squared positions.
+struct ByteTables {
+  uint8_t n[256];
+  uint16_t s[256];
+  uint16_t ss[256];
+  constexpr ByteTables() : n(), s(), ss() {
+    for (int v = 0; v < 256; ++v) {
+      for (int b = 0; b < 8; ++b) {
+        if ((v >> b) & 1) {
+          n[v] = uint8_t(n[v] + 1);
+          s[v] = uint16_t(s[v] + b);
+          ss[v] = uint16_t(ss[v] + b * b);
+        }
+      }
+    }
+  }
+};
+constexpr ByteTables kBytes;
+
 WordSums wordSums(uint64_t w) {
   if (w == ~uint64_t(0)) return {64, 63 * 64 / 2, 63 * 64 * 127 / 6};
   WordSums r;
-  r.n = std::popcount(w);
-  int64_t pk[6];
-  for (int k = 0; k < 6; ++k) {
-    pk[k] = std::popcount(w & kPosBit[k]);
-    r.s += pk[k] << k;
-    r.ss += pk[k] << (2 * k);
-  }
-  for (int k = 0; k < 6; ++k) {
-    for (int l = k + 1; l < 6; ++l) r.ss += int64_t(std::popcount(w & kPosBit[k] & kPosBit[l])) << (k + l + 1);
+  // Byte k holds positions 8k + b: sum = 8k n + s, sum of squares = 64 k^2 n + 16 k s + ss.
+  for (int64_t k = 0; k < 8; ++k, w >>= 8) {
+    const unsigned v = unsigned(w & 0xFF);
+    if (!v) continue;
+    const int64_t n = kBytes.n[v], s = kBytes.s[v];
+    r.n += n;
+    r.s += 8 * k * n + s;
+    r.ss += 64 * k * k * n + 16 * k * s + kBytes.ss[v];
   }
   return r;
 }
@@ -84,7 +96,7 @@ MassProperties computeMassProperties(const VoxelGrid& grid) {
         for (int64_t w = 0; w < wpr; ++w) {
           const uint64_t c = cur[base + w];
           if (!c) continue;
-          s.interior += std::popcount(analysis_detail::interiorWord(below, cur, above, wpr, base + w));
+          s.interior += analysis_detail::popcount64(analysis_detail::interiorWord(below, cur, above, wpr, base + w));
           const WordSums ws = wordSums(c);
           const int64_t off = 64 * w;
           n += ws.n;

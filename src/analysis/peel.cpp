@@ -143,7 +143,7 @@ class Peeler {
         const uint64_t inner = interiorWord(below, cur, above, wpr, i);
         dst[i] = inner;
         const uint64_t gone = c & ~inner;
-        removed += std::popcount(gone);
+        if (gone) removed += analysis_detail::popcount64(gone);
         if (inner) {
           first = std::min(first, w);
           last = w;

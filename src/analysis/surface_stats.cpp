@@ -33,8 +33,8 @@ SurfaceStats computeSurfaceStats(const VoxelGrid& grid) {
         const uint64_t c = cur[w];
         if (!c) continue;
         const uint64_t interior = interiorWord(below, cur, above, wpr, w);
-        s.filled += std::popcount(c);
-        s.code_histogram[kCodeInterior] += std::popcount(interior);
+        s.filled += analysis_detail::popcount64(c);
+        s.code_histogram[kCodeInterior] += analysis_detail::popcount64(interior);
         uint64_t surf = c & ~interior;
         if (!surf) continue;
         const uint64_t xm = (c << 1) | (cur[w - 1] >> 63);

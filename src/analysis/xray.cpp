@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <string>
 
+#include "analysis/layer_ops.h"
 #include "analysis/parallel.h"
 #include "vox/analysis/analysis.h"
 
@@ -47,7 +48,7 @@ void raysAlongX(const VoxelGrid& g, Accumulate acc, Image2D<int32_t>& img) {
         const uint64_t* row = g.rowWords(y, z);
         int32_t value = 0;
         if (acc.mode == XrayMode::kTotal) {
-          for (int64_t w = 0; w < wpr; ++w) value += std::popcount(row[w]);
+          for (int64_t w = 0; w < wpr; ++w) value += analysis_detail::popcount64(row[w]);
         } else {
           int64_t start = 0;
           for (int64_t w = 0; w < wpr; ++w) {

@@ -1,0 +1,194 @@
+// Analysis benchmarks (docs/performance.md) on a 1000^3 grid: the shared mesh fandisk voxelized at R = 1000 by
+// vox::voxelizeSolid (override with VOXMOD_BENCH_MESH=<name>, e.g. armadillo, and VOXMOD_BENCH_R=<R>).
+//   surface_stats            surface voxels + code histogram (thesis Table 5.1)
+//   section_count/<axis>     filled count of one section, stepping through the indices like a slider
+//   section_image/<axis>     the same with the mask image (what the GUI shows)
+//   peel_one_layer           one skin layer
+//   peel_all                 skin removal until nothing is left (one iteration)
+//   depth_map                the same, keeping the depth bit planes; then depth_map_remaining_after (one layer
+//                            shown from the depth map)
+//   xray/<axis>/<mode>       X-ray along each axis in each mode
+//   mass                     mass properties
+//
+//   build-ana/bench/analysis_bench --benchmark_filter='section'
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <string>
+
+#include <benchmark/benchmark.h>
+
+#include "bench_support.h"
+#include "vox/analysis/analysis.h"
+#include "vox/io/stl.h"
+#include "vox/voxelize/voxelize.h"
+
+namespace {
+
+std::string envOr(const char* name, const char* fallback) {
+  const char* v = std::getenv(name);
+  return v && *v ? v : fallback;
+}
+
+const vox::VoxelGrid& benchGrid() {
+  static std::unique_ptr<vox::VoxelGrid> grid;
+  if (grid) return *grid;
+  const std::string name = envOr("VOXMOD_BENCH_MESH", "fandisk");
+  const int64_t r = std::atoll(envOr("VOXMOD_BENCH_R", "1000").c_str());
+  auto stl = vox::io::loadStl(vox::bench::sharedMesh(name + ".stl"));
+  if (!stl) {
+    std::fprintf(stderr, "%s\n", stl.error().message.c_str());
+    std::exit(1);
+  }
+  vox::VoxelizeParams p;
+  p.resolution = r;
+  auto v = vox::voxelizeSolid(stl->mesh, p, {}, &stl->topology);
+  if (!v) {
+    std::fprintf(stderr, "%s\n", v.error().message.c_str());
+    std::exit(1);
+  }
+  grid = std::make_unique<vox::VoxelGrid>(std::move(v->grid));
+  std::fprintf(stderr, "grid: %s at R = %lld: %d x %d x %d, %lld filled voxels, %.1f MiB\n", name.c_str(),
+               static_cast<long long>(r), grid->nx(), grid->ny(), grid->nz(),
+               static_cast<long long>(grid->filledCount()), double(grid->memoryBytes()) / (1 << 20));
+  return *grid;
+}
+
+int32_t axisLength(const vox::VoxelGrid& g, vox::Axis a) {
+  return a == vox::Axis::kX ? g.nx() : (a == vox::Axis::kY ? g.ny() : g.nz());
+}
+
+void surfaceStats(benchmark::State& state) {
+  const vox::VoxelGrid& g = benchGrid();
+  for (auto _ : state) {
+    const vox::SurfaceStats s = vox::computeSurfaceStats(g);
+    benchmark::DoNotOptimize(s.surface_voxels);
+    state.counters["surface_voxels"] = double(s.surface_voxels);
+  }
+}
+
+// Steps through the indices of an axis by a stride that visits the whole range, like dragging a slider.
+void sectionCount(benchmark::State& state) {
+  const vox::VoxelGrid& g = benchGrid();
+  const vox::Axis axis = vox::Axis(state.range(0));
+  const int32_t n = axisLength(g, axis);
+  int32_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(vox::sectionCount(g, axis, i));
+    i = (i + 7) % n;
+  }
+  state.SetLabel(vox::axisName(axis));
+}
+
+void sectionImage(benchmark::State& state) {
+  const vox::VoxelGrid& g = benchGrid();
+  const vox::Axis axis = vox::Axis(state.range(0));
+  const int32_t n = axisLength(g, axis);
+  int32_t i = 0;
+  for (auto _ : state) {
+    auto s = vox::computeSection(g, vox::SectionParams{axis, i});
+    benchmark::DoNotOptimize(s->filled);
+    i = (i + 7) % n;
+  }
+  state.SetLabel(vox::axisName(axis));
+}
+
+void peelOneLayer(benchmark::State& state) {
+  const vox::VoxelGrid& g = benchGrid();
+  for (auto _ : state) {
+    int64_t removed = 0;
+    vox::VoxelGrid r = vox::peelOneLayer(g, &removed);
+    benchmark::DoNotOptimize(removed);
+    state.counters["removed"] = double(removed);
+  }
+}
+
+void peelAll(benchmark::State& state) {
+  const vox::VoxelGrid& g = benchGrid();
+  for (auto _ : state) {
+    auto r = vox::peelSkin(g, vox::PeelParams{0, true});
+    state.counters["layers"] = double(r->removed_per_layer.size());
+    state.counters["core_voxels"] = double(r->core_voxels);
+  }
+}
+
+void depthMap(benchmark::State& state) {
+  const vox::VoxelGrid& g = benchGrid();
+  for (auto _ : state) {
+    auto d = vox::computeDepthMap(g);
+    state.counters["layers"] = double(d->layers());
+    state.counters["depth_MiB"] = double(d->memoryBytes()) / (1 << 20);
+  }
+}
+
+void depthMapRemainingAfter(benchmark::State& state) {
+  const vox::VoxelGrid& g = benchGrid();
+  static auto d = vox::computeDepthMap(g);
+  int32_t k = 1;
+  for (auto _ : state) {
+    vox::VoxelGrid r = d->remainingAfter(k);
+    benchmark::DoNotOptimize(r.nz());
+    k = k % d->layers() + 1;
+  }
+}
+
+void xray(benchmark::State& state) {
+  const vox::VoxelGrid& g = benchGrid();
+  const vox::XrayParams p{vox::Axis(state.range(0)), vox::XrayMode(state.range(1))};
+  for (auto _ : state) {
+    auto r = vox::computeXray(g, p);
+    benchmark::DoNotOptimize(r->mean);
+  }
+  state.SetLabel(std::string(vox::axisName(p.axis)) + "/" + vox::xrayModeName(p.mode));
+}
+
+void mass(benchmark::State& state) {
+  const vox::VoxelGrid& g = benchGrid();
+  for (auto _ : state) {
+    const vox::MassProperties m = vox::computeMassProperties(g);
+    benchmark::DoNotOptimize(m.volume);
+  }
+}
+
+BENCHMARK(surfaceStats)->Name("surface_stats")->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(sectionCount)
+    ->Name("section_count")
+    ->DenseRange(0, 2)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+BENCHMARK(sectionImage)
+    ->Name("section_image")
+    ->DenseRange(0, 2)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+BENCHMARK(peelOneLayer)->Name("peel_one_layer")->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(peelAll)
+    ->Name("peel_all")
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime()
+    ->Iterations(1);
+BENCHMARK(depthMap)
+    ->Name("depth_map")
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime()
+    ->Iterations(1);
+BENCHMARK(depthMapRemainingAfter)
+    ->Name("depth_map_remaining_after")
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+BENCHMARK(xray)
+    ->Name("xray")
+    ->ArgsProduct({{0, 1, 2}, {0, 1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+BENCHMARK(mass)->Name("mass")->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
