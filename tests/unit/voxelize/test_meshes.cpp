@@ -80,6 +80,61 @@ TriangleMesh torus(glm::dvec3 centre, double ring_radius, double tube_radius, in
   return mesh;
 }
 
+TriangleMesh prismAlongX(const std::vector<glm::dvec2>& yz, double x0, double x1) {
+  TriangleMesh m;
+  m.name = "prism";
+  auto at = [&](double x, size_t i) {
+    return glm::vec3(float(x), float(yz[i % yz.size()].x), float(yz[i % yz.size()].y));
+  };
+  for (size_t i = 1; i + 1 < yz.size(); ++i) {
+    m.triangles.push_back({{at(x0, 0), at(x0, i + 1), at(x0, i)}});  // clockwise seen from +x: normal -x
+    m.triangles.push_back({{at(x1, 0), at(x1, i), at(x1, i + 1)}});
+  }
+  for (size_t i = 0; i < yz.size(); ++i) {
+    m.triangles.push_back({{at(x0, i), at(x0, i + 1), at(x1, i + 1)}});
+    m.triangles.push_back({{at(x0, i), at(x1, i + 1), at(x1, i)}});
+  }
+  return m;
+}
+
+TriangleMesh octahedron(glm::dvec3 c, double r) {
+  TriangleMesh m;
+  m.name = "octahedron";
+  for (int sx : {-1, 1})
+    for (int sy : {-1, 1})
+      for (int sz : {-1, 1}) {
+        glm::vec3 a(c + glm::dvec3(sx * r, 0, 0)), b(c + glm::dvec3(0, sy * r, 0)), d(c + glm::dvec3(0, 0, sz * r));
+        // (b - a) x (d - a) points along (sx, sy, sz) when sx * sy * sz > 0; otherwise swap to keep it outward.
+        if (sx * sy * sz > 0) {
+          m.triangles.push_back({{a, b, d}});
+        } else {
+          m.triangles.push_back({{a, d, b}});
+        }
+      }
+  return m;
+}
+
+TriangleMesh tetrahedron(glm::dvec3 corner, double size) {
+  const glm::vec3 o(corner), x(corner + glm::dvec3(size, 0, 0)), y(corner + glm::dvec3(0, size, 0)),
+      z(corner + glm::dvec3(0, 0, size));
+  TriangleMesh m;
+  m.name = "tetrahedron";
+  m.triangles = {{{o, y, x}}, {{o, x, z}}, {{o, z, y}}, {{x, y, z}}};
+  return m;
+}
+
+double windingNumber(const TriangleMesh& mesh, const glm::dvec3& p) {
+  double sum = 0.0;
+  for (const Triangle& t : mesh.triangles) {
+    const glm::dvec3 a = glm::dvec3(t.v[0]) - p, b = glm::dvec3(t.v[1]) - p, c = glm::dvec3(t.v[2]) - p;
+    const double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
+    const double num = glm::dot(a, glm::cross(b, c));
+    const double den = la * lb * lc + glm::dot(a, b) * lc + glm::dot(a, c) * lb + glm::dot(b, c) * la;
+    sum += 2.0 * std::atan2(num, den);
+  }
+  return sum / (4.0 * std::numbers::pi);
+}
+
 glm::dmat3 rotation(glm::dvec3 axis, double degrees) {
   axis = glm::normalize(axis);
   const double a = degrees * std::numbers::pi / 180.0, c = std::cos(a), s = std::sin(a);

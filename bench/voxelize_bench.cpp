@@ -1,0 +1,227 @@
+// Voxelizer benchmarks (docs/performance.md). For every shared mesh at R = 128, 256, 512 and 1000:
+//   load/<mesh>              reading the STL (triangles + topology), the "time to read the triangles";
+//   voxelize/<mesh>/<R>      voxelizeSolid in auto mode (nonzero on closed meshes, vote on broken ones), as the CLI;
+//   floor/<mesh>/<R>         allocating a grid of the same dims and writing every word of every layer (fillRun on
+//                            every row, parallel over layers like the voxelizer): the least any voxelizer that
+//                            produces this grid can cost.
+// With --voxmod_large, also igea_refined_508k at R = 2048 and 4096 (8.6 GB of bits at 4096: check the memory).
+// Counters: peak_MiB is the peak resident memory of a child process that runs the case once (fork), extra_MiB its
+// growth over the resident memory at the start of the case (meshes already loaded), grid_MiB the result grid.
+//
+//   build-vox/bench/voxelize_bench --benchmark_filter='voxelize/armadillo'
+//   build-vox/bench/voxelize_bench --voxmod_large --benchmark_filter='igea.*/(2048|4096)'
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "bench_support.h"
+#include "vox/core/grid_placement.h"
+#include "vox/io/stl.h"
+#include "vox/voxelize/voxelize.h"
+
+namespace {
+
+const std::vector<std::string> kMeshes = {
+    "featuretype",         "plate_holes",       "rocker_arm",       "fandisk",           "tray_bottom_ascii",
+    "orion_capsule_ascii", "stanford_bunny",    "armadillo",        "femur_right",       "igea_refined_508k",
+    "cycloidal_assembly",  "cube_axis_aligned", "cube_rotated_45z", "two_disjoint_cubes"};
+
+const vox::io::StlLoad& mesh(const std::string& name) {
+  static std::map<std::string, vox::io::StlLoad> cache;
+  auto it = cache.find(name);
+  if (it == cache.end()) {
+    auto stl = vox::io::loadStl(vox::bench::sharedMesh(name + ".stl"));
+    if (!stl) {
+      std::fprintf(stderr, "%s\n", stl.error().message.c_str());
+      std::exit(1);
+    }
+    it = cache.emplace(name, std::move(stl).value()).first;
+  }
+  return it->second;
+}
+
+// Resident memory (VmRSS) and its peak (VmHWM) of this process, in bytes.
+uint64_t procStatus(const char* key) {
+  std::ifstream f("/proc/self/status");
+  std::string line;
+  while (std::getline(f, line)) {
+    if (line.rfind(key, 0) == 0) return std::stoull(line.substr(std::strlen(key))) * 1024;
+  }
+  return 0;
+}
+
+// Runs `work` once in a child process and returns {peak resident bytes, resident bytes at the start}.
+std::pair<uint64_t, uint64_t> measurePeak(const std::function<void()>& work) {
+  int fds[2];
+  if (pipe(fds) != 0) return {0, 0};
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(fds[0]);
+    {
+      std::ofstream reset("/proc/self/clear_refs");
+      reset << "5";  // resets VmHWM to the current VmRSS
+    }
+    uint64_t r[2];
+    r[1] = procStatus("VmRSS:");
+    work();
+    r[0] = procStatus("VmHWM:");
+    if (write(fds[1], r, sizeof r) != ssize_t(sizeof r)) _exit(1);
+    _exit(0);
+  }
+  close(fds[1]);
+  uint64_t r[2] = {0, 0};
+  if (read(fds[0], r, sizeof r) != ssize_t(sizeof r)) r[0] = r[1] = 0;
+  close(fds[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return {r[0], r[1]};
+}
+
+constexpr double kMiB = 1024.0 * 1024.0;
+
+void setMemoryCounters(benchmark::State& state, const std::function<void()>& work) {
+  const auto [peak, start] = measurePeak(work);
+  state.counters["peak_MiB"] = double(peak) / kMiB;
+  state.counters["extra_MiB"] = double(peak > start ? peak - start : 0) / kMiB;
+}
+
+void loadCase(benchmark::State& state, const std::string& name) {
+  int64_t triangles = 0;
+  for (auto _ : state) {
+    auto stl = vox::io::loadStl(vox::bench::sharedMesh(name + ".stl"));
+    if (!stl) {
+      state.SkipWithError(stl.error().message.c_str());
+      return;
+    }
+    triangles = int64_t(stl->mesh.triangles.size());
+    benchmark::DoNotOptimize(stl->mesh.triangles.data());
+  }
+  state.counters["triangles"] = double(triangles);
+}
+
+void voxelizeCase(benchmark::State& state, const std::string& name, int64_t resolution) {
+  const vox::io::StlLoad& stl = mesh(name);
+  vox::VoxelizeParams params;
+  params.resolution = resolution;
+  int64_t filled = 0, disputed = 0;
+  double grid_bytes = 0;
+  std::string mode;
+  for (auto _ : state) {
+    auto r = vox::voxelizeSolid(stl.mesh, params, {}, &stl.topology);
+    if (!r) {
+      state.SkipWithError(r.error().message.c_str());
+      return;
+    }
+    state.PauseTiming();  // counting and freeing the grid is not part of voxelizing
+    filled = r->grid.filledCount();
+    disputed = r->disputed_count;
+    grid_bytes = double(r->grid.memoryBytes());
+    mode = vox::fillModeName(r->mode_used);
+    r = vox::Error{};
+    state.ResumeTiming();
+  }
+  state.SetLabel(mode);
+  state.counters["triangles"] = double(stl.mesh.triangles.size());
+  state.counters["filled"] = double(filled);
+  if (mode == "vote") state.counters["disputed"] = double(disputed);
+  state.counters["grid_MiB"] = grid_bytes / kMiB;
+  setMemoryCounters(state, [&] {
+    auto r = vox::voxelizeSolid(stl.mesh, params, {}, &stl.topology);
+    benchmark::DoNotOptimize(r);
+  });
+}
+
+// Allocate a grid and write every word of every layer, in parallel over layers.
+vox::VoxelGrid writeFloor(const vox::Dims& dims) {
+  vox::VoxelGrid g(dims);
+  const int threads = std::max(1, int(std::thread::hardware_concurrency()));
+  std::atomic<int32_t> next{0};
+  auto worker = [&] {
+    for (int32_t z; (z = next.fetch_add(1)) < dims.nz;) {
+      for (int32_t y = 0; y < dims.ny; ++y) g.fillRun(y, z, 0, dims.nx);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& th : pool) th.join();
+  return g;
+}
+
+void floorCase(benchmark::State& state, const std::string& name, int64_t resolution) {
+  auto placement = vox::placeGridByResolution(mesh(name).mesh.bounds(), resolution);
+  if (!placement) {
+    state.SkipWithError(placement.error().message.c_str());
+    return;
+  }
+  const vox::Dims dims = placement->dims;
+  for (auto _ : state) {
+    vox::VoxelGrid g = writeFloor(dims);
+    benchmark::DoNotOptimize(g.layerWords(0));
+    state.PauseTiming();
+    g = vox::VoxelGrid();
+    state.ResumeTiming();
+  }
+  state.counters["voxels"] = double(dims.count());
+  setMemoryCounters(state, [&] {
+    vox::VoxelGrid g = writeFloor(dims);
+    benchmark::DoNotOptimize(g.layerWords(0));
+  });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool large = false;
+  std::vector<char*> args;
+  for (int i = 0; i < argc; ++i) {
+    if (std::string(argv[i]) == "--voxmod_large") {
+      large = true;
+    } else {
+      args.push_back(argv[i]);
+    }
+  }
+  int n = int(args.size());
+  for (const std::string& name : kMeshes) {
+    benchmark::RegisterBenchmark(("load/" + name).c_str(), loadCase, name)->Unit(benchmark::kMillisecond);
+    for (int64_t r : {128, 256, 512, 1000}) {
+      const std::string suffix = name + "/" + std::to_string(r);
+      benchmark::RegisterBenchmark(("voxelize/" + suffix).c_str(), voxelizeCase, name, r)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+      benchmark::RegisterBenchmark(("floor/" + suffix).c_str(), floorCase, name, r)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+    }
+  }
+  if (large) {
+    for (int64_t r : {2048, 4096}) {
+      const std::string suffix = "igea_refined_508k/" + std::to_string(r);
+      benchmark::RegisterBenchmark(("voxelize/" + suffix).c_str(), voxelizeCase, "igea_refined_508k", r)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime()
+          ->Iterations(1);
+      benchmark::RegisterBenchmark(("floor/" + suffix).c_str(), floorCase, "igea_refined_508k", r)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime()
+          ->Iterations(1);
+    }
+  }
+  benchmark::Initialize(&n, args.data());
+  if (benchmark::ReportUnrecognizedArguments(n, args.data())) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
