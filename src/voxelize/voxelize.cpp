@@ -424,9 +424,20 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       result.mode_used = params.mode;
       result.mode_reason = std::string("requested: ") + fillModeName(params.mode);
       if (topology && !topology->watertight() && params.mode != FillMode::kVote) {
+        // Say what can go wrong with this kind of defect: holes break single-axis rays, while touching or
+        // overlapping bodies (non-manifold edges only) make the rules differ.
+        std::string consequence;
+        if (topology->boundary_edges > 0) {
+          consequence =
+              " mode fills or drops whole runs of a row where a ray passes through a hole (vote mode is "
+              "meant for open meshes)";
+        } else {
+          consequence =
+              " mode: touching or overlapping bodies (parity leaves overlaps empty, nonzero fills the "
+              "union)";
+        }
         result.warnings.push_back(name + " is not watertight (" + edges_text + "); " + fillModeName(params.mode) +
-                                  " mode may fill or drop whole rows where rays pass through holes (vote mode is "
-                                  "meant for such meshes)");
+                                  consequence);
       }
       break;
   }
