@@ -1,6 +1,7 @@
 // I/O benchmarks: STL parsing (binary and ASCII, bytes/s and triangles/s), and .vxm / .binvox encoding and
 // decoding of large grids. Files are read into memory once, outside the timed loop, so the figures are parser
 // speed, not disc speed. parseStl includes the topology pass (analyzeTopology), which is timed on its own too.
+// Rates are per CPU second (the code is single-threaded; on the shared development machine wall time is noisy).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -44,19 +45,19 @@ void BM_ParseStl_BinaryIgea508k(benchmark::State& state) {
   static const std::vector<uint8_t> bytes = readShared("igea_refined_508k.stl");
   parseStlBench(state, bytes, "igea_refined_508k.stl");
 }
-BENCHMARK(BM_ParseStl_BinaryIgea508k)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ParseStl_BinaryIgea508k)->Unit(benchmark::kMillisecond);
 
 void BM_ParseStl_BinaryArmadillo(benchmark::State& state) {
   static const std::vector<uint8_t> bytes = readShared("armadillo.stl");
   parseStlBench(state, bytes, "armadillo.stl");
 }
-BENCHMARK(BM_ParseStl_BinaryArmadillo)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ParseStl_BinaryArmadillo)->Unit(benchmark::kMillisecond);
 
 void BM_ParseStl_AsciiOrion(benchmark::State& state) {
   static const std::vector<uint8_t> bytes = readShared("orion_capsule_ascii.stl");
   parseStlBench(state, bytes, "orion_capsule_ascii.stl");
 }
-BENCHMARK(BM_ParseStl_AsciiOrion)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ParseStl_AsciiOrion)->Unit(benchmark::kMillisecond);
 
 // One million triangles: igea twice (the copy shifted by its own width, so it is a second closed body) minus
 // the surplus, as one binary STL in memory.
@@ -87,7 +88,7 @@ void BM_ParseStl_Binary1MTriangles(benchmark::State& state) {
   static const std::vector<uint8_t> bytes = millionTriangleStl();
   parseStlBench(state, bytes, "1m.stl");
 }
-BENCHMARK(BM_ParseStl_Binary1MTriangles)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ParseStl_Binary1MTriangles)->Unit(benchmark::kMillisecond);
 
 void BM_AnalyzeTopology_Igea508k(benchmark::State& state) {
   static const std::vector<uint8_t> bytes = readShared("igea_refined_508k.stl");
@@ -100,7 +101,7 @@ void BM_AnalyzeTopology_Igea508k(benchmark::State& state) {
   state.counters["triangles/s"] =
       benchmark::Counter(double(r->mesh.triangles.size()) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_AnalyzeTopology_Igea508k)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_AnalyzeTopology_Igea508k)->Unit(benchmark::kMillisecond);
 
 // A solid ball filling most of an n^3 grid: two runs per row through it, long empty runs around it.
 vox::VoxelGrid ball(int32_t n) {
@@ -128,7 +129,7 @@ void BM_EncodeVxm_Ball(benchmark::State& state) {
   for (auto _ : state) size = vox::io::encodeVxm(g).size();
   setVoxelCounters(state, g, size);
 }
-BENCHMARK(BM_EncodeVxm_Ball)->Arg(512)->Arg(1000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_EncodeVxm_Ball)->Arg(512)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 void BM_DecodeVxm_Ball(benchmark::State& state) {
   const vox::VoxelGrid g = ball(int32_t(state.range(0)));
@@ -143,7 +144,7 @@ void BM_DecodeVxm_Ball(benchmark::State& state) {
   }
   setVoxelCounters(state, g, bytes.size());
 }
-BENCHMARK(BM_DecodeVxm_Ball)->Arg(512)->Arg(1000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_DecodeVxm_Ball)->Arg(512)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 void BM_EncodeBinvox_Ball(benchmark::State& state) {
   const vox::VoxelGrid g = ball(int32_t(state.range(0)));
@@ -151,7 +152,7 @@ void BM_EncodeBinvox_Ball(benchmark::State& state) {
   for (auto _ : state) size = vox::io::encodeBinvox(g).size();
   setVoxelCounters(state, g, size);
 }
-BENCHMARK(BM_EncodeBinvox_Ball)->Arg(512)->Arg(1000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_EncodeBinvox_Ball)->Arg(512)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 void BM_DecodeBinvox_Ball(benchmark::State& state) {
   const vox::VoxelGrid g = ball(int32_t(state.range(0)));
@@ -166,7 +167,7 @@ void BM_DecodeBinvox_Ball(benchmark::State& state) {
   }
   setVoxelCounters(state, g, bytes.size());
 }
-BENCHMARK(BM_DecodeBinvox_Ball)->Arg(512)->Arg(1000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_DecodeBinvox_Ball)->Arg(512)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

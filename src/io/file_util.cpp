@@ -96,7 +96,10 @@ Status writeFileAtomic(const std::filesystem::path& path, std::span<const uint8_
   int fd = -1;
   for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
     // The name is cut so that the temporary name stays within NAME_MAX (255) even for a long target name.
-    temp = (dir / ("." + path.filename().string().substr(0, 150) + tempSuffix())).string();
+    // (Built with append rather than "." + string: GCC 12 at -O3 warns falsely about that, GCC bug 105329.)
+    std::string temp_name(1, '.');
+    temp_name.append(path.filename().string(), 0, 150).append(tempSuffix());
+    temp = (dir / temp_name).string();
     fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, mode);
     if (fd < 0 && errno != EEXIST && errno != EINTR) break;
   }
