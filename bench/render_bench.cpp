@@ -16,10 +16,16 @@
 // Runs on the headless EGL context (llvmpipe on a machine without a GPU; LP_NUM_THREADS sets its threads).
 //
 //   build-render/bench/render_bench --benchmark_filter='frame/sphere'
+//
+// With --voxmod_images=DIR it instead renders the documentation images (docs/images/render_*.png): spheres of
+// diameter R = 100, 200, 400, 1000 at 800 x 800 (classic table, yaw 30, pitch 20: the thesis's Figure 6.2.3 set),
+// and the armadillo at R = 400, lit, and cut away along Y.
+//   build-render/bench/render_bench --voxmod_images=docs/images
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <string>
@@ -27,6 +33,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_support.h"
+#include "vox/io/image_io.h"
 #include "vox/io/stl.h"
 #include "vox/render/context.h"
 #include "vox/render/framebuffer.h"
@@ -206,9 +213,45 @@ void registerAll() {
   }
 }
 
+void saveImage(const VoxelGrid& g, const render::RenderParams& p, const std::filesystem::path& path) {
+  const auto t0 = std::chrono::steady_clock::now();
+  auto img = render::renderGridInCurrentContext(g, p);
+  if (!img) die(img.error().message);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (auto st = vox::io::savePng(*img, path); !st) die(st.error().message);
+  std::printf("%s: %dx%d grid, %.2f s to render\n", path.string().c_str(), g.nx(), g.ny(), s);
+}
+
+int writeImages(const std::filesystem::path& dir) {
+  context();
+  render::RenderParams p;
+  p.width = p.height = 800;
+  for (int32_t r : {100, 200, 400, 1000}) {
+    saveImage(sphere(r), p, dir / ("render_sphere_r" + std::to_string(r) + ".png"));
+  }
+  const VoxelGrid& armadillo = grid("armadillo", 400);
+  render::RenderParams lit = p;
+  lit.lut = render::Lut::kLit;
+  lit.yaw_deg = 20;  // the armadillo stands along +Y and faces +Z
+  lit.pitch_deg = 10;
+  saveImage(armadillo, lit, dir / "render_armadillo_r400_lit.png");
+  render::RenderParams cut = lit;
+  cut.lut = render::Lut::kClassic;
+  // A horizontal cut through the chest, looked at from above: the legs and hips below it, the cut face on top.
+  cut.section = {render::SectionAxis::kY, armadillo.ny() * 3 / 5, render::SectionSide::kBelow};
+  cut.yaw_deg = 25;
+  cut.pitch_deg = 40;
+  saveImage(armadillo, cut, dir / "render_armadillo_r400_cut_y.png");
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.rfind("--voxmod_images=", 0) == 0) return writeImages(a.substr(16));
+  }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   registerAll();

@@ -11,6 +11,7 @@
 #include <limits>
 #include <thread>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "vox/core/surface.h"
@@ -95,21 +96,23 @@ void PointCloud::assemble(PointBuffer& out) const {
   }
 }
 
-Box3 PointCloud::bounds() const {
+Box3 PointCloud::bounds() const { return bounds(Section{}); }
+
+Box3 PointCloud::bounds(const Section& section) const {
   glm::ivec3 lo(std::numeric_limits<int32_t>::max()), hi(std::numeric_limits<int32_t>::min());
+  const int axis = int(section.axis) - 1;
   for (const LayerSlice& s : layers_) {
-    if (s.points.empty()) continue;
-    const int32_t z = s.points.front().z;
-    lo.z = std::min(lo.z, z);
-    hi.z = std::max(hi.z, z);
     for (const PackedPoint& p : s.points) {
-      lo.x = std::min<int32_t>(lo.x, p.x);
-      hi.x = std::max<int32_t>(hi.x, p.x);
-      lo.y = std::min<int32_t>(lo.y, p.y);
-      hi.y = std::max<int32_t>(hi.y, p.y);
+      const glm::ivec3 v(p.x, p.y, p.z);
+      if (section.active() && v[axis] != section.index && !keepsPoint(section, v)) continue;
+      lo = glm::min(lo, v);
+      hi = glm::max(hi, v);
     }
   }
-  if (lo.x > hi.x) return Box3{glm::dvec3(0.0), glm::dvec3(dims_.nx, dims_.ny, dims_.nz)};
+  if (lo.x > hi.x) {
+    if (section.active()) return bounds();
+    return Box3{glm::dvec3(0.0), glm::dvec3(dims_.nx, dims_.ny, dims_.nz)};
+  }
   return Box3{glm::dvec3(lo), glm::dvec3(hi) + 1.0};
 }
 

@@ -2,6 +2,7 @@
 // a grid, fitted to the image, read back as an RGBA image.
 #include "vox/render/render.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -49,7 +50,7 @@ Result<ImageRgba> renderGridInCurrentContext(const VoxelGrid& grid, const Render
   Framebuffer fb;
   if (Status s = fb.resize(p.width, p.height); !s) return s.error();
   (*renderer)->setGrid(grid);
-  const Camera camera = cameraFor((*renderer)->bounds(), p);
+  const Camera camera = cameraFor((*renderer)->cloud().bounds(p.section), p);
   DrawParams d;
   d.lut = p.lut;
   d.colour = p.colour;

@@ -32,6 +32,8 @@ inline constexpr uint8_t kPointFlagCut = 1;
 
 inline constexpr int kCodeGroups = 64;  // group 63 (interior) is always empty
 
+struct Section;  // below
+
 // The surface points of one Z layer, sorted by code: points[group_first[c], group_first[c + 1]) have code c.
 struct LayerSlice {
   std::vector<PackedPoint> points;
@@ -72,6 +74,9 @@ class PointCloud {
 
   // Tight box of the points in voxel-index space (the grid's box when there are none). O(points).
   Box3 bounds() const;
+  // The same for what a section leaves: the kept half and the section plane (whose filled voxels the surface points
+  // of the plane enclose). bounds() when nothing is kept or without a section.
+  Box3 bounds(const Section& section) const;
 
   // Concatenates the layers in draw order (see PointBuffer). O(points).
   void assemble(PointBuffer& out) const;

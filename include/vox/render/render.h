@@ -45,7 +45,8 @@ struct RenderParams {
 // section index outside the grid along its axis, point size not in [0, 255], ambient not in [0, 1]).
 Status validateRenderParams(const VoxelGrid& grid, const RenderParams& params);
 
-// The camera renderGridHeadless uses: fitted to the surface bounds (or the grid box), then yaw, pitch, zoom applied.
+// The camera renderGridHeadless uses: fitted to `bounds` (there PointCloud::bounds(section), so a cut-away fills
+// the image), then yaw, pitch, zoom applied.
 Camera cameraFor(const Box3& bounds, const RenderParams& params);
 
 // Creates a HeadlessContext, draws the surface points of `grid` at full detail and reads the image back (row 0 at

@@ -15,6 +15,7 @@ namespace {
 
 using testing::ball;
 using testing::box;
+using testing::fillBox;
 using testing::noise;
 
 TEST(PackedPoint, isEightBytesInTheShaderLayout) {
@@ -145,6 +146,21 @@ TEST(PointCloud, boundsAreTheTightBoxOfTheSolid) {
   EXPECT_EQ(b.max, glm::dvec3(20, 33, 11));
   const Box3 empty = PointCloud(VoxelGrid(Dims{4, 5, 6})).bounds();
   EXPECT_EQ(empty.max, glm::dvec3(4, 5, 6));
+}
+
+TEST(PointCloud, sectionBoundsHoldTheKeptHalfAndTheCutLayer) {
+  VoxelGrid g = box(Dims{50, 40, 30}, {5, 7, 9}, {20, 33, 25});
+  fillBox(g, {30, 2, 20}, {45, 4, 30});  // a second block, only at z >= 20
+  const PointCloud cloud(g);
+  EXPECT_EQ(cloud.bounds().min, glm::dvec3(5, 2, 9));
+  const Box3 below = cloud.bounds(Section{SectionAxis::kZ, 15, SectionSide::kBelow});
+  EXPECT_EQ(below.min, glm::dvec3(5, 7, 9));  // the second block is cut away entirely
+  EXPECT_EQ(below.max, glm::dvec3(20, 33, 16));
+  const Box3 above = cloud.bounds(Section{SectionAxis::kZ, 15, SectionSide::kAbove});
+  EXPECT_EQ(above.min, glm::dvec3(5, 2, 15));
+  EXPECT_EQ(above.max, glm::dvec3(45, 33, 30));
+  const Box3 none = cloud.bounds(Section{SectionAxis::kX, 2, SectionSide::kBelow});  // nothing kept
+  EXPECT_EQ(none.min, cloud.bounds().min);
 }
 
 // ---- Group culling ----

@@ -31,6 +31,11 @@ inline VoxelGrid box(Dims d, glm::ivec3 lo, glm::ivec3 hi) {
   return g;
 }
 
+inline void fillBox(VoxelGrid& g, glm::ivec3 lo, glm::ivec3 hi) {
+  for (int32_t z = lo.z; z < hi.z; ++z)
+    for (int32_t y = lo.y; y < hi.y; ++y) g.fillRun(y, z, lo.x, hi.x);
+}
+
 // Each voxel filled with probability p: every code occurs, including isolated voxels and thin walls.
 inline VoxelGrid noise(Dims d, double p, uint32_t seed) {
   VoxelGrid g(d);
