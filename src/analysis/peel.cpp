@@ -125,7 +125,7 @@ class Peeler {
     const int32_t y_begin = cl.empty() ? nl.y0 : (nl.empty() ? cl.y0 : std::min(cl.y0, nl.y0));
     const int32_t y_end = cl.empty() ? nl.y1 : (nl.empty() ? cl.y1 : std::max(cl.y1, nl.y1));
     for (int32_t y = y_begin; y < y_end; ++y) {
-      RowSpan& cs = cur_ext_.rows[size_t(z) * size_t(ny) + size_t(y)];
+      const RowSpan& cs = cur_ext_.rows[size_t(z) * size_t(ny) + size_t(y)];
       RowSpan& ns = next_ext_.rows[size_t(z) * size_t(ny) + size_t(y)];
       const RowSpan rc = (y >= cl.y0 && y < cl.y1) ? cs : RowSpan{};
       const int64_t base = (int64_t(y) + 1) * wpr;

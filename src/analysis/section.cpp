@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <bit>
 #include <string>
+#include <vector>
 
 #include "analysis/layer_ops.h"
+#include "analysis/parallel.h"
 #include "vox/analysis/analysis.h"
 
 namespace vox {
@@ -40,14 +42,22 @@ int64_t sectionCount(const VoxelGrid& grid, Axis axis, int32_t index) {
       }
       return count;
     case Axis::kX: {
+      // One word per row, each in its own cache line: memory bound, so both cores help on large grids.
       const int64_t xp = int64_t(index) + 1;
       const int64_t word = xp >> 6;
       const int shift = int(xp & 63);
-      for (int32_t z = 0; z < grid.nz(); ++z) {
-        if (!grid.layerAllocated(z)) continue;
-        const uint64_t* w = grid.layerWords(z) + wpr + word;  // row y = 0
-        for (int32_t y = 0; y < grid.ny(); ++y, w += wpr) count += int64_t((*w >> shift) & 1);
-      }
+      const int threads = analysis_detail::threadsFor(grid.allocatedLayers() * grid.ny());
+      std::vector<int64_t> counts(static_cast<size_t>(threads), 0);
+      analysis_detail::parallelChunks(0, grid.nz(), 16, threads, [&](int t, int64_t z0, int64_t z1) {
+        int64_t c = 0;
+        for (int32_t z = int32_t(z0); z < int32_t(z1); ++z) {
+          if (!grid.layerAllocated(z)) continue;
+          const uint64_t* w = grid.layerWords(z) + wpr + word;  // row y = 0
+          for (int32_t y = 0; y < grid.ny(); ++y, w += wpr) c += int64_t((*w >> shift) & 1);
+        }
+        counts[size_t(t)] += c;
+      });
+      for (int64_t c : counts) count += c;
       return count;
     }
   }
@@ -105,16 +115,23 @@ Result<Section> computeSection(const VoxelGrid& grid, const SectionParams& param
       s.mask = Image2D<uint8_t>(grid.ny(), grid.nz(), 0);
       const int64_t xp = int64_t(params.index) + 1;
       const int shift = int(xp & 63);
-      for (int32_t z = 0; z < grid.nz(); ++z) {
-        if (!grid.layerAllocated(z)) continue;
-        const uint64_t* w = grid.layerWords(z) + wpr + (xp >> 6);
-        uint8_t* out = &s.mask.at(0, grid.nz() - 1 - z);
-        for (int32_t y = 0; y < grid.ny(); ++y, w += wpr) {
-          const uint8_t bit = uint8_t((*w >> shift) & 1);
-          out[y] = bit;
-          s.filled += bit;
+      const int threads = analysis_detail::threadsFor(grid.allocatedLayers() * grid.ny());
+      std::vector<int64_t> counts(static_cast<size_t>(threads), 0);
+      analysis_detail::parallelChunks(0, grid.nz(), 16, threads, [&](int t, int64_t z0, int64_t z1) {
+        int64_t c = 0;
+        for (int32_t z = int32_t(z0); z < int32_t(z1); ++z) {
+          if (!grid.layerAllocated(z)) continue;
+          const uint64_t* w = grid.layerWords(z) + wpr + (xp >> 6);
+          uint8_t* out = &s.mask.at(0, grid.nz() - 1 - z);
+          for (int32_t y = 0; y < grid.ny(); ++y, w += wpr) {
+            const uint8_t bit = uint8_t((*w >> shift) & 1);
+            out[y] = bit;
+            c += bit;
+          }
         }
-      }
+        counts[size_t(t)] += c;
+      });
+      for (int64_t c : counts) s.filled += c;
       break;
     }
   }

@@ -33,7 +33,7 @@ TEST(Peel, cubePeelsInHalfItsSideWithTheFormulaPerLayer) {
 }
 
 TEST(Peel, oneLayerMatchesBruteForce) {
-  for (int nx : {1, 5, 63, 64, 65, 130}) {
+  for (int nx : {1, 5, 62, 63, 64, 65, 126, 130}) {
     for (const VoxelGrid& g : {test::randomGrid(Dims{nx, 8, 9}, 0.8, uint32_t(nx)),
                                test::randomBoxes(Dims{nx, 20, 17}, 6, uint32_t(7 * nx))}) {
       int64_t removed = -1, expect_removed = -1;
