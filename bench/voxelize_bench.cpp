@@ -10,6 +10,7 @@
 //
 //   build-vox/bench/voxelize_bench --benchmark_filter='voxelize/armadillo'
 //   build-vox/bench/voxelize_bench --voxmod_large --benchmark_filter='igea.*/(2048|4096)'
+#include <malloc.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -69,6 +70,7 @@ std::pair<uint64_t, uint64_t> measurePeak(const std::function<void()>& work) {
   const pid_t pid = fork();
   if (pid == 0) {
     close(fds[0]);
+    malloc_trim(0);  // return the parent's freed heap, so the baseline is what is really in use
     {
       std::ofstream reset("/proc/self/clear_refs");
       reset << "5";  // resets VmHWM to the current VmRSS

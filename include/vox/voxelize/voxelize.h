@@ -1,7 +1,12 @@
 #pragma once
 // Solid voxelization of a triangle mesh (thesis 4.3, 2.4.5-2.4.6; SPEC section 1). Rays parallel to X through the
 // voxel centres; crossings are decided exactly with Simulation of Simplicity, so closed meshes give crack-free,
-// reproducible grids that match ../shared/reference voxel for voxel.
+// reproducible grids that match ../shared/reference voxel for voxel (docs/accuracy.md). No tolerance anywhere: the
+// result depends only on the float32 vertices and the grid, and is identical for any number of threads.
+//
+// Cost: O(T + R^2 + crossings) time for the rays plus writing the grid (word operations); vote mode three times
+// that. Memory: the grid (estimateGridBytes, layers allocated only where the model is), three grids at the peak in
+// vote mode, plus about 56 bytes per triangle while voxelizing.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -21,15 +26,21 @@ enum class FillMode {
   kNonzero,  // winding number along +X not zero: overlapping closed bodies become their union
   kVote,     // for broken meshes: parity along X, Y and Z, majority per voxel; disagreements kept as a mask
 };
-const char* fillModeName(FillMode m);                       // "auto", "parity", "nonzero", "vote"
+// Ties (a centre on the surface, a ray through an edge or vertex) follow SPEC section 1: the centre is displaced by
+// (eps, eps^3, eps^2) in (x, y, z). Vote mode's rays along Y and Z displace the centre the same way in their own
+// frame, (y, x, z) resp. (z, x, y) taking the roles of (x, y, z): consistent, so closed meshes stay crack-free along
+// every axis, but a centre exactly on the surface may then be decided differently per axis (and be disputed).
+const char* fillModeName(FillMode m);  // "auto", "parity", "nonzero", "vote"
 std::optional<FillMode> parseFillMode(const std::string& s);
 
 struct VoxelizeParams {
-  int64_t resolution = 200;   // voxels along the longest axis, 1..kMaxResolution; ignored when voxel_size > 0
-  double voxel_size = 0.0;    // model units; > 0 overrides resolution
+  int64_t resolution = 200;  // voxels along the longest axis, 1..kMaxResolution; ignored when voxel_size > 0
+  double voxel_size = 0.0;   // model units; > 0 overrides resolution
   FillMode mode = FillMode::kAuto;
-  int threads = 0;            // 0: all hardware threads
-  bool remove_strays = false; // thesis 4.3.3: remove voxels with four or five free faces (1D/2D structures)
+  int threads = 0;  // 0: all hardware threads; negative is an error
+  // Thesis 4.3.3: one pass, decided on the grid before the pass, removing every voxel with four or more free faces
+  // (at most two filled face neighbours): isolated voxels, voxel lines and line ends, corners of one-voxel sheets.
+  bool remove_strays = false;
   uint64_t memory_limit_bytes = 0;  // 0: 80% of physical memory
   std::string units = "model";
 };
@@ -37,26 +48,33 @@ struct VoxelizeParams {
 struct VoxelizeResult {
   VoxelGrid grid;
   FillMode mode_used = FillMode::kParity;
-  std::string mode_reason;          // e.g. "mesh is closed (0 boundary, 0 non-manifold edges)"
+  // e.g. "mesh is closed (0 boundary edges, 0 non-manifold edges): using nonzero",
+  // "mesh is not watertight (223 boundary edges, 0 non-manifold edges): using vote", "requested: parity"
+  std::string mode_reason;
   std::optional<VoxelGrid> disputed;  // vote mode: voxels on which the three axes did not all agree
   int64_t disputed_count = 0;
   int64_t strays_removed = 0;
+  // E.g. a mesh that is not watertight used with parity/nonzero, degenerate triangles ignored, rays with an odd
+  // number of crossings or a nonzero total winding (0 on a closed mesh), voxels disputed by the vote.
   std::vector<std::string> warnings;
 };
 
 // Grid placement and memory estimate for these parameters, without voxelizing (the GUI shows it before starting).
 struct VoxelizePlan {
   GridPlacement placement;
-  uint64_t bytes = 0;        // estimated peak bytes for the grid(s) (three grids in vote mode)
+  // Estimated peak bytes for the grid(s): three grids in vote mode, and for kAuto too (its worst case: the plan does
+  // not see the mesh's topology; voxelizeSolid checks the mode it resolves to).
+  uint64_t bytes = 0;
   uint64_t limit_bytes = 0;  // the limit in force
 };
 Result<VoxelizePlan> planVoxelization(const Box3d& bounds, const VoxelizeParams& params);
 
-// Voxelizes `mesh`. `topology`, when given, avoids recomputing it for kAuto. Fails with kLimit when the estimate
-// exceeds the memory limit, kInvalidArgument for bad parameters or an empty mesh, kCancelled when progress says so.
+// Voxelizes `mesh`. `topology`, when given, avoids recomputing it for kAuto (and enables the warning about open
+// meshes in the other modes). Fails with kLimit when the estimate exceeds the memory limit (before allocating) or
+// memory runs out, kInvalidArgument for bad parameters or an empty mesh, kCancelled when progress says so. Progress
+// is reported from the worker threads, serialised, at most about 200 times, monotone, ending with 1.0.
 Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizeParams& params,
-                                     const ProgressFn& progress = {},
-                                     const MeshTopology* topology = nullptr);
+                                     const ProgressFn& progress = {}, const MeshTopology* topology = nullptr);
 
 // Physical memory of this machine in bytes (0 if unknown).
 uint64_t physicalMemoryBytes();
