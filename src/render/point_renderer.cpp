@@ -154,6 +154,7 @@ void PointRenderer::setGrid(const VoxelGrid& grid) {
     levels_[k].built = false;  // rebuilt from the new grid on first use
     levels_[k].grid = VoxelGrid();
     levels_[k].cloud = PointCloud();
+    levels_[k].uploaded_version = ~uint64_t(0);  // a new cloud's versions restart: never match the old upload
   }
   bounds_ = base.cloud.bounds();
   ++grid_version_;

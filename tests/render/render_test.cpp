@@ -185,6 +185,37 @@ TEST(RenderProperties, incrementalUpdateDrawsWhatAFullRebuildDraws) {
   }
 }
 
+// A renderer that drew another grid's coarse levels must not keep their GPU copies after setGrid.
+TEST(RenderProperties, setGridReplacesEveryLevelOfDetail) {
+  VOX_REQUIRE_GL();
+  auto reused = PointRenderer::create();
+  auto fresh = PointRenderer::create();
+  ASSERT_TRUE(reused.ok() && fresh.ok());
+  Framebuffer fb;
+  ASSERT_TRUE(fb.resize(128, 128).ok());
+  DrawParams d;
+  d.coarse = true;
+  d.lod_point_budget = 3'000;
+  (*reused)->setGrid(ball(40));
+  fb.clear(kBlack);
+  (*reused)->draw(cameraFor((*reused)->bounds(), small(30, 20)), 128, 128, d);
+  const VoxelGrid other = bracket();
+  (*reused)->setGrid(other);
+  (*fresh)->setGrid(other);
+  const Camera cam = cameraFor((*fresh)->bounds(), small(30, 20));
+  fb.clear(kBlack);
+  const DrawStats a = (*reused)->draw(cam, 128, 128, d);
+  const ImageRgba ia = fb.readPixels();
+  fb.clear(kBlack);
+  const DrawStats b = (*fresh)->draw(cam, 128, 128, d);
+  const ImageRgba ib = fb.readPixels();
+  EXPECT_GE(a.lod_level, 1);
+  EXPECT_EQ(a.lod_level, b.lod_level);
+  EXPECT_EQ(a.points_drawn, b.points_drawn);
+  EXPECT_LE(a.points_drawn, a.points_available);
+  EXPECT_EQ(compareImages(ia, ib).max_difference, 0);
+}
+
 TEST(RenderProperties, sectionShowsTheCutFaceInTheCutColour) {
   VOX_REQUIRE_GL();
   const VoxelGrid g = ball(40);
