@@ -64,18 +64,20 @@ std::vector<double> centresAlong(const GridPlacement& placement, int axis) {
 }  // namespace
 
 RayCaster::RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, RayAxes axes, int threads)
-    : axes_(axes), h_(placement.frame.voxel_size) {
+    : axes_(axes), h_(placement.frame.voxel_size), inv_h_(1.0 / placement.frame.voxel_size) {
   cu_ = centresAlong(placement, axes.u);
   cv_ = centresAlong(placement, axes.v);
   cw_ = centresAlong(placement, axes.w);
   const double ov = placement.frame.origin[axes.v], ow = placement.frame.origin[axes.w];
-  // Fills t from the input triangle; false when no displaced ray can cross it.
-  auto prepare = [&](const Triangle& in, Tri& t) {
+  auto project = [&](const Triangle& in, Tri& t) {
     for (int k = 0; k < 3; ++k) {
       t.p[k][0] = in.v[k][axes.u];
       t.p[k][1] = in.v[k][axes.v];
       t.p[k][2] = in.v[k][axes.w];
     }
+  };
+  // Sets t's sign and ranges; false when no displaced ray can cross it.
+  auto classify = [&](Tri& t) {
     // Orientation of the projection = sign of the normal's u component, exactly. Zero area: no displaced ray
     // can be strictly inside (the three edge signs sum to the area), so the triangle is never crossed.
     t.sign = orient2d(t.p[0][1], t.p[0][2], t.p[1][1], t.p[1][2], t.p[2][1], t.p[2][2]);
@@ -91,17 +93,22 @@ RayCaster::RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, R
   };
   // Counting sort by first row, so a sweep activates triangles in order. Chunks of the input are contiguous and
   // scattered in chunk order, so the result (row, then input order) does not depend on the number of threads.
+  // The first pass keeps each triangle's sign and ranges (20 bytes) so the second only copies.
+  struct Ranges {
+    int32_t row_lo = -1, row_hi, ray_lo, ray_hi, sign;
+  };
   const int64_t nt = int64_t(mesh.triangles.size());
   const size_t rows = cw_.size();
   threads = int(std::clamp<int64_t>(threads, 1, std::max<int64_t>(1, nt / 16384)));
-  std::vector<int32_t> first_row(size_t(nt), -1);
+  std::vector<Ranges> ranges(static_cast<size_t>(nt));
   std::vector<std::vector<size_t>> count(size_t(threads), std::vector<size_t>(rows, 0));
   forChunks(nt, threads, [&](int c, int64_t begin, int64_t end) {
     auto& mine = count[size_t(c)];
     for (int64_t i = begin; i < end; ++i) {
       Tri t;
-      if (!prepare(mesh.triangles[size_t(i)], t)) continue;
-      first_row[size_t(i)] = t.row_lo;
+      project(mesh.triangles[size_t(i)], t);
+      if (!classify(t)) continue;
+      ranges[size_t(i)] = Ranges{t.row_lo, t.row_hi, t.ray_lo, t.ray_hi, t.sign};
       ++mine[size_t(t.row_lo)];
     }
   });
@@ -117,8 +124,15 @@ RayCaster::RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, R
   forChunks(nt, threads, [&](int c, int64_t begin, int64_t end) {
     auto& next = count[size_t(c)];
     for (int64_t i = begin; i < end; ++i) {
-      const int32_t r = first_row[size_t(i)];
-      if (r >= 0) prepare(mesh.triangles[size_t(i)], tris_[next[size_t(r)]++]);
+      const Ranges& r = ranges[size_t(i)];
+      if (r.row_lo < 0) continue;
+      Tri& t = tris_[next[size_t(r.row_lo)]++];
+      project(mesh.triangles[size_t(i)], t);
+      t.row_lo = r.row_lo;
+      t.row_hi = r.row_hi;
+      t.ray_lo = r.ray_lo;
+      t.ray_hi = r.ray_hi;
+      t.sign = r.sign;
     }
   });
 }
@@ -129,36 +143,49 @@ RayCaster::RowSweep::RowSweep(const RayCaster& caster, int32_t row_begin) : cast
       size_t(std::partition_point(tris.begin(), tris.end(), [&](const Tri& t) { return t.row_lo < row_begin; }) -
              tris.begin());
   for (size_t i = 0; i < next_start_; ++i) {
-    if (tris[i].row_hi > row_begin) active_.push_back(uint32_t(i));
+    if (tris[i].row_hi > row_begin) {
+      active_.push_back(uint32_t(i));
+      planes_.emplace_back(tris[i]);
+    }
   }
 }
 
 void RayCaster::RowSweep::next(std::vector<Crossing>& out) {
   const auto& tris = caster_.tris_;
-  while (next_start_ < tris.size() && tris[next_start_].row_lo <= row_) active_.push_back(uint32_t(next_start_++));
+  while (next_start_ < tris.size() && tris[next_start_].row_lo <= row_) {
+    active_.push_back(uint32_t(next_start_));
+    planes_.emplace_back(tris[next_start_++]);
+  }
   size_t keep = 0;
-  for (const uint32_t i : active_) {
-    const Tri& t = tris[i];
-    caster_.rowCrossings(t, row_, out);
-    if (t.row_hi > row_ + 1) active_[keep++] = i;
+  for (size_t k = 0; k < active_.size(); ++k) {
+    const Tri& t = tris[active_[k]];
+    caster_.rowCrossings(t, planes_[k], row_, out);
+    if (t.row_hi > row_ + 1) {
+      active_[keep] = active_[k];
+      planes_[keep++] = planes_[k];
+    }
   }
   active_.resize(keep);
+  planes_.resize(keep);
   ++row_;
 }
 
-void RayCaster::rowCrossings(const Tri& t, int32_t row, std::vector<Crossing>& out) const {
+void RayCaster::rowCrossings(const Tri& t, const Plane& plane, int32_t row, std::vector<Crossing>& out) const {
   const double w = cw_[size_t(row)];
   const double av = t.p[0][1], aw = t.p[0][2], bv = t.p[1][1], bw = t.p[1][2], cv = t.p[2][1], cw = t.p[2][2];
   int32_t j0 = t.ray_lo, j1 = t.ray_hi;
+  // Rays strictly inside (inner_lo, inner_hi) are certainly crossed; empty unless the section below is computed.
+  double inner_lo = 0.0, inner_hi = 0.0;
   if (j1 - j0 > 2 && t.row_hi - t.row_lo > 1) {
     // A triangle spanning several rows is usually much narrower in one row than its bounding box (long slivers in
-    // CAD meshes): intersect the projection with the line at w and test only the rays near that section. The
-    // section is computed in floating point with an error of a few ulps of the coordinates; the margin of a whole
-    // voxel (plus a relative term) makes the pruning conservative, and the exact tests below still decide.
+    // CAD meshes): intersect the projection with the line at w, [lo, hi]. Computed in double, each end is off by
+    // at most about 10 ulps of the largest coordinate involved; `margin` is a thousand times that. Rays farther
+    // than `margin` outside [lo, hi] miss the triangle, rays farther than `margin` inside cross it (strictly
+    // inside, so no tie is possible); only the rays near either end need the exact edge tests. The index
+    // conversion below adds one more ray on each side, covering its own rounding.
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    const double e[3][4] = {{av, aw, bv, bw}, {bv, bw, cv, cw}, {cv, cw, av, aw}};
-    for (const auto& edge : e) {
-      const double pv = edge[0], pw = edge[1], qv = edge[2], qw = edge[3];
+    for (int k = 0; k < 3; ++k) {
+      const double pv = t.p[k][1], pw = t.p[k][2], qv = t.p[(k + 1) % 3][1], qw = t.p[(k + 1) % 3][2];
       if (pw == qw) {
         if (pw == w) {
           lo = std::min({lo, pv, qv});
@@ -167,31 +194,29 @@ void RayCaster::rowCrossings(const Tri& t, int32_t row, std::vector<Crossing>& o
         continue;
       }
       if (w < std::min(pw, qw) || w > std::max(pw, qw)) continue;
-      const double f = std::clamp((w - pw) / (qw - pw), 0.0, 1.0);
-      const double v = pv + f * (qv - pv);
+      // pv + (w - pw) * dv/dw, with |w - pw| <= |qw - pw|: the same error bound as interpolating directly.
+      const double v = std::clamp(pv + (w - pw) * plane.slope[k], std::min(pv, qv), std::max(pv, qv));
       lo = std::min(lo, v);
       hi = std::max(hi, v);
     }
     if (lo <= hi) {
       const double scale =
           std::max({std::abs(av), std::abs(bv), std::abs(cv), std::abs(w), std::abs(aw), std::abs(bw), std::abs(cw)});
-      const double margin = h_ + 1e-12 * scale;
-      const double first = std::floor((lo - margin - cv_[0]) / h_);
-      const double last = std::floor((hi + margin - cv_[0]) / h_) + 2.0;
+      const double margin = 1e-12 * scale;
+      const double first = std::floor((lo - margin - cv_[0]) * inv_h_);
+      const double last = std::floor((hi + margin - cv_[0]) * inv_h_) + 2.0;
       j0 = int32_t(std::clamp(first, double(j0), double(j1)));
       j1 = int32_t(std::clamp(last, double(j0), double(j1)));
+      inner_lo = lo + margin;
+      inner_hi = hi - margin;
     }
   }
-  Plane plane;
-  bool have_plane = false;
   for (int32_t j = j0; j < j1; ++j) {
     const double v = cv_[size_t(j)];
-    if (edgeSide(av, aw, bv, bw, v, w) != t.sign) continue;
-    if (edgeSide(bv, bw, cv, cw, v, w) != t.sign) continue;
-    if (edgeSide(cv, cw, av, aw, v, w) != t.sign) continue;
-    if (!have_plane) {
-      plane = Plane(t);
-      have_plane = true;
+    if (!(v > inner_lo && v < inner_hi)) {
+      if (edgeSide(av, aw, bv, bw, v, w) != t.sign) continue;
+      if (edgeSide(bv, bw, cv, cw, v, w) != t.sign) continue;
+      if (edgeSide(cv, cw, av, aw, v, w) != t.sign) continue;
     }
     out.push_back(Crossing{j, firstPast(plane, v, w), t.sign});
   }
@@ -216,6 +241,11 @@ RayCaster::Plane::Plane(const Tri& t) : sign(t.sign) {
   reliable = std::isfinite(n[0]) && std::abs(n[0]) > 4.0 * n_error[0];
   umin = std::min({a[0], b[0], c[0]});
   umax = std::max({a[0], b[0], c[0]});
+  for (int k = 0; k < 3; ++k) {
+    const float* from = t.p[k];
+    const float* to = t.p[(k + 1) % 3];
+    slope[k] = from[2] != to[2] ? (double(to[1]) - double(from[1])) / (double(to[2]) - double(from[2])) : 0.0;
+  }
 }
 
 int32_t RayCaster::firstPast(const Plane& pl, double v, double w) const {

@@ -44,6 +44,27 @@ class RayCaster {
   // Triangles kept (with a projection of nonzero area that some ray may cross).
   size_t triangles() const { return tris_.size(); }
 
+ private:
+  struct Tri {
+    float p[3][3];           // vertices A, B, C; each (u, v, w)
+    int32_t row_lo, row_hi;  // rows with w_min <= w_k < w_max
+    int32_t ray_lo, ray_hi;  // rays with v_min <= v_j < v_max
+    int32_t sign;            // exact sign of the normal's u component (orientation of the projection), never 0
+  };
+
+  // A triangle's vertices in double and its normal with error bounds, set up once per sweep when it becomes active.
+  struct Plane {
+    Plane() = default;
+    explicit Plane(const Tri& t);
+    double a[3], b[3], c[3];
+    double n[3], n_error[3];  // (B - A) x (C - A) in double; |n[k] - exact| <= n_error[k]
+    double umin, umax;        // the vertices' u range, which holds every crossing
+    double slope[3];          // dv/dw of each edge (A->B, B->C, C->A) in the (v, w) projection; 0 when horizontal
+    bool reliable;            // |n.u| well above its error bound: the estimate's error bound holds
+    int32_t sign;
+  };
+
+ public:
   // Walks the rows from `row_begin` upwards, keeping the set of triangles whose W range covers the current row.
   // Setting up costs O(triangles starting below row_begin); each row then costs O(active triangles + crossings).
   class RowSweep {
@@ -59,32 +80,16 @@ class RayCaster {
     int32_t row_;
     size_t next_start_ = 0;         // next triangle (in row_lo order) not yet activated
     std::vector<uint32_t> active_;  // triangles with row_lo <= row_ < row_hi
+    std::vector<Plane> planes_;     // their planes, set up once per sweep
   };
 
  private:
-  struct Tri {
-    float p[3][3];           // vertices A, B, C; each (u, v, w)
-    int32_t row_lo, row_hi;  // rows with w_min <= w_k < w_max
-    int32_t ray_lo, ray_hi;  // rays with v_min <= v_j < v_max
-    int32_t sign;            // exact sign of the normal's u component (orientation of the projection), never 0
-  };
-
-  // A crossed triangle's vertices in double and its normal with error bounds, set up once per triangle and row.
-  struct Plane {
-    Plane() = default;
-    explicit Plane(const Tri& t);
-    double a[3], b[3], c[3];
-    double n[3], n_error[3];  // (B - A) x (C - A) in double; |n[k] - exact| <= n_error[k]
-    double umin, umax;        // the vertices' u range, which holds every crossing
-    bool reliable;            // |n.u| well above its error bound: the estimate's error bound holds
-    int32_t sign;
-  };
-
-  void rowCrossings(const Tri& t, int32_t row, std::vector<Crossing>& out) const;
+  void rowCrossings(const Tri& t, const Plane& plane, int32_t row, std::vector<Crossing>& out) const;
   int32_t firstPast(const Plane& plane, double v, double w) const;
 
   RayAxes axes_;
   double h_ = 1.0;
+  double inv_h_ = 1.0;
   std::vector<double> cu_, cv_, cw_;  // voxel centre coordinates along u, v, w (SPEC section 1, exactly so)
   std::vector<Tri> tris_;             // sorted by row_lo
 };

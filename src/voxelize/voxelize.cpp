@@ -530,7 +530,7 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       VoxelGrid gz(dims, frame);
       {
         std::vector<uint64_t*> layers(static_cast<size_t>(dims.nz));
-        for (int32_t z = 0; z < dims.nz; ++z) layers[size_t(z)] = gz.mutableLayerWords(z);
+        forLayers(dims.nz, threads, [&](int, int32_t z) { layers[size_t(z)] = gz.mutableLayerWords(z); });
         const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongZ, threads);
         std::vector<PassScratch> scratch(static_cast<size_t>(threads));
         const int64_t wpr = gz.wordsPerRow();
