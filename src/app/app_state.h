@@ -1,0 +1,291 @@
+#pragma once
+// Everything the window knows, in one struct passed by reference to the panels (no globals): the document (mesh,
+// model, undo stack), the params structs the widgets edit, the background jobs, the caches of derived results and
+// the UI flags. Panels read it and edit the params; changes to the model go through the operations in
+// operations.h, which the action table, the panels and the script share.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "app/job.h"
+#include "app/script.h"
+#include "app/settings.h"
+#include "app/texture.h"
+#include "vox/analysis/analysis.h"
+#include "vox/core/mesh.h"
+#include "vox/core/voxel_grid.h"
+#include "vox/render/camera.h"
+#include "vox/render/framebuffer.h"
+#include "vox/render/point_renderer.h"
+#include "vox/voxelize/voxelize.h"
+
+struct GLFWwindow;
+
+namespace vox::app {
+
+struct AppState;
+
+// ---- The document ----
+
+// The STL a document was opened from (kept so it can be voxelized again at another resolution).
+struct MeshSource {
+  std::filesystem::path path;
+  TriangleMesh mesh;
+  MeshTopology topology;
+  bool ascii = false;
+  std::vector<std::string> warnings;  // from the reader: degenerate triangles, not watertight
+  double load_s = 0.0;
+  double volume = 0.0;  // signed volume of the mesh (model units cubed), for comparison with the voxel volume
+};
+
+// How a model grid came about (shown in the Model panel).
+struct ModelOrigin {
+  std::string what;       // "voxelized at R=200 (nonzero)", "loaded part.vxm"
+  std::string mode_used;  // voxelized: the fill mode, and why
+  std::string mode_reason;
+  int64_t resolution = 0;
+  double voxelize_s = 0.0;
+  double load_s = 0.0;
+  std::vector<std::string> warnings;
+  std::shared_ptr<const VoxelGrid> disputed;  // vote mode: voxels on which the three axes disagreed
+  int64_t disputed_count = 0;
+};
+
+// One state of the model: what the undo stack stores. Copies are cheap (grid layers are shared copy-on-write).
+struct ModelSnapshot {
+  uint64_t base_id = 0;  // unique per distinct base grid: keys the depth map
+  uint64_t version = 0;  // unique per state: keys the caches of derived results
+  VoxelGrid base;        // as voxelized or loaded
+  int32_t peeled = 0;    // skin layers removed from base
+  VoxelGrid grid;        // the model: base minus its outer `peeled` layers (kept, so undo needs no depth map)
+  std::shared_ptr<const ModelOrigin> origin;
+  std::string label;  // the change that produced this state, for "Undo <label>"
+};
+
+struct Document {
+  std::filesystem::path path;              // the file opened (mesh or voxel file); empty when nothing is open
+  std::shared_ptr<const MeshSource> mesh;  // when opened from an STL
+  std::optional<ModelSnapshot> model;      // none until the mesh is voxelized
+  std::vector<ModelSnapshot> undo_stack, redo_stack;
+  std::filesystem::path save_path;  // where Save writes; empty until saved once (or loaded from a voxel file)
+  // The model version that matches a file on disk; the model is "unsaved" when it differs.
+  uint64_t saved_version = 0;
+};
+
+// ---- Params the widgets edit ----
+
+enum class Panel { kModel, kSection, kSkin, kXray, kMass };
+inline constexpr int kPanelCount = 5;
+const char* panelName(Panel p);  // "model", "section", ...
+
+struct ViewParams {
+  render::Camera camera;
+  bool fit_pending = true;  // refit the camera to the model on the next draw
+  bool lit = true;          // lit table, or the thesis's classic table
+  bool round_points = false;
+  float point_size_px = 0.0f;  // fixed point diameter in pixels; 0: automatic (closes the surface)
+  bool lod = true;             // coarser points while the mouse drags the view or a slider
+  bool cut_away = true;        // show the section as a 3D cut-away while the Section panel is open
+  bool keep_above = false;     // cut-away keeps the half above the plane instead of below
+  bool show_disputed = false;
+  bool show_core = true;  // draw the thickest core over the model while the Skin panel is open
+};
+
+struct SectionUi {
+  Axis axis = Axis::kZ;
+  int32_t index = -1;  // -1: the middle, set when a model arrives
+  bool playing = false;
+  int32_t step = 1;
+  float play_speed = 15.0f;  // sections per second while playing
+  double play_accumulator = 0.0;
+};
+
+struct SkinUi {
+  int32_t peel_count = 5;               // "Peel N"
+  std::optional<int32_t> pending_peel;  // a peel asked for before the depth map was ready
+};
+
+struct XrayUi {
+  XrayParams params;
+  int32_t image_scale = 2;
+};
+
+struct VoxelizeDialog {
+  bool open_requested = false;
+  VoxelizeParams params;
+  bool by_voxel_size = false;
+};
+
+enum class BrowserPurpose {
+  kOpen,
+  kSaveModel,
+  kExportBinvox,
+  kExportViewPng,
+  kExportSectionPng,
+  kExportXrayPng,
+  kExportXrayCsv
+};
+
+struct FileBrowser {
+  struct Entry {
+    std::string name;
+    bool is_directory = false;
+    uintmax_t size = 0;
+  };
+  bool open_requested = false;
+  BrowserPurpose purpose = BrowserPurpose::kOpen;
+  std::filesystem::path directory;
+  std::string file_name;  // typed or clicked
+  bool show_all_files = false;
+  std::string error;  // e.g. the directory could not be listed
+  // The listing of `directory`, refreshed when the directory or the filter changes (not every frame).
+  std::vector<Entry> entries;
+  std::filesystem::path listed_directory;
+  bool listed_all_files = false;
+  bool needs_listing = true;
+  // Run after a successful save from the browser (the unsaved-changes prompt's "Save" continues with it).
+  std::function<void(AppState&)> then;
+};
+
+// ---- Caches of results derived from the model (recomputed when their key changes) ----
+
+struct SectionKey {
+  uint64_t model_version = 0;
+  Axis axis = Axis::kZ;
+  int32_t index = -1;
+  bool operator==(const SectionKey&) const = default;
+};
+struct XrayKey {
+  uint64_t model_version = 0;
+  Axis axis = Axis::kZ;
+  XrayMode mode = XrayMode::kTotal;
+  bool operator==(const XrayKey&) const = default;
+};
+
+struct LoadedFile {
+  std::filesystem::path path;
+  std::shared_ptr<const MeshSource> mesh;  // an STL
+  std::optional<VoxelGrid> grid;           // a voxel file
+  double load_s = 0.0;
+};
+
+// The 3D view: GL objects of the window's context.
+struct Viewport {
+  std::unique_ptr<render::PointRenderer> renderer;  // the model
+  std::unique_ptr<render::PointRenderer> overlay;   // disputed voxels or the core, drawn over the model
+  render::Framebuffer framebuffer;
+  uint64_t uploaded_version = 0;        // model_version the renderer holds
+  uint64_t overlay_key = 0;             // what the overlay holds (see viewport.cpp)
+  bool dirty = true;                    // draw again on the next frame
+  std::vector<double> drawn_signature;  // what the framebuffer shows (see viewport.cpp)
+  bool interacting = false;             // the mouse is dragging the view or a slider: coarse points
+  bool was_coarse = false;              // the last image used coarse points (redraw sharp when the drag ends)
+  render::DrawStats stats;
+  double draw_ms = 0.0;
+  float x = 0, y = 0, width = 0, height = 0;  // where the view sits in the window, pixels
+};
+
+// A script run by --script: the commands and where it stands.
+struct ScriptRun {
+  std::vector<ScriptCommand> commands;
+  size_t next = 0;
+  bool started = false;  // the current command did its first step and is waiting
+  int wait_frames = 0;
+  double deadline = 0.0;        // wait-file / job time-out (seconds, steady clock)
+  int settle_countdown = -1;    // frames still to draw once background work has finished
+  std::string screenshot_path;  // written (and cleared) by the frame loop after this frame is drawn
+  bool screenshot_requested = false;
+  bool failed = false;
+  // sweep: the section moves one step per frame, as a slider drag does; frame times are collected
+  bool sweeping = false;
+  int32_t sweep_step = 1;
+  std::vector<double> sweep_frame_ms;
+  double sweep_last = 0.0;
+};
+
+// Where a widget a test driver needs was drawn (window pixels), e.g. "section_slider"; the `state` script command
+// writes them out.
+struct WidgetRect {
+  std::string name;
+  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+// Shown one at a time in a modal dialog; each names the file and the problem.
+struct ErrorQueue {
+  std::vector<std::string> messages;
+};
+
+struct AppState {
+  GLFWwindow* window = nullptr;
+  Settings settings;
+  std::filesystem::path settings_path;  // empty: do not remember anything
+
+  Document doc;
+  // The model as shown (doc.model->grid, or empty). model_version changes whenever it does.
+  VoxelGrid model;
+  uint64_t model_version = 0;
+  uint64_t next_id = 1;  // for base ids and model versions
+
+  // Params edited by the widgets.
+  Panel panel = Panel::kModel;
+  bool panel_change_requested = true;  // select `panel` in the tab bar on the next frame
+  ViewParams view;
+  SectionUi section;
+  SkinUi skin;
+  XrayUi xray;
+  VoxelizeDialog voxelize;
+  FileBrowser browser;
+
+  // Background work.
+  Job<LoadedFile> load_job;
+  Job<VoxelizeResult> voxelize_job;
+  VoxelizeParams voxelize_job_params;  // the params of the running voxelization
+  double job_started = 0.0;
+  AsyncValue<uint64_t, std::shared_ptr<const DepthMap>> depth;  // keyed by base_id
+  AsyncValue<uint64_t, SurfaceStats> surface_stats;             // keyed by model_version
+  AsyncValue<uint64_t, MassProperties> mass;                    // keyed by model_version
+  AsyncValue<XrayKey, std::shared_ptr<const XrayResult>> xray_result;
+
+  // Derived images (main thread: sections are cheap enough to compute while a slider moves).
+  SectionKey section_key;
+  std::optional<Section> section_result;
+  std::string section_error;
+  Texture section_texture;
+  XrayKey xray_texture_key;
+  Texture xray_texture;
+  int32_t xray_map_x = -1, xray_map_y = -1;  // the thickness map inside the rendered figure (-1: unknown)
+  std::optional<render::Box3> model_bounds;
+
+  Viewport viewport;
+
+  // Dialogs.
+  ErrorQueue errors;
+  std::function<void(AppState&)> after_unsaved_prompt;  // what to do once the user saved or discarded
+  std::vector<std::string> dropped_files;               // from GLFW's drop callback, handled next frame
+  bool unsaved_prompt_requested = false;
+  bool quit_requested = false;
+  bool show_about = false;
+
+  // Frame bookkeeping.
+  int64_t frame = 0;
+  double frame_time_s = 0.0;  // duration of the last frame
+  double fps = 0.0;           // smoothed
+  int redraw_frames = 2;      // frames still to draw before sleeping until the next event
+
+  // Testing and docs.
+  std::optional<ScriptRun> script;
+  bool voxelize_after_load = false;      // the bundled model at start-up: voxelize at once instead of asking
+  std::vector<WidgetRect> widget_rects;  // refilled every frame
+  std::string screenshot_on_idle;        // --screenshot PATH: write once everything has settled, then quit
+  int exit_code = 0;
+};
+
+// Seconds since an arbitrary start (steady clock).
+double nowSeconds();
+
+}  // namespace vox::app

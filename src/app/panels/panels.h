@@ -1,0 +1,37 @@
+#pragma once
+// The window's panels and dialogs, each a function of the AppState (STYLE.md). Widgets edit params structs in the
+// state and dispatch actions (actions.h) or call operations (operations.h); no panel loops over voxels.
+#include "app/app_state.h"
+
+namespace vox::app {
+
+// The whole frame: menu bar, side panel, 3D view, image view, status bar and dialogs.
+void drawFrame(AppState& state);
+
+// Menu bar generated from the action table, plus Open Recent.
+void drawMainMenu(AppState& state);
+// Runs the action of every shortcut pressed this frame (not while a text field has the keyboard).
+void handleShortcuts(AppState& state);
+void drawStatusBar(AppState& state);
+
+// Side panel tabs.
+void drawModelPanel(AppState& state);
+void drawSectionPanel(AppState& state);
+void drawSkinPanel(AppState& state);
+void drawXrayPanel(AppState& state);
+void drawMassPanel(AppState& state);
+
+// The 2D images beside the 3D view (Section and X-ray panels).
+void drawSectionImage(AppState& state);
+void drawXrayImage(AppState& state);
+
+// Dialogs.
+void drawVoxelizeDialog(AppState& state);
+void drawFileBrowser(AppState& state);
+void drawErrorDialog(AppState& state);
+void drawUnsavedPrompt(AppState& state);
+void drawAboutDialog(AppState& state);
+// Progress of the running load or voxelization, with Cancel.
+void drawJobWindow(AppState& state);
+
+}  // namespace vox::app

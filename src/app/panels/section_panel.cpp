@@ -1,0 +1,187 @@
+// Section panel (thesis 5.2.1 and 6.3): a plane normal to X, Y or Z moved through the model with a slider or played
+// as successive sections; the 2D section image sits beside the 3D cut-away.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <imgui.h>
+
+#include "app/actions.h"
+#include "app/operations.h"
+#include "app/panels/panels.h"
+#include "app/ui.h"
+
+namespace vox::app {
+namespace {
+
+// Image axes of a section (vox/analysis/analysis.h): which grid axis runs right and which runs up.
+struct ImageAxes {
+  int right, up;
+};
+ImageAxes imageAxes(Axis a) {
+  switch (a) {
+    case Axis::kX:
+      return {1, 2};
+    case Axis::kY:
+      return {0, 2};
+    case Axis::kZ:
+      return {0, 1};
+  }
+  return {0, 1};
+}
+constexpr const char* kAxisNames[] = {"x", "y", "z"};
+
+void advancePlayback(AppState& state, int32_t n) {
+  SectionUi& s = state.section;
+  if (!s.playing || n <= 0) return;
+  s.play_accumulator += state.frame_time_s * double(s.play_speed);
+  const int32_t steps = int32_t(s.play_accumulator);
+  if (steps <= 0) return;
+  s.play_accumulator -= steps;
+  int32_t next = s.index + steps * std::max(1, s.step);
+  if (next >= n) next = 0;  // loop, like the thesis's "successive incremental sections"
+  s.index = next;
+  state.viewport.interacting = true;
+}
+
+}  // namespace
+
+void drawSectionPanel(AppState& state) {
+  if (state.model.empty()) {
+    ImGui::TextWrapped("Open a voxel file or voxelize a mesh to see its sections.");
+    return;
+  }
+  SectionUi& s = state.section;
+  int axis = int(s.axis);
+  ImGui::TextUnformatted("Normal to");
+  for (int a = 0; a < 3; ++a) {
+    ImGui::SameLine();
+    const std::string label = std::string(1, char('X' + a)) + "##axis";
+    if (ImGui::RadioButton(label.c_str(), &axis, a)) {
+      s.axis = Axis(a);
+      s.index = axisLength(state, s.axis) / 2;
+    }
+  }
+  const int32_t n = axisLength(state, s.axis);
+  advancePlayback(state, n);
+  s.index = std::clamp(s.index, 0, std::max(n - 1, 0));
+
+  ImGui::SetNextItemWidth(-1.0f);
+  ImGui::SliderInt("##section_index", &s.index, 0, std::max(n - 1, 0), "index %d");
+  {
+    const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
+    state.widget_rects.push_back({"section_slider", r0.x, r0.y, r1.x, r1.y});
+  }
+  if (ImGui::IsItemActive()) {
+    s.playing = false;
+    state.viewport.interacting = true;  // coarse 3D points while dragging
+  }
+  const Section* section = currentSection(state);
+  const std::string units = state.model.frame().units;
+  if (section) {
+    ImGui::Text("%s = %s  (index %d of 0..%d)", kAxisNames[int(s.axis)], formatLength(section->position, units).c_str(),
+                s.index, n - 1);
+  }
+
+  // Step and play: the buttons dispatch the same actions as the Section menu and PgUp / PgDn / Space.
+  if (ImGui::Button("|<")) {
+    s.playing = false;
+    s.index = 0;
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("<")) dispatch(state, ActionId::kSectionPrev);
+  ImGui::SameLine();
+  if (ImGui::Button(s.playing ? "Pause" : "Play", ImVec2(60.0f, 0.0f))) dispatch(state, ActionId::kSectionPlay);
+  ImGui::SameLine();
+  if (ImGui::Button(">")) dispatch(state, ActionId::kSectionNext);
+  ImGui::SameLine();
+  if (ImGui::Button(">|")) {
+    s.playing = false;
+    s.index = n - 1;
+  }
+  ImGui::SetNextItemWidth(120.0f);
+  if (ImGui::InputInt("Step", &s.step)) s.step = std::clamp(s.step, 1, std::max(1, n));
+  ImGui::SetNextItemWidth(120.0f);
+  ImGui::SliderFloat("Sections / s", &s.play_speed, 1.0f, 60.0f, "%.0f");
+
+  if (section) {
+    heading("This section");
+    const double h = state.model.voxelSize();
+    if (ImGui::BeginTable("section_facts", 2, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
+      tableRow("Filled voxels", groupDigits(section->filled));
+      char area[64];
+      std::snprintf(area, sizeof area, "%.5g (voxels x voxel size^2)", double(section->filled) * h * h);
+      tableRow("Area", area);
+      const ImageAxes ax = imageAxes(s.axis);
+      tableRow("Image", std::string(kAxisNames[ax.right]) + " to the right, " + kAxisNames[ax.up] + " up");
+      ImGui::EndTable();
+    }
+  } else if (!state.section_error.empty()) {
+    ImGui::TextWrapped("%s", state.section_error.c_str());
+  }
+
+  heading("3D view");
+  ImGui::Checkbox("Cut away the model at the section", &state.view.cut_away);
+  if (state.view.cut_away) {
+    int keep = state.view.keep_above ? 1 : 0;
+    ImGui::RadioButton("Keep below", &keep, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("Keep above", &keep, 1);
+    state.view.keep_above = keep == 1;
+  }
+  ImGui::Spacing();
+  if (ImGui::Button("Export section PNG...")) dispatch(state, ActionId::kExportSectionPng);
+}
+
+void drawSectionImage(AppState& state) {
+  const Section* section = currentSection(state);
+  if (!section) {
+    ImGui::TextWrapped("%s", state.section_error.empty() ? "No section." : state.section_error.c_str());
+    return;
+  }
+  if (state.section_texture.empty()) state.section_texture.upload(renderSection(*section, 1));
+  const std::string units = state.model.frame().units;
+  ImGui::Text("Section %s = %s, index %d: %s voxels", kAxisNames[int(section->axis)],
+              formatLength(section->position, units).c_str(), section->index, groupDigits(section->filled).c_str());
+
+  const ImageAxes ax = imageAxes(section->axis);
+  const int32_t iw = section->mask.width, ih = section->mask.height;
+  const float label_h = ImGui::GetTextLineHeightWithSpacing();
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const float room_w = std::max(1.0f, avail.x - 24.0f), room_h = std::max(1.0f, avail.y - 2.0f * label_h);
+  float scale = std::min(room_w / float(iw), room_h / float(ih));
+  if (scale >= 1.0f) scale = std::floor(scale);  // whole pixels per voxel keep the voxel grid regular
+  const ImVec2 size(float(iw) * scale, float(ih) * scale);
+
+  ImGui::TextUnformatted(kAxisNames[ax.up]);
+  ImGui::SameLine();
+  ImGui::TextDisabled("^");
+  const ImVec2 origin(ImGui::GetCursorScreenPos().x + 20.0f, ImGui::GetCursorScreenPos().y);
+  ImGui::SetCursorScreenPos(origin);
+  ImGui::Image(textureId(state.section_texture.id()), size);
+  {
+    const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
+    state.widget_rects.push_back({"section_image", r0.x, r0.y, r1.x, r1.y});
+  }
+  const bool hovered = ImGui::IsItemHovered();
+  ImGui::SetCursorScreenPos(ImVec2(origin.x + size.x - 40.0f, origin.y + size.y + 2.0f));
+  ImGui::Text("%s >", kAxisNames[ax.right]);
+
+  if (hovered) {
+    const ImVec2 m = ImGui::GetIO().MousePos;
+    const int32_t u = std::clamp(int32_t((m.x - origin.x) / scale), 0, iw - 1);
+    const int32_t row = std::clamp(int32_t((m.y - origin.y) / scale), 0, ih - 1);
+    const int32_t v = ih - 1 - row;  // row 0 holds the largest "up" index
+    int32_t voxel[3];
+    voxel[int(section->axis)] = section->index;
+    voxel[ax.right] = u;
+    voxel[ax.up] = v;
+    const glm::dvec3 c = state.model.frame().voxelCentre(voxel[0], voxel[1], voxel[2]);
+    ImGui::SetTooltip("voxel (%d, %d, %d): %s\ncentre (%.4g, %.4g, %.4g) %s", voxel[0], voxel[1], voxel[2],
+                      section->mask.at(u, row) ? "material" : "empty", c.x, c.y, c.z,
+                      units == "model" ? "model units" : units.c_str());
+  }
+}
+
+}  // namespace vox::app

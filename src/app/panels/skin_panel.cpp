@@ -1,0 +1,114 @@
+// Skin removal panel (thesis 5.2.2 and 6.4): peel the surface layer by layer down to the core, the thickest
+// region. The depth map is computed once per model in the background; every peel step then shows
+// DepthMap::remainingAfter(k) at once, and each step is an undoable change of the model.
+#include <algorithm>
+#include <cfloat>
+#include <cstdio>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include <imgui.h>
+
+#include "app/actions.h"
+#include "app/operations.h"
+#include "app/panels/panels.h"
+#include "app/ui.h"
+
+namespace vox::app {
+namespace {
+
+void actionButton(AppState& state, ActionId id, const char* label, float width = 0.0f) {
+  const Action& a = action(id);
+  const bool enabled = actionEnabled(state, a);
+  if (!enabled) ImGui::BeginDisabled();
+  if (ImGui::Button(label, ImVec2(width, 0.0f))) dispatch(state, id);
+  if (!enabled) ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+    const std::string sc = shortcutText(a.shortcut);
+    ImGui::SetTooltip("%s%s%s%s", a.label, sc.empty() ? "" : " (", sc.c_str(), sc.empty() ? "" : ")");
+  }
+}
+
+}  // namespace
+
+void drawSkinPanel(AppState& state) {
+  if (!state.doc.model) {
+    ImGui::TextWrapped("Open a voxel file or voxelize a mesh to peel its skin.");
+    return;
+  }
+  const ModelSnapshot& snap = *state.doc.model;
+  const DepthMap* depth = currentDepthMap(state);
+
+  ImGui::TextWrapped(
+      "Each layer removes every voxel with a free face (6-connectivity), all at once. The last "
+      "layer left is the core: the thickest region of the part.");
+  ImGui::Spacing();
+  const float w = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
+  actionButton(state, ActionId::kPeelOne, "Peel one", w);
+  ImGui::SameLine();
+  actionButton(state, ActionId::kPeelBack, "Back one", w);
+  ImGui::SameLine();
+  actionButton(state, ActionId::kPeelReset, "Reset", w);
+  actionButton(state, ActionId::kPeelN, ("Peel " + std::to_string(state.skin.peel_count)).c_str(), w);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(w);
+  if (ImGui::InputInt("##peel_n", &state.skin.peel_count))
+    state.skin.peel_count = std::clamp(state.skin.peel_count, 1, 100000);
+  ImGui::SameLine();
+  actionButton(state, ActionId::kPeelCore, "Peel to core", w);
+
+  if (!depth) {
+    ImGui::Spacing();
+    if (const Error* e = state.depth.error(snap.base_id)) {
+      ImGui::TextWrapped("Skin layers could not be computed: %s", e->message.c_str());
+    } else {
+      ImGui::TextUnformatted(state.skin.pending_peel ? "Computing the skin layers; the peel follows..."
+                                                     : "Computing the skin layers...");
+      ImGui::ProgressBar(float(state.depth.progress()), ImVec2(-1.0f, 0.0f));
+    }
+    return;
+  }
+
+  const std::vector<int64_t>& removed = depth->removedPerLayer();
+  const int32_t layers = depth->layers();
+  const int32_t k = snap.peeled;
+  const int64_t total = std::accumulate(removed.begin(), removed.end(), int64_t(0));
+  const int64_t gone =
+      std::accumulate(removed.begin(), removed.begin() + std::min<size_t>(size_t(k), removed.size()), int64_t(0));
+  const double h = state.model.voxelSize();
+  const std::string units = state.model.frame().units;
+
+  heading("Layers");
+  if (ImGui::BeginTable("skin_facts", 2, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
+    tableRow("Current layer", k == 0 ? "0 (the whole model)"
+                                     : std::to_string(k) + " peeled" + (k == layers - 1 ? " (core reached)" : ""));
+    tableRow("Layers to the core",
+             std::to_string(layers) + " (core depth " + formatLength(double(layers) * h, units) + " in face steps)");
+    tableRow("Remaining voxels", groupDigits(total - gone) + " of " + groupDigits(total));
+    if (k > 0 && size_t(k) <= removed.size()) tableRow("Removed by this layer", groupDigits(removed[size_t(k) - 1]));
+    tableRow("Core voxels", groupDigits(depth->coreVoxels()));
+    ImGui::EndTable();
+  }
+
+  // Removed voxels per layer; the marker shows how far the model is peeled.
+  std::vector<float> values(removed.begin(), removed.end());
+  char overlay[64];
+  std::snprintf(overlay, sizeof overlay, "removed per layer (1..%d)", layers);
+  ImGui::PlotHistogram("##removed", values.data(), int(values.size()), 0, overlay, 0.0f, FLT_MAX,
+                       ImVec2(ImGui::GetContentRegionAvail().x, 110.0f));
+  const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
+  state.widget_rects.push_back({"skin_histogram", r0.x, r0.y, r1.x, r1.y});
+  if (layers > 0 && k > 0) {
+    const float pad = ImGui::GetStyle().FramePadding.x;
+    const float x = r0.x + pad + (r1.x - r0.x - 2.0f * pad) * float(k) / float(layers);
+    ImGui::GetWindowDrawList()->AddLine(ImVec2(x, r0.y), ImVec2(x, r1.y), IM_COL32(255, 80, 80, 255), 2.0f);
+  }
+
+  ImGui::Checkbox("Show the core through the model", &state.view.show_core);
+  helpMarker(
+      "Draws the voxels of the last layer (the thickest region) in magenta over the model, so you can see "
+      "where it lies before peeling down to it.");
+}
+
+}  // namespace vox::app

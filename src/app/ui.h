@@ -1,0 +1,29 @@
+#pragma once
+// Small ImGui helpers shared by the panels: number formatting, images from GL textures, tooltips.
+#include <cstdint>
+#include <string>
+
+#include <imgui.h>
+
+namespace vox::app {
+
+// ImGui identifies textures by an opaque pointer-sized value; the OpenGL3 backend reads it as a GL texture name.
+inline ImTextureID textureId(uint32_t gl_name) { return reinterpret_cast<ImTextureID>(uintptr_t(gl_name)); }
+
+// 1234567 -> "1 234 567" (thin groups are easier to read in a table of voxel counts).
+std::string groupDigits(int64_t n);
+// Bytes with a binary unit: "512 B", "12.3 MiB", "1.02 GiB".
+std::string formatBytes(uint64_t bytes);
+// Seconds as "0.42 s" or "85 ms".
+std::string formatSeconds(double s);
+// A number in model units with the units name: "12.5 mm", "0.031 model units".
+std::string formatLength(double value, const std::string& units);
+
+// A section heading: a gap, the title in the accent colour and a rule (ImGui 1.86 has no SeparatorText).
+void heading(const char* title);
+// A "(?)" marker whose tooltip explains a control.
+void helpMarker(const char* text);
+// Label on the left, value on the right in a two-column table row.
+void tableRow(const char* label, const std::string& value);
+
+}  // namespace vox::app

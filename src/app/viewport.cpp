@@ -1,0 +1,300 @@
+#include "app/viewport.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "app/actions.h"
+#include "app/operations.h"
+#include "app/ui.h"
+#include "vox/io/image_io.h"
+#include "vox/render/gl.h"
+
+namespace vox::app {
+namespace {
+
+constexpr Rgba8 kBackground{46, 50, 58, 255};
+constexpr glm::vec3 kCoreColour{1.0f, 0.2f, 0.85f};
+constexpr glm::vec3 kDisputedColour{1.0f, 0.85f, 0.1f};
+constexpr double kOrbitDegreesPerPixel = 0.4;
+constexpr double kZoomPerWheelStep = 1.15;
+
+render::SectionAxis toRenderAxis(Axis a) {
+  switch (a) {
+    case Axis::kX:
+      return render::SectionAxis::kX;
+    case Axis::kY:
+      return render::SectionAxis::kY;
+    case Axis::kZ:
+      return render::SectionAxis::kZ;
+  }
+  return render::SectionAxis::kNone;
+}
+
+// What the overlay renderer should hold: the core while the Skin panel is open, else the disputed voxels when asked
+// for. Returns 0 for nothing; otherwise a key that changes with the content.
+uint64_t overlayKey(const AppState& state, const VoxelGrid** grid_out, VoxelGrid& scratch) {
+  *grid_out = nullptr;
+  if (!state.doc.model) return 0;
+  const ModelSnapshot& m = *state.doc.model;
+  if (state.panel == Panel::kSkin && state.view.show_core) {
+    if (const DepthMap* d = currentDepthMap(state); d && d->layers() > 0) {
+      const uint64_t key = m.base_id * 4 + 1;
+      if (key != state.viewport.overlay_key) scratch = d->removedBy(d->layers());
+      *grid_out = &scratch;
+      return key;
+    }
+  }
+  if (state.view.show_disputed && m.origin && m.origin->disputed && m.origin->disputed_count > 0) {
+    *grid_out = m.origin->disputed.get();
+    return m.base_id * 4 + 2;
+  }
+  return 0;
+}
+
+render::DrawParams drawParams(const AppState& state, bool coarse) {
+  render::DrawParams p;
+  p.lut = state.view.lit ? render::Lut::kLit : render::Lut::kClassic;
+  p.round_points = state.view.round_points;
+  p.point_size_px = state.view.point_size_px;
+  p.coarse = coarse;
+  if (state.panel == Panel::kSection && state.view.cut_away && !state.model.empty()) {
+    p.section.axis = toRenderAxis(state.section.axis);
+    p.section.index = state.section.index;
+    p.section.side = state.view.keep_above ? render::SectionSide::kAbove : render::SectionSide::kBelow;
+  }
+  return p;
+}
+
+// Brings the renderers up to date with the model and the overlay choice.
+void syncRenderers(AppState& state) {
+  Viewport& vp = state.viewport;
+  if (vp.uploaded_version != state.model_version) {
+    if (!state.model.empty()) {
+      vp.renderer->setGrid(state.model);
+      state.model_bounds = vp.renderer->bounds();
+    } else {
+      state.model_bounds.reset();
+    }
+    vp.uploaded_version = state.model_version;
+    vp.dirty = true;
+  }
+  VoxelGrid scratch;
+  const VoxelGrid* overlay = nullptr;
+  const uint64_t key = overlayKey(state, &overlay, scratch);
+  if (key != vp.overlay_key) {
+    if (overlay) vp.overlay->setGrid(*overlay);
+    vp.overlay_key = key;
+    vp.dirty = true;
+  }
+}
+
+void fitIfPending(AppState& state, double aspect) {
+  if (!state.view.fit_pending || !state.model_bounds) return;
+  state.view.camera.fitToBox(*state.model_bounds, aspect);
+  state.view.fit_pending = false;
+}
+
+// Everything the image depends on; the view is redrawn only when this changes.
+std::vector<double> signature(const AppState& state, int w, int h, bool coarse) {
+  const render::Camera& c = state.view.camera;
+  const render::DrawParams p = drawParams(state, coarse);
+  return {double(state.model_version),
+          double(state.viewport.overlay_key),
+          double(w),
+          double(h),
+          c.target.x,
+          c.target.y,
+          c.target.z,
+          c.distance,
+          c.yaw_deg,
+          c.pitch_deg,
+          c.fov_y_deg,
+          double(int(c.projection)),
+          double(int(p.lut)),
+          double(p.round_points),
+          p.point_size_px,
+          double(coarse),
+          double(int(p.section.axis)),
+          double(p.section.index),
+          double(int(p.section.side))};
+}
+
+void renderView(AppState& state, int w, int h, bool coarse) {
+  Viewport& vp = state.viewport;
+  const double t0 = nowSeconds();
+  if (Status s = vp.framebuffer.resize(w, h); !s) {
+    reportError(state, "the 3D view could not be drawn: " + s.error().message);
+    return;
+  }
+  vp.framebuffer.clear(kBackground);
+  vp.stats = {};
+  if (!state.model.empty()) {
+    const render::DrawParams params = drawParams(state, coarse);
+    vp.stats = vp.renderer->draw(state.view.camera, w, h, params);
+    if (vp.overlay_key != 0) {
+      // Drawn over the model regardless of depth, so the core (deep inside) or a disputed voxel shows through.
+      glClear(GL_DEPTH_BUFFER_BIT);
+      render::DrawParams over = params;
+      over.lut = render::Lut::kLit;
+      over.colour = (vp.overlay_key % 4 == 1) ? kCoreColour : kDisputedColour;
+      over.cull_back_groups = true;
+      vp.overlay->draw(state.view.camera, w, h, over);
+    }
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  vp.was_coarse = coarse && vp.stats.lod_level > 0;
+  vp.draw_ms = (nowSeconds() - t0) * 1000.0;
+}
+
+void drawAxisTriad(const render::Camera& camera, ImVec2 origin, float length) {
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const glm::dvec3 right = camera.rightAxis();
+  const glm::dvec3 up = camera.upAxis();
+  const struct {
+    glm::dvec3 axis;
+    ImU32 colour;
+    const char* name;
+  } axes[3] = {{{1, 0, 0}, IM_COL32(235, 80, 80, 255), "X"},
+               {{0, 1, 0}, IM_COL32(90, 210, 90, 255), "Y"},
+               {{0, 0, 1}, IM_COL32(90, 140, 255, 255), "Z"}};
+  for (const auto& a : axes) {
+    const ImVec2 tip(origin.x + float(glm::dot(a.axis, right)) * length,
+                     origin.y - float(glm::dot(a.axis, up)) * length);
+    dl->AddLine(origin, tip, a.colour, 2.0f);
+    dl->AddText(ImVec2(tip.x + 2.0f, tip.y - 7.0f), a.colour, a.name);
+  }
+}
+
+void drawToolbar(AppState& state, ImVec2 pos) {
+  ImGui::SetCursorScreenPos(pos);
+  const ActionId views[] = {ActionId::kViewFit,  ActionId::kViewIso,  ActionId::kViewPosX, ActionId::kViewNegX,
+                            ActionId::kViewPosY, ActionId::kViewNegY, ActionId::kViewPosZ, ActionId::kViewNegZ};
+  const char* short_labels[] = {"Fit", "Iso", "+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+  for (size_t i = 0; i < std::size(views); ++i) {
+    if (i > 0) ImGui::SameLine(0.0f, 2.0f);
+    if (ImGui::SmallButton(short_labels[i])) dispatch(state, views[i]);
+    if (ImGui::IsItemHovered()) {
+      const Action& a = action(views[i]);
+      const std::string sc = shortcutText(a.shortcut);
+      ImGui::SetTooltip("%s%s%s%s", a.label, sc.empty() ? "" : " (", sc.c_str(), sc.empty() ? "" : ")");
+    }
+  }
+}
+
+}  // namespace
+
+Status initViewport(AppState& state) {
+  auto main_renderer = render::PointRenderer::create();
+  if (!main_renderer) return main_renderer.error();
+  auto overlay = render::PointRenderer::create();
+  if (!overlay) return overlay.error();
+  state.viewport.renderer = std::move(main_renderer).value();
+  state.viewport.overlay = std::move(overlay).value();
+  return Ok{};
+}
+
+void shutdownViewport(AppState& state) {
+  state.viewport.renderer.reset();
+  state.viewport.overlay.reset();
+  state.viewport.framebuffer = render::Framebuffer();
+}
+
+void drawViewport(AppState& state) {
+  Viewport& vp = state.viewport;
+  const ImVec2 pos = ImGui::GetCursorScreenPos();
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const int w = std::max(1, int(avail.x));
+  const int h = std::max(1, int(avail.y));
+  vp.x = pos.x;
+  vp.y = pos.y;
+  vp.width = float(w);
+  vp.height = float(h);
+
+  syncRenderers(state);
+  fitIfPending(state, double(w) / double(h));
+
+  // Mouse: an invisible button over the whole view takes the drags, so they never reach the panels below it.
+  ImGui::InvisibleButton(
+      "##view", ImVec2(float(w), float(h)),
+      ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
+  const ImGuiIO& io = ImGui::GetIO();
+  bool dragging = false;
+  if (ImGui::IsItemActive()) {
+    const ImVec2 d = io.MouseDelta;
+    const bool pan = ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle) ||
+                     (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift);
+    if (d.x != 0.0f || d.y != 0.0f) {
+      if (pan) {
+        state.view.camera.pan(d.x, d.y, double(h));
+      } else {
+        state.view.camera.orbit(-d.x * kOrbitDegreesPerPixel, d.y * kOrbitDegreesPerPixel);
+      }
+    }
+    dragging = true;
+  }
+  if (ImGui::IsItemHovered()) {
+    if (io.MouseWheel != 0.0f) state.view.camera.zoom(std::pow(kZoomPerWheelStep, double(io.MouseWheel)));
+    if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) state.view.fit_pending = true;
+  }
+  fitIfPending(state, double(w) / double(h));
+  vp.interacting = vp.interacting || dragging;
+  const bool coarse = state.view.lod && vp.interacting;
+
+  const std::vector<double> sig = signature(state, w, h, coarse);
+  if (vp.dirty || sig != vp.drawn_signature) {
+    renderView(state, w, h, coarse);
+    vp.drawn_signature = sig;
+    vp.dirty = false;
+  }
+
+  // The framebuffer's rows run bottom-up (GL), ImGui's top-down: flip the texture coordinates.
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->AddImage(textureId(vp.framebuffer.colourTexture()), pos, ImVec2(pos.x + float(w), pos.y + float(h)), ImVec2(0, 1),
+               ImVec2(1, 0));
+
+  // Read-outs and the view buttons drawn over the image.
+  const ImVec2 after = ImGui::GetCursorScreenPos();
+  if (state.model.empty()) {
+    const char* msg = modelBusy(state) ? "Working..." : "Open a mesh or voxel file (File > Open, or drop it here)";
+    const ImVec2 ts = ImGui::CalcTextSize(msg);
+    dl->AddText(ImVec2(pos.x + (float(w) - ts.x) * 0.5f, pos.y + (float(h) - ts.y) * 0.5f),
+                IM_COL32(220, 220, 220, 255), msg);
+  } else {
+    char info[160];
+    std::snprintf(info, sizeof info, "%s points%s  |  %.0f ms", groupDigits(vp.stats.points_drawn).c_str(),
+                  vp.stats.lod_level > 0 ? ("  |  coarse x" + std::to_string(1 << vp.stats.lod_level)).c_str() : "",
+                  vp.draw_ms);
+    dl->AddText(ImVec2(pos.x + 8.0f, pos.y + float(h) - ImGui::GetFontSize() - 6.0f), IM_COL32(200, 200, 200, 255),
+                info);
+    drawAxisTriad(state.view.camera, ImVec2(pos.x + 40.0f, pos.y + float(h) - 60.0f), 28.0f);
+    if (vp.overlay_key != 0) {
+      const bool core = vp.overlay_key % 4 == 1;
+      dl->AddText(ImVec2(pos.x + 8.0f, pos.y + 8.0f), core ? IM_COL32(255, 60, 220, 255) : IM_COL32(255, 215, 30, 255),
+                  core ? "Core (thickest region) shown through the model" : "Disputed voxels (vote mode)");
+    }
+  }
+  drawToolbar(state, ImVec2(pos.x + float(w) - 260.0f, pos.y + 6.0f));
+  ImGui::SetCursorScreenPos(after);
+}
+
+bool exportViewPng(AppState& state, const std::filesystem::path& path) {
+  Viewport& vp = state.viewport;
+  if (state.model.empty() || vp.width < 1 || vp.height < 1) {
+    reportError(state, "there is no 3D view to export", path);
+    return false;
+  }
+  syncRenderers(state);
+  renderView(state, int(vp.width), int(vp.height), false);
+  vp.drawn_signature.clear();  // the panel redraws its own (possibly coarse) image next frame
+  ImageRgba image = vp.framebuffer.readPixels();
+  if (Status s = io::savePng(image, path); !s) {
+    reportError(state, s.error().message, path);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace vox::app
