@@ -63,8 +63,9 @@ Result<std::vector<uint8_t>> readFileBytes(const std::filesystem::path& path) {
   if (S_ISDIR(st.st_mode)) return makeError(ErrorCode::kIo, p + ": is a directory, not a file");
 
   std::vector<uint8_t> bytes;
-  // The size from fstat is only a hint (pipes report 0, files may grow): read until end of file.
-  if (S_ISREG(st.st_mode) && st.st_size > 0) bytes.reserve(size_t(st.st_size));
+  // The size from fstat is only a hint (pipes report 0, files may grow): read until end of file. The spare 64 KiB
+  // let the final read that sees end of file happen without growing (and copying) the buffer.
+  if (S_ISREG(st.st_mode) && st.st_size > 0) bytes.reserve(size_t(st.st_size) + 65536);
   size_t used = 0;
   for (;;) {
     if (bytes.size() - used < 65536) bytes.resize(std::max<size_t>(used + 65536, bytes.capacity()));
