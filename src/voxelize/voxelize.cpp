@@ -82,8 +82,9 @@ std::string dimsText(const Dims& d) {
   return std::to_string(d.nx) + " x " + std::to_string(d.ny) + " x " + std::to_string(d.nz);
 }
 
-// Grids alive at the peak: vote mode holds the X, Y and Z parity grids before combining them.
-int gridsFor(FillMode m) { return m == FillMode::kVote || m == FillMode::kAuto ? 3 : 1; }
+// Grids alive at the peak: vote mode holds the Z parity grid (which becomes the result) and the disputed-voxel mask
+// (as large as a grid in the worst case); the X and Y parities only ever exist one layer at a time.
+int gridsFor(FillMode m) { return m == FillMode::kVote || m == FillMode::kAuto ? 2 : 1; }
 
 // Serialises progress callbacks from the workers and rate-limits them to about kSteps calls in total.
 class ProgressGate {
@@ -128,33 +129,23 @@ class ProgressGate {
   double last_fraction_ = 0.0;
 };
 
-// Runs rowFn(thread, row, crossings) for every row of the caster on `threads` threads. Rows are handed out in
-// slabs of consecutive rows (each slab sweeps its own active-triangle set), dynamically, so uneven rows balance.
-// Returns false when cancelled or out of memory (`out_of_memory` set).
-template <class RowFn>
-bool castRows(const RayCaster& caster, int threads, ProgressGate& progress, bool& out_of_memory, RowFn&& row_fn) {
-  const int32_t rows = caster.rows();
+// Runs slab_fn(thread, row_begin, row_end) over slabs of consecutive rows on `threads` threads, handed out
+// dynamically so uneven rows balance; about eight slabs per thread, enough to balance and few enough that setting up
+// each slab's sweep stays cheap. slab_fn checks progress.cancelled() per row. Returns false when cancelled or out of
+// memory (`out_of_memory` set).
+template <class SlabFn>
+bool runSlabs(int32_t rows, int threads, ProgressGate& progress, bool& out_of_memory, SlabFn&& slab_fn) {
   threads = std::clamp(threads, 1, std::max(1, int(rows)));
-  // About eight slabs per thread: enough to balance, few enough that setting up each sweep stays cheap.
   const int32_t slab = std::max<int32_t>(1, rows / (threads * 8));
   const int32_t slabs = (rows + slab - 1) / slab;
   std::atomic<int32_t> next{0};
   std::atomic<bool> failed{false};
   auto worker = [&](int t) {
     try {
-      std::vector<Crossing> crossings;
       for (;;) {
         const int32_t s = next.fetch_add(1, std::memory_order_relaxed);
         if (s >= slabs || progress.cancelled() || failed.load(std::memory_order_relaxed)) return;
-        const int32_t r0 = s * slab, r1 = std::min(rows, r0 + slab);
-        RayCaster::RowSweep sweep(caster, r0);
-        for (int32_t r = r0; r < r1; ++r) {
-          if (progress.cancelled()) return;
-          crossings.clear();
-          sweep.next(crossings);
-          row_fn(t, r, crossings);
-          progress.advance(1);
-        }
+        slab_fn(t, s * slab, std::min(rows, s * slab + slab));
       }
     } catch (const std::bad_alloc&) {
       failed.store(true);
@@ -166,6 +157,21 @@ bool castRows(const RayCaster& caster, int threads, ProgressGate& progress, bool
   for (auto& th : pool) th.join();
   out_of_memory = failed.load();
   return !out_of_memory && !progress.cancelled();
+}
+
+// Runs row_fn(thread, row, crossings) for every row of the caster, in parallel (runSlabs).
+template <class RowFn>
+bool castRows(const RayCaster& caster, int threads, ProgressGate& progress, bool& out_of_memory, RowFn&& row_fn) {
+  return runSlabs(caster.rows(), threads, progress, out_of_memory, [&](int t, int32_t r0, int32_t r1) {
+    std::vector<Crossing> crossings;
+    RayCaster::RowSweep sweep(caster, r0);
+    for (int32_t r = r0; r < r1 && !progress.cancelled(); ++r) {
+      crossings.clear();
+      sweep.next(crossings);
+      row_fn(t, r, crossings);
+      progress.advance(1);
+    }
+  });
 }
 
 // Calls f(thread, z) for every layer on `threads` threads.
@@ -211,10 +217,30 @@ PassStats sumStats(const std::vector<PassScratch>& scratch, const RayCaster& cas
   return s;
 }
 
-// Rays along X, row = layer z: sort the crossings of each ray and write the inside runs with fillRun.
-void fillRowAlongX(VoxelGrid& grid, int32_t z, const std::vector<Crossing>& crossings, Rule rule, PassScratch& s) {
+// Sets padded bits [x0 + 1, x1 + 1) of a row (voxels x0 <= x < x1, clamped to [0, nx)) with word operations.
+void fillBits(uint64_t* row, int64_t nx, int64_t x0, int64_t x1) {
+  x0 = std::max<int64_t>(x0, 0);
+  x1 = std::min<int64_t>(x1, nx);
+  if (x0 >= x1) return;
+  const int64_t b0 = x0 + 1, b1 = x1 + 1;
+  const int64_t w0 = b0 >> 6, w1 = (b1 - 1) >> 6;
+  const uint64_t first = ~uint64_t(0) << (b0 & 63);
+  const uint64_t last = ~uint64_t(0) >> (63 - ((b1 - 1) & 63));
+  if (w0 == w1) {
+    row[w0] |= first & last;
+    return;
+  }
+  row[w0] |= first;
+  for (int64_t w = w0 + 1; w < w1; ++w) row[w] = ~uint64_t(0);
+  row[w1] |= last;
+}
+
+// Rays along X, row = layer z: sort the crossings of each ray and write the inside runs as write(y, x0, x1) (word
+// operations: VoxelGrid::fillRun, or fillBits on a scratch layer).
+template <class RunWriter>
+void fillRowAlongX(int32_t ny, int32_t nx, const std::vector<Crossing>& crossings, Rule rule, PassScratch& s,
+                   RunWriter&& write) {
   if (crossings.empty()) return;
-  const int32_t ny = grid.ny(), nx = grid.nx();
   s.crossings += int64_t(crossings.size());
   // Counting sort by ray: O(ny + crossings).
   s.start.assign(size_t(ny) + 1, 0);
@@ -244,9 +270,9 @@ void fillRowAlongX(VoxelGrid& grid, int32_t z, const std::vector<Crossing>& cros
     const int64_t n = e - b;
     if (rule == Rule::kParity) {
       // Voxel i is inside iff an odd number of crossings lie before its centre: runs [first_0, first_1), ...
-      for (int64_t m = 0; m + 1 < n; m += 2) grid.fillRun(j, z, b[m].first, b[m + 1].first);
+      for (int64_t m = 0; m + 1 < n; m += 2) write(j, b[m].first, b[m + 1].first);
       if (n % 2 != 0) {
-        grid.fillRun(j, z, b[n - 1].first, nx);  // the ray ends inside: the mesh is open on this line
+        write(j, b[n - 1].first, nx);  // the ray ends inside: the mesh is open on this line
         ++s.odd_rays;
       }
     } else {
@@ -255,7 +281,7 @@ void fillRowAlongX(VoxelGrid& grid, int32_t z, const std::vector<Crossing>& cros
       for (int64_t m = 0; m < n; ++m) {
         winding -= b[m].sign;
         const int32_t end = m + 1 < n ? b[m + 1].first : nx;
-        if (winding != 0 && b[m].first < end) grid.fillRun(j, z, b[m].first, end);
+        if (winding != 0 && b[m].first < end) write(j, b[m].first, end);
       }
       if (winding != 0) ++s.unbalanced_rays;
       if (n % 2 != 0) ++s.odd_rays;
@@ -263,27 +289,23 @@ void fillRowAlongX(VoxelGrid& grid, int32_t z, const std::vector<Crossing>& cros
   }
 }
 
-// Rays along Y, row = layer z, rays step along x: each crossing toggles bit (x, first) of the layer; a prefix XOR
-// over the layer's rows then gives the parity of every voxel.
-void toggleRowAlongY(VoxelGrid& grid, int32_t z, const std::vector<Crossing>& crossings, PassScratch& s) {
+// Rays along Y, row = layer z, rays step along x: each crossing toggles bit (x, first) of a zeroed scratch layer
+// (ny + 2 rows of wpr words, the grid's layout); a prefix XOR over the rows then gives the parity of every voxel.
+void toggleRowAlongY(uint64_t* layer, int32_t ny, int32_t nx, int64_t wpr, const std::vector<Crossing>& crossings,
+                     PassScratch& s) {
   if (crossings.empty()) return;
-  const int32_t ny = grid.ny();
-  const int64_t wpr = grid.wordsPerRow();
   s.crossings += int64_t(crossings.size());
-  s.parity.assign(size_t(grid.nx()), 0);
-  uint64_t* layer = nullptr;
+  s.parity.assign(size_t(nx), 0);
   int32_t lowest = ny;
   for (const Crossing& c : crossings) {
     s.parity[size_t(c.ray)] ^= 1;
     if (c.first >= ny) continue;
-    if (!layer) layer = grid.mutableLayerWords(z);
     const int64_t xp = int64_t(c.ray) + 1;
     layer[(int64_t(c.first) + 1) * wpr + (xp >> 6)] ^= uint64_t(1) << (xp & 63);
     lowest = std::min(lowest, c.first);
   }
   for (uint8_t p : s.parity) s.odd_rays += p;
-  if (!layer) return;
-  for (int32_t y = std::max(lowest, 0) + 1; y < ny; ++y) {
+  for (int32_t y = lowest + 1; y < ny; ++y) {
     uint64_t* row = layer + (int64_t(y) + 1) * wpr;
     const uint64_t* prev = row - wpr;
     for (int64_t w = 0; w < wpr; ++w) row[w] ^= prev[w];
@@ -445,11 +467,11 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
 
   // Refuse before allocating anything large.
   const uint64_t grid_bytes = estimateGridBytes(dims);
-  const uint64_t need = grid_bytes * uint64_t(vote ? 3 : 1);
+  const uint64_t need = grid_bytes * uint64_t(gridsFor(result.mode_used));
   if (need > plan.limit_bytes) {
     std::string msg = "a " + dimsText(dims) + " grid (resolution " + std::to_string(plan.placement.resolution) +
                       ") needs about " + formatBytes(need);
-    if (vote) msg += " (three grids of " + formatBytes(grid_bytes) + " in vote mode)";
+    if (vote) msg += " (two grids of " + formatBytes(grid_bytes) + " in vote mode: the voxels and the disputed mask)";
     msg += ", more than the memory limit of " + formatBytes(plan.limit_bytes);
     msg += params.memory_limit_bytes > 0 ? " (as set)" : " (80% of physical memory)";
     msg += "; use a lower resolution";
@@ -490,7 +512,8 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongX, threads);
       std::vector<PassScratch> scratch(static_cast<size_t>(threads));
       const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t z, const auto& crossings) {
-        fillRowAlongX(grid, z, crossings, rule, scratch[size_t(t)]);
+        fillRowAlongX(dims.ny, dims.nx, crossings, rule, scratch[size_t(t)],
+                      [&](int32_t y, int64_t x0, int64_t x1) { grid.fillRun(y, z, x0, x1); });
       });
       if (!ok) return failure();
       const PassStats stats = sumStats(scratch, caster);
@@ -506,60 +529,67 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       }
       result.grid = std::move(grid);
     } else {
-      // Three parity grids in the main grid's layout, then a per-word majority.
-      VoxelGrid gx(dims, frame), gy(dims, frame);
+      // Parity along Z first, into a full grid (its rays write a row of every layer). Then, layer by layer, parity
+      // along X and along Y into two cache-sized scratch layers, and the per-word majority of the three written
+      // back into the Z grid's layer; the voxels where the axes disagree go into a mask allocated where needed.
+      // Peak: the Z grid plus the mask.
+      VoxelGrid grid(dims, frame), mask(dims, frame);
       std::vector<int64_t> odd(3, 0);
       {
-        const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongX, threads);
-        std::vector<PassScratch> scratch(static_cast<size_t>(threads));
-        const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t z, const auto& crossings) {
-          fillRowAlongX(gx, z, crossings, Rule::kParity, scratch[size_t(t)]);
-        });
-        if (!ok) return failure();
-        odd[0] = sumStats(scratch, caster).odd_rays;
-      }
-      {
-        const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongY, threads);
-        std::vector<PassScratch> scratch(static_cast<size_t>(threads));
-        const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t z, const auto& crossings) {
-          toggleRowAlongY(gy, z, crossings, scratch[size_t(t)]);
-        });
-        if (!ok) return failure();
-        odd[1] = sumStats(scratch, caster).odd_rays;
-      }
-      VoxelGrid gz(dims, frame);
-      {
         std::vector<uint64_t*> layers(static_cast<size_t>(dims.nz));
-        forLayers(dims.nz, threads, [&](int, int32_t z) { layers[size_t(z)] = gz.mutableLayerWords(z); });
+        forLayers(dims.nz, threads, [&](int, int32_t z) { layers[size_t(z)] = grid.mutableLayerWords(z); });
         const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongZ, threads);
         std::vector<PassScratch> scratch(static_cast<size_t>(threads));
-        const int64_t wpr = gz.wordsPerRow();
+        const int64_t wpr = grid.wordsPerRow();
         const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t y, const auto& crossings) {
           toggleRowAlongZ(layers, wpr, dims.nz, dims.nx, y, crossings, scratch[size_t(t)]);
         });
         if (!ok) return failure();
         odd[2] = sumStats(scratch, caster).odd_rays;
       }
-      // Majority of three per voxel into gx; voxels where the axes disagree into gy (reused as the mask).
-      std::vector<int64_t> disputed(size_t(threads), 0);
-      forLayers(dims.nz, threads, [&](int t, int32_t z) {
-        if (!gx.layerAllocated(z) && !gy.layerAllocated(z) && !gz.layerAllocated(z)) return;
-        const uint64_t* c = gz.layerWords(z);
-        uint64_t* a = gx.mutableLayerWords(z);
-        uint64_t* b = gy.mutableLayerWords(z);
-        const int64_t n = gx.wordsPerLayer();
-        int64_t count = 0;
-        for (int64_t w = 0; w < n; ++w) {
-          const uint64_t x = a[w], y = b[w], zz = c[w];
-          a[w] = (x & y) | (zz & (x | y));
-          b[w] = (x ^ y) | (x ^ zz);
-          count += std::popcount(b[w]);
-        }
-        disputed[size_t(t)] += count;
-      });
-      gz = VoxelGrid();
-      gx.releaseEmptyLayers();
-      gy.releaseEmptyLayers();
+      std::vector<int64_t> disputed(static_cast<size_t>(threads), 0);
+      {
+        const RayCaster along_x(mesh, plan.placement, voxelize_detail::kRaysAlongX, threads);
+        const RayCaster along_y(mesh, plan.placement, voxelize_detail::kRaysAlongY, threads);
+        std::vector<PassScratch> sx(static_cast<size_t>(threads)), sy(static_cast<size_t>(threads));
+        const int64_t wpr = grid.wordsPerRow(), wpl = grid.wordsPerLayer();
+        const bool ok = runSlabs(dims.nz, threads, gate, out_of_memory, [&](int t, int32_t z0, int32_t z1) {
+          std::vector<Crossing> cx, cy;
+          std::vector<uint64_t> bx(static_cast<size_t>(wpl), 0), by(static_cast<size_t>(wpl), 0);
+          RayCaster::RowSweep sweep_x(along_x, z0), sweep_y(along_y, z0);
+          for (int32_t z = z0; z < z1 && !gate.cancelled(); ++z) {
+            cx.clear();
+            cy.clear();
+            sweep_x.next(cx);
+            sweep_y.next(cy);
+            fillRowAlongX(dims.ny, dims.nx, cx, Rule::kParity, sx[size_t(t)], [&](int32_t y, int64_t x0, int64_t x1) {
+              fillBits(bx.data() + (int64_t(y) + 1) * wpr, dims.nx, x0, x1);
+            });
+            toggleRowAlongY(by.data(), dims.ny, dims.nx, wpr, cy, sy[size_t(t)]);
+            uint64_t* c = grid.mutableLayerWords(z);
+            uint64_t* m = nullptr;
+            int64_t count = 0;
+            for (int64_t w = 0; w < wpl; ++w) {
+              const uint64_t a = bx[size_t(w)], b = by[size_t(w)], zz = c[w];
+              c[w] = (a & b) | (zz & (a | b));
+              const uint64_t d = (a ^ b) | (a ^ zz);
+              if (d != 0) {
+                if (!m) m = mask.mutableLayerWords(z);
+                m[w] = d;
+                count += std::popcount(d);
+              }
+              bx[size_t(w)] = 0;
+              by[size_t(w)] = 0;
+            }
+            disputed[size_t(t)] += count;
+            gate.advance(2);  // two rows of rays (X and Y) per layer
+          }
+        });
+        if (!ok) return failure();
+        odd[0] = sumStats(sx, along_x).odd_rays;
+        odd[1] = sumStats(sy, along_y).odd_rays;
+      }
+      grid.releaseEmptyLayers();
       for (int64_t d : disputed) result.disputed_count += d;
       const char* axes[3] = {"X", "Y", "Z"};
       std::string odd_text;
@@ -576,8 +606,8 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
                                   plural(result.disputed_count, "voxel") +
                                   " (filled by majority; see the disputed mask)");
       }
-      result.grid = std::move(gx);
-      result.disputed = std::move(gy);
+      result.grid = std::move(grid);
+      result.disputed = std::move(mask);
     }
     if (params.remove_strays) result.strays_removed = removeStrayVoxels(result.grid, threads);
   } catch (const std::bad_alloc&) {

@@ -4,9 +4,9 @@
 // reproducible grids that match ../shared/reference voxel for voxel (docs/accuracy.md). No tolerance anywhere: the
 // result depends only on the float32 vertices and the grid, and is identical for any number of threads.
 //
-// Cost: O(T + R^2 + crossings) time for the rays plus writing the grid (word operations); vote mode three times
-// that. Memory: the grid (estimateGridBytes, layers allocated only where the model is), three grids at the peak in
-// vote mode, plus about 56 bytes per triangle while voxelizing.
+// Cost: O(T + R^2 + crossings) time for the rays plus writing the grid (word operations); vote mode casts three
+// ray families. Memory: the grid (estimateGridBytes, layers allocated only where the model is); in vote mode the
+// whole grid plus the disputed mask (up to a second grid); plus about 56 bytes per triangle and ray family.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -62,8 +62,8 @@ struct VoxelizeResult {
 // Grid placement and memory estimate for these parameters, without voxelizing (the GUI shows it before starting).
 struct VoxelizePlan {
   GridPlacement placement;
-  // Estimated peak bytes for the grid(s): three grids in vote mode, and for kAuto too (its worst case: the plan does
-  // not see the mesh's topology; voxelizeSolid checks the mode it resolves to).
+  // Estimated peak bytes for the grid(s): two grids in vote mode (the voxels and the disputed mask), and for kAuto
+  // too (its worst case: the plan does not see the mesh's topology; voxelizeSolid checks the mode it resolves to).
   uint64_t bytes = 0;
   uint64_t limit_bytes = 0;  // the limit in force
 };
