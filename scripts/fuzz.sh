@@ -18,9 +18,9 @@ seed() {  # seed <target> <files...>
   for f in "$@"; do [[ -f $f ]] && cp -f "$f" "$dir/"; done
   return 0
 }
-seed stl models/*.stl tests/data/malformed/*.stl $shared/meshes/two_disjoint_cubes.stl $shared/meshes/cube_axis_aligned.stl
-seed binvox $shared/reference/*_r64.binvox tests/data/malformed/*.binvox tests/data/*.binvox
-seed vxm tests/data/*.vxm tests/data/malformed/*.vxm
+seed stl models/*.stl tests/data/malformed/*.stl tests/data/quirks/*.stl $shared/meshes/two_disjoint_cubes.stl $shared/meshes/cube_axis_aligned.stl
+seed binvox $shared/reference/*_r64.binvox tests/data/malformed/*.binvox tests/data/quirks/*.binvox tests/data/*.binvox
+seed vxm tests/data/*.vxm tests/data/malformed/*.vxm tests/data/quirks/*.vxm
 
 status=0
 for t in stl vxm binvox; do

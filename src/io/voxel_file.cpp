@@ -39,7 +39,11 @@ std::string dimsText(const Dims& d) {
 
 std::string gib(uint64_t bytes) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f GiB", double(bytes) / double(uint64_t(1) << 30));
+  if (bytes >= (uint64_t(1) << 30)) {
+    std::snprintf(buf, sizeof buf, "%.1f GiB", double(bytes) / double(uint64_t(1) << 30));
+  } else {
+    std::snprintf(buf, sizeof buf, "%.1f MiB", double(bytes) / double(uint64_t(1) << 20));
+  }
   return buf;
 }
 
@@ -62,14 +66,14 @@ Status checkDims(const Dims& d, const std::string& name) {
 
 // Memory for `layers` allocated Z layers of a grid with dims d, compared with the machine's memory.
 // `extra` is working memory the decoder needs besides the grid.
-Status checkLayerMemory(const Dims& d, int64_t layers, const std::string& name, uint64_t extra = 0) {
+Status checkLayerMemory(const Dims& d, int64_t layers, const std::string& name, uint64_t limit, uint64_t extra = 0) {
   const Dims one{d.nx, d.ny, 1};
   const uint64_t layer_bytes = estimateGridBytes(one) - estimateGridBytes(Dims{d.nx, d.ny, 0});
   const uint64_t need = layer_bytes * uint64_t(layers + 1) + extra;  // + the shared zero layer
-  const uint64_t have = physicalMemoryBytes();
+  const uint64_t have = limit > 0 ? limit : physicalMemoryBytes();
   if (need > have) {
     return makeError(ErrorCode::kLimit, name + ": grid " + dimsText(d) + " with " + std::to_string(layers) +
-                                            " occupied layers needs " + gib(need) + " of memory; this machine has " +
+                                            " occupied layers needs " + gib(need) + " of memory; the limit is " +
                                             gib(have));
   }
   return Ok{};
@@ -304,7 +308,7 @@ std::vector<uint8_t> encodeVxm(const VoxelGrid& grid) {
   return std::move(w.bytes);
 }
 
-Result<VoxelGrid> decodeVxm(std::span<const uint8_t> bytes, const std::string& name) {
+Result<VoxelGrid> decodeVxm(std::span<const uint8_t> bytes, const std::string& name, uint64_t memory_limit_bytes) {
   const uint8_t* b = bytes.data();
   const size_t size = bytes.size();
   if (size < sizeof kVxmMagic || std::memcmp(b, kVxmMagic, sizeof kVxmMagic) != 0) {
@@ -429,7 +433,7 @@ Result<VoxelGrid> decodeVxm(std::span<const uint8_t> bytes, const std::string& n
       return bodyError("header says " + std::to_string(h.runs) + " runs and " + std::to_string(h.filled) +
                        " filled voxels, body has " + std::to_string(runs) + " and " + std::to_string(filled));
     }
-    if (Status s = checkLayerMemory(h.dims, layers, name); !s.ok()) return s.error();
+    if (Status s = checkLayerMemory(h.dims, layers, name, memory_limit_bytes); !s.ok()) return s.error();
   }
 
   // Pass 2: fill.
@@ -613,7 +617,7 @@ std::vector<uint8_t> encodeBinvox(const VoxelGrid& grid) {
   return out;
 }
 
-Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string& name) {
+Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string& name, uint64_t memory_limit_bytes) {
   const char* text = reinterpret_cast<const char*>(bytes.data());
   const size_t size = bytes.size();
   size_t pos = 0;
@@ -725,7 +729,8 @@ Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string
                                               (data_bytes % 2 ? " and end with half a pair" : ""));
     }
     const int64_t layers = std::count(layer_used.begin(), layer_used.end(), uint8_t(1));
-    if (Status s = checkLayerMemory(dims, layers, name, ColumnBlocks::bytesFor(dims, layers)); !s.ok()) {
+    if (Status s = checkLayerMemory(dims, layers, name, memory_limit_bytes, ColumnBlocks::bytesFor(dims, layers));
+        !s.ok()) {
       return s.error();
     }
   }

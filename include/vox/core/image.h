@@ -1,5 +1,6 @@
 #pragma once
 // Plain 2D images produced by analysis (sections, X-ray maps) and the renderer; row 0 is the top row.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 

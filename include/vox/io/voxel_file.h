@@ -16,7 +16,8 @@ namespace vox::io {
 // are refused with a message saying which.
 inline constexpr uint32_t kVxmVersion = 1;
 std::vector<uint8_t> encodeVxm(const VoxelGrid& grid);
-Result<VoxelGrid> decodeVxm(std::span<const uint8_t> bytes, const std::string& name);
+// memory_limit_bytes: refuse (kLimit) a file whose grid would need more; 0 means the machine's physical memory.
+Result<VoxelGrid> decodeVxm(std::span<const uint8_t> bytes, const std::string& name, uint64_t memory_limit_bytes = 0);
 Status saveVxm(const VoxelGrid& grid, const std::filesystem::path& path);
 Result<VoxelGrid> loadVxm(const std::filesystem::path& path);
 
@@ -26,7 +27,8 @@ Result<VoxelGrid> loadVxm(const std::filesystem::path& path);
 // A non-cubic "dim d w h" reads as nx = d, ny = w, nz = h (binvox's read_binvox.cc), voxel_size = scale / max.
 // Only "#binvox 1" is read. frame.source is the file name.
 std::vector<uint8_t> encodeBinvox(const VoxelGrid& grid);
-Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string& name);
+Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string& name,
+                               uint64_t memory_limit_bytes = 0);
 Status saveBinvox(const VoxelGrid& grid, const std::filesystem::path& path);
 Result<VoxelGrid> loadBinvox(const std::filesystem::path& path);
 
