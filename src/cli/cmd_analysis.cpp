@@ -19,10 +19,10 @@ struct Common {
   MeshOptions mesh;
 };
 
-void addCommon(CLI::App& sub, Common& c) {
+void addCommon(CLI::App& sub, Common& c, const std::string& mode_names = "--mode,--fill-mode") {
   sub.add_option("FILE", c.file, "Voxel file (.vxm, .binvox) or mesh (.stl, voxelized with --res)")->required();
   sub.add_flag("--json", c.json, "Print one JSON object on stdout");
-  addMeshOptions(sub, c.mesh);
+  addMeshOptions(sub, c.mesh, mode_names);
 }
 
 CLI::Validator axisCheck() { return CLI::IsMember({"x", "y", "z"}); }
@@ -84,9 +84,8 @@ int runPeel(const PeelOptions& o) {
   d["remaining"] = r->remaining_count;
   d["core_voxels"] = r->core_voxels;
   if (!o.out.empty()) d["output"] = o.out;
-  out.say("peeled " + std::to_string(r->removed_per_layer.size()) + " layers; " +
-          std::to_string(r->remaining_count) + " voxels remain; last layer (core) " +
-          std::to_string(r->core_voxels) + " voxels");
+  out.say("peeled " + std::to_string(r->removed_per_layer.size()) + " layers; " + std::to_string(r->remaining_count) +
+          " voxels remain; last layer (core) " + std::to_string(r->core_voxels) + " voxels");
   return out.finish();
 }
 
@@ -159,8 +158,8 @@ int runMass(const MassOptions& o) {
             std::to_string(m.inertia[1][r]) + " " + std::to_string(m.inertia[2][r]));
   }
   out.say("bbox     " + std::to_string(m.bbox.min.x) + " " + std::to_string(m.bbox.min.y) + " " +
-          std::to_string(m.bbox.min.z) + "  to  " + std::to_string(m.bbox.max.x) + " " +
-          std::to_string(m.bbox.max.y) + " " + std::to_string(m.bbox.max.z));
+          std::to_string(m.bbox.min.z) + "  to  " + std::to_string(m.bbox.max.x) + " " + std::to_string(m.bbox.max.y) +
+          " " + std::to_string(m.bbox.max.z));
   return out.finish();
 }
 
@@ -179,7 +178,8 @@ void addSectionCommand(CLI::App& sub, CommandContext& ctx) {
 void addPeelCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<PeelOptions>();
   addCommon(sub, o->c);
-  auto* layers = sub.add_option("--layers", o->layers, "Number of skin layers to remove")->check(CLI::NonNegativeNumber);
+  auto* layers =
+      sub.add_option("--layers", o->layers, "Number of skin layers to remove")->check(CLI::NonNegativeNumber);
   auto* all = sub.add_flag("--all", o->all, "Peel until nothing is left (reports the core)");
   layers->excludes(all);
   sub.add_option("-o,--output", o->out, "Write the remaining voxels to this voxel file");
@@ -195,7 +195,7 @@ void addPeelCommand(CLI::App& sub, CommandContext& ctx) {
 
 void addXrayCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<XrayOptions>();
-  addCommon(sub, o->c);
+  addCommon(sub, o->c, "--fill-mode");  // --mode is the X-ray mode here (SPEC section 5)
   sub.add_option("--axis", o->axis, "Ray direction: x, y or z")->required()->check(axisCheck());
   sub.add_option("--mode", o->mode, "Per ray: min, max or total thickness")
       ->required()

@@ -47,14 +47,16 @@ int runInfo(const InfoOptions& o) {
     out.say(o.file + ":");
     if (model->from_mesh) {
       out.say("  mesh        " + std::to_string(model->triangles) + " triangles, " +
-              (model->topology.watertight() ? std::string("watertight")
-                                            : "not watertight (" + std::to_string(model->topology.boundary_edges) +
-                                                  " boundary, " + std::to_string(model->topology.nonmanifold_edges) +
-                                                  " non-manifold edges)"));
+              (model->topology.watertight()
+                   ? std::string("watertight")
+                   : "not watertight (" + std::to_string(model->topology.boundary_edges) + " boundary, " +
+                         std::to_string(model->topology.nonmanifold_edges) + " non-manifold edges)"));
     }
-    out.say("  dims        " + std::to_string(g.nx()) + " x " + std::to_string(g.ny()) + " x " + std::to_string(g.nz()));
+    out.say("  dims        " + std::to_string(g.nx()) + " x " + std::to_string(g.ny()) + " x " +
+            std::to_string(g.nz()));
     out.say("  voxel size  " + std::to_string(h) + " " + g.frame().units);
-    out.say("  filled      " + std::to_string(filled) + " voxels, volume " + std::to_string(double(filled) * h * h * h));
+    out.say("  filled      " + std::to_string(filled) + " voxels, volume " +
+            std::to_string(double(filled) * h * h * h));
     out.say("  surface     " + std::to_string(surface) + " voxels");
     out.say("  memory      " + std::to_string(g.memoryBytes() >> 10) + " KiB");
   }

@@ -17,6 +17,7 @@ const std::vector<Command>& commands() {
       {"peel", "Remove skin layers (one, N, or all down to the core)", addPeelCommand},
       {"xray", "X-ray thickness map (min, max or total material per ray) as PNG and CSV", addXrayCommand},
       {"mass", "Volume, centroid, inertia tensor and bounding box", addMassCommand},
+      {"render", "Render the surface voxels as shaded points to a PNG (headless)", addRenderCommand},
       {"convert", "Convert between voxel formats (.vxm, .binvox)", addConvertCommand},
   };
   return table;
@@ -29,13 +30,15 @@ const Command* findCommand(const std::string& name) {
 }
 
 int runCommandLine(int argc, char** argv) {
-  CLI::App app{"voxmod: voxel solid modeler. With no subcommand, or with a mesh or voxel file, it opens the "
-               "modeler window; with a subcommand it works headless.",
-               "voxmod"};
+  CLI::App app{
+      "voxmod: voxel solid modeler. With no subcommand, or with a mesh or voxel file, it opens the "
+      "modeler window; with a subcommand it works headless.",
+      "voxmod"};
   app.set_version_flag("--version", "voxmod 0.1.0");
   app.require_subcommand(1);
-  app.footer("Run 'voxmod SUBCOMMAND --help' for a subcommand's options. Exit codes: 0 ok, 1 usage, "
-             "2 input or output error, 3 no usable OpenGL (render).");
+  app.footer(
+      "Run 'voxmod SUBCOMMAND --help' for a subcommand's options. Exit codes: 0 ok, 1 usage, "
+      "2 input or output error, 3 no usable OpenGL (render).");
   CommandContext ctx;
   for (const Command& c : commands()) {
     CLI::App* sub = app.add_subcommand(c.name, c.summary);

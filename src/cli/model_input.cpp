@@ -13,13 +13,13 @@
 
 namespace vox::cli {
 
-void addMeshOptions(CLI::App& sub, MeshOptions& options) {
+void addMeshOptions(CLI::App& sub, MeshOptions& options, const std::string& mode_names) {
   auto* res = sub.add_option("--res", options.params.resolution,
                              "For a mesh FILE: voxels along the longest axis (1-4096, default 200)");
   auto* size = sub.add_option("--voxel-size", options.params.voxel_size,
                               "For a mesh FILE: voxel size in model units (instead of --res)");
   res->excludes(size);
-  sub.add_option("--mode", options.mode_text, "For a mesh FILE: parity|nonzero|vote|auto (default auto)")
+  sub.add_option(mode_names, options.mode_text, "For a mesh FILE: parity|nonzero|vote|auto (default auto)")
       ->check(CLI::IsMember({"parity", "nonzero", "vote", "auto"}));
   sub.add_option("--threads", options.params.threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(0, 1024));

@@ -22,15 +22,16 @@ struct MeshOptions {
   int64_t memory_limit_mib = 0;
 };
 
-// Adds --res, --voxel-size, --mode, --threads, --memory-limit to a subcommand.
-void addMeshOptions(CLI::App& sub, MeshOptions& options);
+// Adds --res, --voxel-size, --mode (alias --fill-mode), --threads, --memory-limit to a subcommand. Subcommands
+// whose own --mode means something else (xray) pass mode_names = "--fill-mode".
+void addMeshOptions(CLI::App& sub, MeshOptions& options, const std::string& mode_names = "--mode,--fill-mode");
 
 struct LoadedModel {
   VoxelGrid grid;
   bool from_mesh = false;
-  int64_t triangles = 0;         // when from_mesh
-  MeshTopology topology;         // when from_mesh
-  std::string mode_used;         // when from_mesh
+  int64_t triangles = 0;  // when from_mesh
+  MeshTopology topology;  // when from_mesh
+  std::string mode_used;  // when from_mesh
   double load_s = 0.0, voxelize_s = 0.0;
 };
 

@@ -17,9 +17,12 @@ void Output::warn(const std::string& line) {
 
 int exitCodeFor(const Error& e) {
   switch (e.code) {
-    case ErrorCode::kInvalidArgument: return kExitUsage;
-    case ErrorCode::kNoOpenGL: return kExitNoGL;
-    default: return kExitIo;
+    case ErrorCode::kInvalidArgument:
+      return kExitUsage;
+    case ErrorCode::kNoOpenGL:
+      return kExitNoGL;
+    default:
+      return kExitIo;
   }
 }
 
