@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <random>
@@ -59,6 +60,7 @@ RunResult runVoxmod(const std::vector<std::string>& args) {
   TempDir tmp;
   const auto out_path = tmp / "stdout", err_path = tmp / "stderr";
   RunResult r;
+  std::fflush(nullptr);  // the child must not inherit (and print again) our buffered output
   const pid_t pid = fork();
   if (pid == 0) {
     std::vector<char*> argv;
