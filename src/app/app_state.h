@@ -84,7 +84,8 @@ inline constexpr int kPanelCount = 5;
 const char* panelName(Panel p);  // "model", "section", ...
 
 struct ViewParams {
-  render::Camera camera;
+  // Looking down on the XY plane from the +Z side, turned a little so that three faces of a box show.
+  render::Camera camera{.yaw_deg = 30.0, .pitch_deg = 25.0};
   bool fit_pending = true;  // refit the camera to the model on the next draw
   bool lit = true;          // lit table, or the thesis's classic table
   bool round_points = false;
@@ -184,7 +185,9 @@ struct Viewport {
   bool dirty = true;                    // draw again on the next frame
   std::vector<double> drawn_signature;  // what the framebuffer shows (see viewport.cpp)
   bool interacting = false;             // the mouse is dragging the view or a slider: coarse points
-  bool was_coarse = false;              // the last image used coarse points (redraw sharp when the drag ends)
+  bool was_coarse = false;
+  double aspect = 0.0;  // width / height the camera was last used with              // the last image used coarse
+                        // points (redraw sharp when the drag ends)
   render::DrawStats stats;
   double draw_ms = 0.0;
   float x = 0, y = 0, width = 0, height = 0;  // where the view sits in the window, pixels
@@ -257,6 +260,8 @@ struct AppState {
   std::string section_error;
   Texture section_texture;
   XrayKey xray_texture_key;
+  XrayKey xray_probe_key;  // the figure sizes at scales 1 and 2 (for the layout) were measured for this X-ray
+  int32_t xray_probe_size[4] = {0, 0, 0, 0};
   Texture xray_texture;
   int32_t xray_map_x = -1, xray_map_y = -1;  // the thickness map inside the rendered figure (-1: unknown)
   std::optional<render::Box3> model_bounds;

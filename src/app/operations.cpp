@@ -272,7 +272,10 @@ bool exportXrayPng(AppState& state, const std::filesystem::path& path) {
     reportError(state, "there is no X-ray image to export (open the X-ray panel first)", path);
     return false;
   }
-  if (Status s = io::savePng(renderXray(*x, state.xray.image_scale), path); !s) {
+  // Independent of the window: about 512 pixels across the longer side of the map.
+  const int32_t longest = std::max({x->thickness.width, x->thickness.height, 1});
+  const int32_t scale = std::clamp((512 + longest - 1) / longest, 1, 8);
+  if (Status s = io::savePng(renderXray(*x, scale), path); !s) {
     reportError(state, describe(s.error(), path), path);
     return false;
   }

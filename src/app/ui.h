@@ -23,7 +23,12 @@ std::string formatLength(double value, const std::string& units);
 void heading(const char* title);
 // A "(?)" marker whose tooltip explains a control.
 void helpMarker(const char* text);
+// A two-column table of facts: a fixed label column and a value column that wraps. Call EndTable() when it
+// returns true.
+bool beginFactTable(const char* id, float label_width = 125.0f);
 // Label on the left, value on the right in a two-column table row.
 void tableRow(const char* label, const std::string& value);
+// Wrapped text in a colour (warnings, errors).
+void wrappedColoured(const ImVec4& colour, const std::string& text);
 
 }  // namespace vox::app

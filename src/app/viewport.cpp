@@ -214,7 +214,17 @@ void drawViewport(AppState& state) {
   vp.height = float(h);
 
   syncRenderers(state);
-  fitIfPending(state, double(w) / double(h));
+  const double aspect = double(w) / double(h);
+  if (vp.aspect > 0.0 && aspect != vp.aspect && state.model_bounds) {
+    // The view changed shape (a panel with an image opened or closed, or the window was resized): keep the zoom
+    // relative to "fit", so the model stays as completely in view as it was.
+    render::Camera before = state.view.camera, after = state.view.camera;
+    before.fitToBox(*state.model_bounds, vp.aspect);
+    after.fitToBox(*state.model_bounds, aspect);
+    state.view.camera.distance *= after.distance / before.distance;
+  }
+  vp.aspect = aspect;
+  fitIfPending(state, aspect);
 
   // Mouse: an invisible button over the whole view takes the drags, so they never reach the panels below it.
   ImGui::InvisibleButton(
@@ -239,7 +249,7 @@ void drawViewport(AppState& state) {
     if (io.MouseWheel != 0.0f) state.view.camera.zoom(std::pow(kZoomPerWheelStep, double(io.MouseWheel)));
     if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) state.view.fit_pending = true;
   }
-  fitIfPending(state, double(w) / double(h));
+  fitIfPending(state, aspect);
   vp.interacting = vp.interacting || dragging;
   const bool coarse = state.view.lod && vp.interacting;
 

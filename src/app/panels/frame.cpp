@@ -59,6 +59,64 @@ void drawSidebar(AppState& state, ImVec2 pos, ImVec2 size) {
   ImGui::End();
 }
 
+// How the main area is shared between the 3D view and the 2D image of the Section and X-ray panels: beside or
+// below the view, whichever shows the image larger, with the image taking the room it can use (35-60%).
+struct ImageLayout {
+  ImVec2 view;
+  ImVec2 image{0.0f, 0.0f};  // zero: no image
+  ImVec2 image_offset{0.0f, 0.0f};
+};
+
+// Magnification of an image made of a fixed part (legend, labels) and a part that scales (the voxels), in an area.
+// Whole numbers above 1, so every voxel covers the same number of pixels.
+float fitScale(ImVec2 fixed, ImVec2 scalable, ImVec2 area) {
+  const float s = std::min((area.x - fixed.x) / scalable.x, (area.y - fixed.y) / scalable.y);
+  return s >= 1.0f ? std::floor(s) : std::max(s, 0.05f);
+}
+
+ImageLayout layoutImage(AppState& state, float w, float h) {
+  ImageLayout l;
+  l.view = ImVec2(w, h);
+  if (state.model.empty() || (state.panel != Panel::kSection && state.panel != Panel::kXray)) return l;
+  const float text = 3.0f * ImGui::GetTextLineHeightWithSpacing();  // title and read-out lines around the image
+  constexpr float kMost = 0.6f, kLeast = 0.35f;
+  if (state.panel == Panel::kXray) {
+    const XrayFigure f = xrayFigureSize(state);
+    if (f.w1 == 0) return l;  // not computed yet: the whole area for the 3D view
+    const ImVec2 margin(16.0f, text);
+    const int32_t side = f.bestScale(ImVec2(kMost * w - margin.x, h - margin.y));
+    const int32_t stacked = f.bestScale(ImVec2(w - margin.x, kMost * h - margin.y));
+    if (stacked >= side) {
+      const float ih = std::clamp(f.sizeAt(stacked).y + margin.y, kLeast * h, kMost * h);
+      l.image = ImVec2(w, std::floor(ih));
+      l.view = ImVec2(w, h - l.image.y);
+      l.image_offset = ImVec2(0.0f, l.view.y);
+    } else {
+      const float iw = std::clamp(f.sizeAt(side).x + margin.x, kLeast * w, kMost * w);
+      l.image = ImVec2(std::floor(iw), h);
+      l.view = ImVec2(w - l.image.x, h);
+      l.image_offset = ImVec2(l.view.x, 0.0f);
+    }
+    return l;
+  }
+  ImVec2 fixed(40.0f, text + 16.0f), scalable(1.0f, 1.0f);
+  if (const Section* s = currentSection(state)) scalable = ImVec2(float(s->mask.width), float(s->mask.height));
+  const float side = fitScale(fixed, scalable, ImVec2(kMost * w, h));
+  const float stacked = fitScale(fixed, scalable, ImVec2(w, kMost * h));
+  if (stacked >= side) {
+    const float ih = std::clamp(fixed.y + scalable.y * stacked, kLeast * h, kMost * h);
+    l.image = ImVec2(w, std::floor(ih));
+    l.view = ImVec2(w, h - l.image.y);
+    l.image_offset = ImVec2(0.0f, l.view.y);
+  } else {
+    const float iw = std::clamp(fixed.x + scalable.x * side, kLeast * w, kMost * w);
+    l.image = ImVec2(std::floor(iw), h);
+    l.view = ImVec2(w - l.image.x, h);
+    l.image_offset = ImVec2(l.view.x, 0.0f);
+  }
+  return l;
+}
+
 }  // namespace
 
 void drawMainMenu(AppState& state) {
@@ -160,20 +218,19 @@ void drawFrame(AppState& state) {
 
   const float main_x = vp->Pos.x + sidebar_w;
   const float main_w = std::max(1.0f, vp->Size.x - sidebar_w);
-  const bool image_panel = !state.model.empty() && (state.panel == Panel::kSection || state.panel == Panel::kXray);
-  const float view_w = image_panel ? std::floor(main_w * 0.5f) : main_w;
+  const ImageLayout layout = layoutImage(state, main_w, body_h);
 
   ImGui::SetNextWindowPos(ImVec2(main_x, top));
-  ImGui::SetNextWindowSize(ImVec2(view_w, body_h));
+  ImGui::SetNextWindowSize(layout.view);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0.0f, 0.0f));
   ImGui::Begin("##view", nullptr, kFixedWindow | ImGuiWindowFlags_NoScrollWithMouse);
   drawViewport(state);
   ImGui::End();
   ImGui::PopStyleVar();
 
-  if (image_panel) {
-    ImGui::SetNextWindowPos(ImVec2(main_x + view_w, top));
-    ImGui::SetNextWindowSize(ImVec2(main_w - view_w, body_h));
+  if (layout.image.x > 0.0f) {
+    ImGui::SetNextWindowPos(ImVec2(main_x + layout.image_offset.x, top + layout.image_offset.y));
+    ImGui::SetNextWindowSize(layout.image);
     ImGui::Begin("##image", nullptr, kFixedWindow | ImGuiWindowFlags_NoScrollWithMouse);
     if (state.panel == Panel::kSection) {
       drawSectionImage(state);

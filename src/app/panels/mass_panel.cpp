@@ -24,8 +24,9 @@ void drawMassPanel(AppState& state) {
   const std::string units = state.model.frame().units;
   const char* u = units == "model" ? "model units" : units.c_str();
   char buf[160];
-  ImGui::TextDisabled("Unit density; each voxel a solid cube. Lengths in %s.", u);
-  if (ImGui::BeginTable("mass", 2, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
+  wrappedColoured(ImGui::GetStyle().Colors[ImGuiCol_TextDisabled],
+                  std::string("Unit density; each voxel a solid cube. Lengths in ") + u + ".");
+  if (beginFactTable("mass")) {
     tableRow("Filled voxels", groupDigits(m->filled));
     std::snprintf(buf, sizeof buf, "%.6g  (+/- %.3g)", m->volume, m->volume_error_bound);
     tableRow("Volume", buf);

@@ -13,12 +13,11 @@ namespace vox::app {
 namespace {
 
 const ImVec4 kWarningColour{1.0f, 0.78f, 0.3f, 1.0f};
-constexpr ImGuiTableFlags kFactTable = ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg;
 
 void meshSection(const AppState& state) {
   const MeshSource& m = *state.doc.mesh;
   heading("Mesh");
-  if (ImGui::BeginTable("mesh", 2, kFactTable)) {
+  if (beginFactTable("mesh")) {
     tableRow("Triangles", groupDigits(int64_t(m.mesh.triangles.size())) + (m.ascii ? " (ASCII STL)" : " (binary STL)"));
     const MeshTopology& t = m.topology;
     tableRow("Watertight", t.watertight() ? "yes"
@@ -36,14 +35,14 @@ void meshSection(const AppState& state) {
     tableRow("Read in", formatSeconds(m.load_s));
     ImGui::EndTable();
   }
-  for (const std::string& w : m.warnings) ImGui::TextColored(kWarningColour, "%s", w.c_str());
+  for (const std::string& w : m.warnings) wrappedColoured(kWarningColour, w);
 }
 
 void modelSection(AppState& state) {
   const ModelSnapshot& snap = *state.doc.model;
   const VoxelGrid& g = state.model;
   heading("Voxel model");
-  if (ImGui::BeginTable("model", 2, kFactTable)) {
+  if (beginFactTable("model")) {
     tableRow("Dimensions", std::to_string(g.nx()) + " x " + std::to_string(g.ny()) + " x " + std::to_string(g.nz()) +
                                " (" + groupDigits(g.dims().count()) + ")");
     tableRow("Voxel size", formatLength(g.voxelSize(), g.frame().units));
@@ -75,9 +74,9 @@ void modelSection(AppState& state) {
     ImGui::EndTable();
   }
   if (snap.origin) {
-    for (const std::string& w : snap.origin->warnings) ImGui::TextColored(kWarningColour, "%s", w.c_str());
+    for (const std::string& w : snap.origin->warnings) wrappedColoured(kWarningColour, w);
     if (snap.origin->disputed) {
-      ImGui::Text("Disputed voxels: %s", groupDigits(snap.origin->disputed_count).c_str());
+      ImGui::Text("Disputed voxels (vote mode): %s", groupDigits(snap.origin->disputed_count).c_str());
       helpMarker(
           "Vote mode casts rays along X, Y and Z and keeps a voxel when at least two agree. Disputed voxels are where "
           "the three disagreed: usually next to holes in the mesh.");

@@ -108,7 +108,7 @@ void drawSectionPanel(AppState& state) {
   if (section) {
     heading("This section");
     const double h = state.model.voxelSize();
-    if (ImGui::BeginTable("section_facts", 2, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
+    if (beginFactTable("section_facts")) {
       tableRow("Filled voxels", groupDigits(section->filled));
       char area[64];
       std::snprintf(area, sizeof area, "%.5g (voxels x voxel size^2)", double(section->filled) * h * h);

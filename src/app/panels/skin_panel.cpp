@@ -80,13 +80,13 @@ void drawSkinPanel(AppState& state) {
   const std::string units = state.model.frame().units;
 
   heading("Layers");
-  if (ImGui::BeginTable("skin_facts", 2, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
+  if (beginFactTable("skin_facts")) {
     tableRow("Current layer", k == 0 ? "0 (the whole model)"
                                      : std::to_string(k) + " peeled" + (k == layers - 1 ? " (core reached)" : ""));
     tableRow("Layers to the core",
              std::to_string(layers) + " (core depth " + formatLength(double(layers) * h, units) + " in face steps)");
     tableRow("Remaining voxels", groupDigits(total - gone) + " of " + groupDigits(total));
-    if (k > 0 && size_t(k) <= removed.size()) tableRow("Removed by this layer", groupDigits(removed[size_t(k) - 1]));
+    if (k > 0 && size_t(k) <= removed.size()) tableRow("Layer removed", groupDigits(removed[size_t(k) - 1]));
     tableRow("Core voxels", groupDigits(depth->coreVoxels()));
     ImGui::EndTable();
   }

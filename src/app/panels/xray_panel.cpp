@@ -122,6 +122,37 @@ void drawXrayPanel(AppState& state) {
   if (ImGui::Button("Export CSV...")) dispatch(state, ActionId::kExportXrayCsv);
 }
 
+ImVec2 XrayFigure::sizeAt(int32_t scale) const {
+  if (scale <= 1) return ImVec2(float(w1), float(h1));
+  return ImVec2(float(w2 + (scale - 2) * map_width), float(h2 + (scale - 2) * map_height));
+}
+
+int32_t XrayFigure::bestScale(ImVec2 area) const {
+  int32_t best = 1;
+  for (int32_t s = 2; s <= 16; ++s) {
+    const ImVec2 size = sizeAt(s);
+    if (size.x > area.x || size.y > area.y) break;
+    best = s;
+  }
+  return best;
+}
+
+XrayFigure xrayFigureSize(AppState& state) {
+  const XrayResult* x = currentXray(state);
+  if (!x) return {};
+  const XrayKey key{state.model_version, x->axis, x->mode};
+  int32_t* p = state.xray_probe_size;
+  if (!(key == state.xray_probe_key) || p[0] == 0) {
+    const ImageRgb one = renderXray(*x, 1), two = renderXray(*x, 2);
+    state.xray_probe_key = key;
+    p[0] = one.width;
+    p[1] = one.height;
+    p[2] = two.width;
+    p[3] = two.height;
+  }
+  return {p[0], p[1], p[2], p[3], x->thickness.width, x->thickness.height};
+}
+
 void drawXrayImage(AppState& state) {
   const XrayResult* x = currentXray(state);
   if (!x) {
@@ -133,16 +164,13 @@ void drawXrayImage(AppState& state) {
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const XrayKey key{state.model_version, x->axis, x->mode};
 
-  // Largest whole number of pixels per ray that fits, allowing for the legend around the map.
-  if (!(key == state.xray_texture_key) || state.xray_texture.empty()) {
-    const ImageRgb probe = renderXray(*x, 1);
-    const float extra_w = float(probe.width - tw), extra_h = float(probe.height - th);
-    const int32_t fit =
-        int32_t(std::floor(std::min((avail.x - extra_w) / float(tw), (avail.y - readout_h - extra_h) / float(th))));
-    state.xray.image_scale = std::clamp(fit, 1, 16);
-    const ImageRgb img = state.xray.image_scale == 1 ? probe : renderXray(*x, state.xray.image_scale);
-    if (!findMapOrigin(img, tw * state.xray.image_scale, th * state.xray.image_scale, state.xray_map_x,
-                       state.xray_map_y)) {
+  // The largest whole number of pixels per ray whose figure fits (whole numbers keep the rays equal squares and the
+  // legend's pixel font sharp).
+  const int32_t fit_scale = xrayFigureSize(state).bestScale(ImVec2(avail.x, avail.y - readout_h));
+  if (!(key == state.xray_texture_key) || state.xray_texture.empty() || fit_scale != state.xray.image_scale) {
+    state.xray.image_scale = fit_scale;
+    const ImageRgb img = renderXray(*x, fit_scale);
+    if (!findMapOrigin(img, tw * fit_scale, th * fit_scale, state.xray_map_x, state.xray_map_y)) {
       state.xray_map_x = state.xray_map_y = -1;
     }
     state.xray_texture.upload(img);
