@@ -1,0 +1,59 @@
+// A save that runs out of space must fail with the reason, remove its temporary file and leave the previous file
+// intact. Uses a real 64 KiB tmpfs, which needs root (CI runs as root); elsewhere the test skips and says why.
+#include <sys/mount.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+#include "support/test_support.h"
+#include "vox/io/file_util.h"
+#include "vox/io/voxel_file.h"
+
+namespace vox {
+namespace {
+
+class SmallDisk : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = tmp_.path() / "small";
+    std::filesystem::create_directory(dir_);
+    if (::mount("tmpfs", dir_.c_str(), "tmpfs", 0, "size=64k") != 0) {
+      GTEST_SKIP() << "cannot mount a small tmpfs to fill (needs root): " << std::strerror(errno);
+    }
+    mounted_ = true;
+  }
+  void TearDown() override {
+    if (mounted_) ::umount(dir_.c_str());
+  }
+  test::TempDir tmp_;
+  std::filesystem::path dir_;
+  bool mounted_ = false;
+};
+
+TEST_F(SmallDisk, saveThatRunsOutOfSpaceKeepsTheOldFileAndSaysWhy) {
+  const auto target = dir_ / "part.vxm";
+  VoxelGrid small(Dims{8, 8, 8});
+  small.set(1, 2, 3);
+  ASSERT_TRUE(io::saveVxm(small, target).ok());
+  const std::string before = test::readFile(target);
+
+  const std::string big(1 << 20, 'x');  // 1 MiB into a 64 KiB file system
+  auto s = io::writeFileAtomic(target, big);
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.error().code, ErrorCode::kIo);
+  EXPECT_NE(s.error().message.find(target.string()), std::string::npos) << s.error().message;
+  EXPECT_NE(s.error().message.find("No space left on device"), std::string::npos) << s.error().message;
+
+  EXPECT_EQ(test::readFile(target), before);  // the previous file is untouched
+  int entries = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir_)) ++entries;
+  EXPECT_EQ(entries, 1) << "the temporary file was not removed";
+  auto reread = io::loadVxm(target);
+  ASSERT_TRUE(reread.ok()) << reread.error().message;
+  EXPECT_TRUE(reread->get(1, 2, 3));
+}
+
+}  // namespace
+}  // namespace vox
