@@ -18,12 +18,14 @@
 namespace vox::app {
 namespace {
 
-void actionButton(AppState& state, ActionId id, const char* label, float width = 0.0f) {
+void actionButton(AppState& state, ActionId id, const char* label, const char* rect_name, float width) {
   const Action& a = action(id);
   const bool enabled = actionEnabled(state, a);
   if (!enabled) ImGui::BeginDisabled();
   if (ImGui::Button(label, ImVec2(width, 0.0f))) dispatch(state, id);
   if (!enabled) ImGui::EndDisabled();
+  const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
+  state.widget_rects.push_back({rect_name, r0.x, r0.y, r1.x, r1.y});
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
     const std::string sc = shortcutText(a.shortcut);
     ImGui::SetTooltip("%s%s%s%s", a.label, sc.empty() ? "" : " (", sc.c_str(), sc.empty() ? "" : ")");
@@ -45,18 +47,18 @@ void drawSkinPanel(AppState& state) {
       "layer left is the core: the thickest region of the part.");
   ImGui::Spacing();
   const float w = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
-  actionButton(state, ActionId::kPeelOne, "Peel one", w);
+  actionButton(state, ActionId::kPeelOne, "Peel one", "peel_one", w);
   ImGui::SameLine();
-  actionButton(state, ActionId::kPeelBack, "Back one", w);
+  actionButton(state, ActionId::kPeelBack, "Back one", "peel_back", w);
   ImGui::SameLine();
-  actionButton(state, ActionId::kPeelReset, "Reset", w);
-  actionButton(state, ActionId::kPeelN, ("Peel " + std::to_string(state.skin.peel_count)).c_str(), w);
+  actionButton(state, ActionId::kPeelReset, "Reset", "peel_reset", w);
+  actionButton(state, ActionId::kPeelN, ("Peel " + std::to_string(state.skin.peel_count)).c_str(), "peel_n", w);
   ImGui::SameLine();
   ImGui::SetNextItemWidth(w);
   if (ImGui::InputInt("##peel_n", &state.skin.peel_count))
     state.skin.peel_count = std::clamp(state.skin.peel_count, 1, 100000);
   ImGui::SameLine();
-  actionButton(state, ActionId::kPeelCore, "Peel to core", w);
+  actionButton(state, ActionId::kPeelCore, "Peel to core", "peel_core", w);
 
   if (!depth) {
     ImGui::Spacing();
