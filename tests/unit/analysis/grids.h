@@ -64,7 +64,7 @@ inline VoxelGrid randomBoxes(Dims d, int count, uint32_t seed) {
   VoxelGrid g(d);
   std::mt19937 rng(seed);
   for (int i = 0; i < count; ++i) {
-    glm::ivec3 lo, hi;
+    glm::ivec3 lo(0), hi(0);
     for (int a = 0; a < 3; ++a) {
       const int n = a == 0 ? d.nx : (a == 1 ? d.ny : d.nz);
       std::uniform_int_distribution<int> pos(0, n - 1);
