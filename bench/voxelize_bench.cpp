@@ -5,8 +5,10 @@
 //                            every row, parallel over layers like the voxelizer): the least any voxelizer that
 //                            produces this grid can cost.
 // With --voxmod_large, also igea_refined_508k at R = 2048 and 4096 (8.6 GB of bits at 4096: check the memory).
-// Counters: peak_MiB is the peak resident memory of a child process that runs the case once (fork), extra_MiB its
-// growth over the resident memory at the start of the case (meshes already loaded), grid_MiB the result grid.
+// Counters: a child process (fork) runs each case once more, cold (freed heap returned to the system first, as in a
+// command-line run): cold_ms is its wall time, peak_MiB its peak resident memory, extra_MiB the growth over its
+// resident memory at the start (meshes already loaded). grid_MiB is the result grid. The timed iterations run warm:
+// each reuses the pages the previous one freed.
 //
 //   build-vox/bench/voxelize_bench --benchmark_filter='voxelize/armadillo'
 //   build-vox/bench/voxelize_bench --voxmod_large --benchmark_filter='igea.*/(2048|4096)'
@@ -16,6 +18,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -63,8 +66,14 @@ uint64_t procStatus(const char* key) {
   return 0;
 }
 
-// Runs `work` once in a child process and returns {peak resident bytes, resident bytes at the start}.
-std::pair<uint64_t, uint64_t> measurePeak(const std::function<void()>& work) {
+struct ChildRun {
+  uint64_t peak = 0, start = 0;  // resident bytes: peak, and at the start
+  double seconds = 0;            // wall time of the run
+};
+
+// Runs `work` once in a child process, after returning the parent's freed heap to the system: so the run starts
+// cold, as a command-line run does (the timed iterations reuse pages freed by the previous iteration).
+ChildRun measureChild(const std::function<void()>& work) {
   int fds[2];
   if (pipe(fds) != 0) return {0, 0};
   const pid_t pid = fork();
@@ -75,28 +84,31 @@ std::pair<uint64_t, uint64_t> measurePeak(const std::function<void()>& work) {
       std::ofstream reset("/proc/self/clear_refs");
       reset << "5";  // resets VmHWM to the current VmRSS
     }
-    uint64_t r[2];
-    r[1] = procStatus("VmRSS:");
+    ChildRun r;
+    r.start = procStatus("VmRSS:");
+    const auto t0 = std::chrono::steady_clock::now();
     work();
-    r[0] = procStatus("VmHWM:");
-    if (write(fds[1], r, sizeof r) != ssize_t(sizeof r)) _exit(1);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.peak = procStatus("VmHWM:");
+    if (write(fds[1], &r, sizeof r) != ssize_t(sizeof r)) _exit(1);
     _exit(0);
   }
   close(fds[1]);
-  uint64_t r[2] = {0, 0};
-  if (read(fds[0], r, sizeof r) != ssize_t(sizeof r)) r[0] = r[1] = 0;
+  ChildRun r;
+  if (read(fds[0], &r, sizeof r) != ssize_t(sizeof r)) r = ChildRun{};
   close(fds[0]);
   int status = 0;
   waitpid(pid, &status, 0);
-  return {r[0], r[1]};
+  return r;
 }
 
 constexpr double kMiB = 1024.0 * 1024.0;
 
-void setMemoryCounters(benchmark::State& state, const std::function<void()>& work) {
-  const auto [peak, start] = measurePeak(work);
-  state.counters["peak_MiB"] = double(peak) / kMiB;
-  state.counters["extra_MiB"] = double(peak > start ? peak - start : 0) / kMiB;
+void setChildCounters(benchmark::State& state, const std::function<void()>& work) {
+  const ChildRun r = measureChild(work);
+  state.counters["peak_MiB"] = double(r.peak) / kMiB;
+  state.counters["extra_MiB"] = double(r.peak > r.start ? r.peak - r.start : 0) / kMiB;
+  state.counters["cold_ms"] = r.seconds * 1e3;
 }
 
 void loadCase(benchmark::State& state, const std::string& name) {
@@ -139,7 +151,7 @@ void voxelizeCase(benchmark::State& state, const std::string& name, int64_t reso
   state.counters["filled"] = double(filled);
   if (mode == "vote") state.counters["disputed"] = double(disputed);
   state.counters["grid_MiB"] = grid_bytes / kMiB;
-  setMemoryCounters(state, [&] {
+  setChildCounters(state, [&] {
     auto r = vox::voxelizeSolid(stl.mesh, params, {}, &stl.topology);
     benchmark::DoNotOptimize(r);
   });
@@ -177,7 +189,7 @@ void floorCase(benchmark::State& state, const std::string& name, int64_t resolut
     state.ResumeTiming();
   }
   state.counters["voxels"] = double(dims.count());
-  setMemoryCounters(state, [&] {
+  setChildCounters(state, [&] {
     vox::VoxelGrid g = writeFloor(dims);
     benchmark::DoNotOptimize(g.layerWords(0));
   });

@@ -40,6 +40,13 @@ inline int edgeSide(double pv, double pw, double qv, double qw, double v, double
   return 0;
 }
 
+// int32_t(t) clamped to [lo, hi], NaN-safe, without std::floor/ceil (library calls on the x86-64 baseline).
+inline int32_t clampedIndex(double t, int32_t lo, int32_t hi) {
+  if (!(t > double(lo))) return lo;
+  if (!(t < double(hi))) return hi;
+  return int32_t(t);
+}
+
 // Index of the first centre >= value (n when none): estimated from the grid formula, then settled by exact
 // comparisons with the stored centres (non-decreasing), usually one or two.
 int32_t firstAtOrAbove(const std::vector<double>& centres, double origin, double h, double value) {
@@ -64,7 +71,10 @@ std::vector<double> centresAlong(const GridPlacement& placement, int axis) {
 }  // namespace
 
 RayCaster::RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, RayAxes axes, int threads)
-    : axes_(axes), h_(placement.frame.voxel_size), inv_h_(1.0 / placement.frame.voxel_size) {
+    : axes_(axes),
+      h_(placement.frame.voxel_size),
+      inv_h_(1.0 / placement.frame.voxel_size),
+      origin_u_(placement.frame.origin[axes.u]) {
   cu_ = centresAlong(placement, axes.u);
   cv_ = centresAlong(placement, axes.v);
   cw_ = centresAlong(placement, axes.w);
@@ -145,7 +155,7 @@ RayCaster::RowSweep::RowSweep(const RayCaster& caster, int32_t row_begin) : cast
   for (size_t i = 0; i < next_start_; ++i) {
     if (tris[i].row_hi > row_begin) {
       active_.push_back(uint32_t(i));
-      planes_.emplace_back(tris[i]);
+      planes_.emplace_back(tris[i], caster);
     }
   }
 }
@@ -154,15 +164,18 @@ void RayCaster::RowSweep::next(std::vector<Crossing>& out) {
   const auto& tris = caster_.tris_;
   while (next_start_ < tris.size() && tris[next_start_].row_lo <= row_) {
     active_.push_back(uint32_t(next_start_));
-    planes_.emplace_back(tris[next_start_++]);
+    planes_.emplace_back(tris[next_start_++], caster_);
   }
   size_t keep = 0;
   for (size_t k = 0; k < active_.size(); ++k) {
     const Tri& t = tris[active_[k]];
     caster_.rowCrossings(t, planes_[k], row_, out);
     if (t.row_hi > row_ + 1) {
-      active_[keep] = active_[k];
-      planes_[keep++] = planes_[k];
+      if (keep != k) {
+        active_[keep] = active_[k];
+        planes_[keep] = planes_[k];
+      }
+      ++keep;
     }
   }
   active_.resize(keep);
@@ -172,7 +185,7 @@ void RayCaster::RowSweep::next(std::vector<Crossing>& out) {
 
 void RayCaster::rowCrossings(const Tri& t, const Plane& plane, int32_t row, std::vector<Crossing>& out) const {
   const double w = cw_[size_t(row)];
-  const double av = t.p[0][1], aw = t.p[0][2], bv = t.p[1][1], bw = t.p[1][2], cv = t.p[2][1], cw = t.p[2][2];
+  const double av = plane.a[1], aw = plane.a[2], bv = plane.b[1], bw = plane.b[2], cv = plane.c[1], cw = plane.c[2];
   int32_t j0 = t.ray_lo, j1 = t.ray_hi;
   // Rays strictly inside (inner_lo, inner_hi) are certainly crossed; empty unless the section below is computed.
   double inner_lo = 0.0, inner_hi = 0.0;
@@ -184,8 +197,9 @@ void RayCaster::rowCrossings(const Tri& t, const Plane& plane, int32_t row, std:
     // inside, so no tie is possible); only the rays near either end need the exact edge tests. The index
     // conversion below adds one more ray on each side, covering its own rounding.
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    const double edges[3][4] = {{av, aw, bv, bw}, {bv, bw, cv, cw}, {cv, cw, av, aw}};
     for (int k = 0; k < 3; ++k) {
-      const double pv = t.p[k][1], pw = t.p[k][2], qv = t.p[(k + 1) % 3][1], qw = t.p[(k + 1) % 3][2];
+      const double pv = edges[k][0], pw = edges[k][1], qv = edges[k][2], qw = edges[k][3];
       if (pw == qw) {
         if (pw == w) {
           lo = std::min({lo, pv, qv});
@@ -200,17 +214,18 @@ void RayCaster::rowCrossings(const Tri& t, const Plane& plane, int32_t row, std:
       hi = std::max(hi, v);
     }
     if (lo <= hi) {
-      const double scale =
-          std::max({std::abs(av), std::abs(bv), std::abs(cv), std::abs(w), std::abs(aw), std::abs(bw), std::abs(cw)});
-      const double margin = 1e-12 * scale;
-      const double first = std::floor((lo - margin - cv_[0]) * inv_h_);
-      const double last = std::floor((hi + margin - cv_[0]) * inv_h_) + 2.0;
-      j0 = int32_t(std::clamp(first, double(j0), double(j1)));
-      j1 = int32_t(std::clamp(last, double(j0), double(j1)));
+      const double margin = 1e-12 * std::max(plane.vw_scale, std::abs(w));
+      // Ray indices, rounded outwards by a whole ray (truncation instead of floor: one more ray at most).
+      const int32_t first = clampedIndex((lo - margin - cv_[0]) * inv_h_, j0, j1) - 1;
+      const int32_t last = clampedIndex((hi + margin - cv_[0]) * inv_h_, j0, j1) + 2;
+      j0 = std::max(j0, first);
+      j1 = std::min(j1, std::max(j0, last));
       inner_lo = lo + margin;
       inner_hi = hi - margin;
     }
   }
+  PlaneRow plane_row;
+  bool have_row = false;
   for (int32_t j = j0; j < j1; ++j) {
     const double v = cv_[size_t(j)];
     if (!(v > inner_lo && v < inner_hi)) {
@@ -218,11 +233,16 @@ void RayCaster::rowCrossings(const Tri& t, const Plane& plane, int32_t row, std:
       if (edgeSide(bv, bw, cv, cw, v, w) != t.sign) continue;
       if (edgeSide(cv, cw, av, aw, v, w) != t.sign) continue;
     }
-    out.push_back(Crossing{j, firstPast(plane, v, w), t.sign});
+    if (!have_row) {
+      const double rw = w - plane.a[2];
+      plane_row = PlaneRow{plane.n[2] * rw, plane.w_error * std::abs(rw)};
+      have_row = true;
+    }
+    out.push_back(Crossing{j, firstPast(plane, plane_row, v, w), t.sign});
   }
 }
 
-RayCaster::Plane::Plane(const Tri& t) : sign(t.sign) {
+RayCaster::Plane::Plane(const Tri& t, const RayCaster& caster) : sign(t.sign) {
   for (int k = 0; k < 3; ++k) {
     a[k] = t.p[0][k];
     b[k] = t.p[1][k];
@@ -239,8 +259,19 @@ RayCaster::Plane::Plane(const Tri& t) : sign(t.sign) {
     n_error[k] = 8.0 * kUnitRoundoff * (std::abs(p[2 * k]) + std::abs(p[2 * k + 1]));
   }
   reliable = std::isfinite(n[0]) && std::abs(n[0]) > 4.0 * n_error[0];
+  inv_nu = 1.0 / n[0];
+  inv_margin_den = reliable ? 1.0 / (std::abs(n[0]) - n_error[0]) : 0.0;
+  const double u8 = 8.0 * kUnitRoundoff;
+  v_error = n_error[1] + u8 * std::abs(n[1]);
+  w_error = n_error[2] + u8 * std::abs(n[2]);
+  // A triangle in a plane u = const (common in CAD meshes): every ray crosses it at exactly a.u, so the first
+  // centre past it is the first centre >= a.u, the same for every ray.
+  fixed_first = t.p[0][0] == t.p[1][0] && t.p[1][0] == t.p[2][0]
+                    ? firstAtOrAbove(caster.cu_, caster.origin_u_, caster.h_, a[0])
+                    : -1;
   umin = std::min({a[0], b[0], c[0]});
   umax = std::max({a[0], b[0], c[0]});
+  vw_scale = std::max({std::abs(a[1]), std::abs(b[1]), std::abs(c[1]), std::abs(a[2]), std::abs(b[2]), std::abs(c[2])});
   for (int k = 0; k < 3; ++k) {
     const float* from = t.p[k];
     const float* to = t.p[(k + 1) % 3];
@@ -248,23 +279,24 @@ RayCaster::Plane::Plane(const Tri& t) : sign(t.sign) {
   }
 }
 
-int32_t RayCaster::firstPast(const Plane& pl, double v, double w) const {
+int32_t RayCaster::firstPast(const Plane& pl, const PlaneRow& row, double v, double w) const {
+  if (pl.fixed_first >= 0) return pl.fixed_first;
   // The crossing lies at u = x_c = a.u - (n.v (v - a.v) + n.w (w - a.w)) / n.u. Centre i = (u_i + eps, v + eps^3,
   // w + eps^2) is past it iff u_i >= x_c (at u_i == x_c the displacement eps along u puts it past).
   //
-  // Fast path: x_c in double with a forward error bound `margin` (first-order error analysis of the formula, using
-  // the normal's error bounds; the constants are twice what the analysis needs). A centre farther than `margin`
-  // from the estimate is decided by comparing doubles.
-  const double rv = v - pl.a[1], rw = w - pl.a[2];
-  const double num = pl.n[1] * rv + pl.n[2] * rw;
-  double x = pl.a[0] - num / pl.n[0];
+  // Fast path: x_c in double with a forward error bound `margin`: first-order error analysis of the formula, using
+  // the normal's error bounds, with every rounding counted as 8 units (two to four times what the analysis needs)
+  // and a final factor 1.001 for the higher-order terms. A centre farther than `margin` from the estimate is
+  // decided by comparing doubles.
+  const double rv = v - pl.a[1];
+  const double num = pl.n[1] * rv + row.w_term;
+  const double q = num * pl.inv_nu;
+  double x = pl.a[0] - q;
   double margin = std::numeric_limits<double>::infinity();
   if (pl.reliable) {
     const double u8 = 8.0 * kUnitRoundoff;
-    const double num_error = (pl.n_error[1] + u8 * std::abs(pl.n[1])) * std::abs(rv) +
-                             (pl.n_error[2] + u8 * std::abs(pl.n[2])) * std::abs(rw);
-    const double q = std::abs(num / pl.n[0]);
-    const double q_error = (num_error + q * pl.n_error[0]) / (std::abs(pl.n[0]) - pl.n_error[0]) + u8 * q;
+    const double num_error = pl.v_error * std::abs(rv) + row.w_error;
+    const double q_error = (num_error + std::abs(q) * pl.n_error[0]) * pl.inv_margin_den + u8 * std::abs(q);
     margin = (q_error + u8 * std::abs(x)) * 1.001;
     if (!std::isfinite(margin)) margin = std::numeric_limits<double>::infinity();
   }
@@ -277,11 +309,12 @@ int32_t RayCaster::firstPast(const Plane& pl, double v, double w) const {
     const double d = cu_[size_t(i)] - x;
     if (d > margin) return true;
     if (-d > margin) return false;
-    const double p[3] = {cu_[size_t(i)], v, w};
-    return orient3d(pl.a, pl.b, pl.c, p) != pl.sign;
+    return exactPast(pl, i, v, w);
   };
   const int32_t n = length();
-  int32_t i = int32_t(std::clamp(std::ceil((x - cu_[0]) / h_), 0.0, double(n)));
+  // About ceil((x - u_0) / h); the exact tests below correct any error of the estimate.
+  int32_t i = clampedIndex((x - cu_[0]) * inv_h_, 0, n);
+  if (i < n && double(i) < (x - cu_[0]) * inv_h_) ++i;
   if (i < n && !past(i)) {
     do {
       ++i;
@@ -290,6 +323,11 @@ int32_t RayCaster::firstPast(const Plane& pl, double v, double w) const {
     while (i > 0 && past(i - 1)) --i;
   }
   return i;
+}
+
+bool RayCaster::exactPast(const Plane& pl, int32_t i, double v, double w) const {
+  const double p[3] = {cu_[size_t(i)], v, w};
+  return orient3d(pl.a, pl.b, pl.c, p) != pl.sign;
 }
 
 }  // namespace vox::voxelize_detail

@@ -55,13 +55,23 @@ class RayCaster {
   // A triangle's vertices in double and its normal with error bounds, set up once per sweep when it becomes active.
   struct Plane {
     Plane() = default;
-    explicit Plane(const Tri& t);
+    Plane(const Tri& t, const RayCaster& caster);
     double a[3], b[3], c[3];
     double n[3], n_error[3];  // (B - A) x (C - A) in double; |n[k] - exact| <= n_error[k]
     double umin, umax;        // the vertices' u range, which holds every crossing
+    double vw_scale;          // largest |v| or |w| of the vertices (for rounding margins)
     double slope[3];          // dv/dw of each edge (A->B, B->C, C->A) in the (v, w) projection; 0 when horizontal
     bool reliable;            // |n.u| well above its error bound: the estimate's error bound holds
+    double inv_nu;            // 1 / n.u
+    double inv_margin_den;    // 1 / (|n.u| - n_error.u) when reliable
+    double v_error, w_error;  // error bound factors of the n.v and n.w terms of the crossing estimate
+    int32_t fixed_first;      // >= 0: the triangle lies in a plane u = const; every crossing's first voxel past
     int32_t sign;
+  };
+  // Terms of the crossing estimate that depend only on the row (w).
+  struct PlaneRow {
+    double w_term;   // n.w (w - a.w)
+    double w_error;  // its error bound factor times |w - a.w|
   };
 
  public:
@@ -85,11 +95,14 @@ class RayCaster {
 
  private:
   void rowCrossings(const Tri& t, const Plane& plane, int32_t row, std::vector<Crossing>& out) const;
-  int32_t firstPast(const Plane& plane, double v, double w) const;
+  int32_t firstPast(const Plane& plane, const PlaneRow& row, double v, double w) const;
+  // Exact: is centre i of ray (v, w) past the triangle's plane? Out of line: the rare slow path of firstPast.
+  [[gnu::noinline]] bool exactPast(const Plane& plane, int32_t i, double v, double w) const;
 
   RayAxes axes_;
   double h_ = 1.0;
   double inv_h_ = 1.0;
+  double origin_u_ = 0.0;
   std::vector<double> cu_, cv_, cw_;  // voxel centre coordinates along u, v, w (SPEC section 1, exactly so)
   std::vector<Tri> tris_;             // sorted by row_lo
 };
