@@ -192,7 +192,9 @@ int runGui(int argc, char** argv) {
   if (!parseOptions(argc, argv, options)) return 1;
 
   AppState state;
-  const std::filesystem::path config = configDirectory();
+  // A script (a test, a benchmark, the documentation's screenshots) starts from the defaults and leaves the user's
+  // settings alone, so its result does not depend on who ran the window last.
+  const std::filesystem::path config = options.script.empty() ? configDirectory() : std::filesystem::path();
   std::string imgui_ini;
   if (!config.empty()) {
     state.settings_path = config / "voxmod.ini";

@@ -204,10 +204,13 @@ struct ScriptRun {
   std::string screenshot_path;  // written (and cleared) by the frame loop after this frame is drawn
   bool screenshot_requested = false;
   bool failed = false;
+  std::string last_error;    // the last error reported while the script ran
+  std::string expect_error;  // expect-error: the next command must fail with a message containing this
   // sweep: the section moves one step per frame, as a slider drag does; frame times are collected
   bool sweeping = false;
   int32_t sweep_step = 1;
   std::vector<double> sweep_frame_ms;
+  double sweep_view_ms = 0.0;
   double sweep_last = 0.0;
 };
 

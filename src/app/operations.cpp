@@ -166,6 +166,7 @@ void reportError(AppState& state, const std::string& message, const std::filesys
   if (state.script) {
     std::fprintf(stderr, "voxmod: %s\n", text.c_str());
     state.script->failed = true;
+    state.script->last_error = text;
   }
   state.errors.messages.push_back(std::move(text));
 }

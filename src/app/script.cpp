@@ -15,7 +15,7 @@ struct Signature {
 };
 
 // Argument counts per command; the meaning of each is checked when it runs (see script.h).
-constexpr std::array<Signature, 25> kSignatures = {{
+constexpr std::array<Signature, 27> kSignatures = {{
     {"open", 1, -1},        {"voxelize", 1, 2},     {"section", 1, 2},
     {"sweep", 1, 2},        {"peel", 1, 1},         {"xray", 2, 2},
     {"panel", 1, 1},        {"view", 1, 2},         {"zoom", 1, 1},
@@ -24,7 +24,7 @@ constexpr std::array<Signature, 25> kSignatures = {{
     {"save", 1, -1},        {"export-view", 1, -1}, {"export-section", 1, -1},
     {"export-xray", 1, -1}, {"export-csv", 1, -1},  {"screenshot", 1, -1},
     {"state", 1, -1},       {"wait", 1, 1},         {"wait-file", 1, 2},
-    {"quit", 0, 0},
+    {"quit", 0, 0},         {"lod", 1, 1},          {"expect-error", 1, -1},
 }};
 
 const Signature* findSignature(const std::string& name) {

@@ -15,7 +15,7 @@
 //   panel NAME                       show a panel: model|section|skin|xray|mass
 //   view YAW PITCH | view NAME       camera angles in degrees, or iso|+x|-x|+y|-y|+z|-z; refits the model
 //   zoom FACTOR                      > 1 zooms in
-//   lit on|off, round on|off, disputed on|off, cut on|off
+//   lit on|off, round on|off, disputed on|off, cut on|off, lod on|off
 //   undo | redo
 //   save PATH                        save the model (.vxm or .binvox)
 //   export-view PATH | export-section PATH | export-xray PATH | export-csv PATH
@@ -24,6 +24,8 @@
 //                                    pixels, section index, peel level, ...) for a test driver
 //   wait N                           draw N frames
 //   wait-file PATH [SECONDS]         keep drawing until PATH exists (a test driver's signal), default 60 s
+//   expect-error TEXT                the next command must fail with an error containing TEXT (its error dialog
+//                                    stays up); any other outcome fails the script
 //   echo TEXT                        print TEXT to stdout
 //   quit                             close the window, discarding unsaved changes
 #include <filesystem>

@@ -95,11 +95,15 @@ Step runSweep(Context& c) {
     r.sweeping = true;
     r.sweep_frame_ms.clear();
     r.sweep_last = 0.0;
+    r.sweep_view_ms = 0.0;
     return Step::kWait;
   }
   // One section per frame, timed from frame start to frame start (the whole frame: section, 3D view, UI, swap).
   const double now = nowSeconds();
-  if (r.sweep_last > 0.0) r.sweep_frame_ms.push_back((now - r.sweep_last) * 1000.0);
+  if (r.sweep_last > 0.0) {
+    r.sweep_frame_ms.push_back((now - r.sweep_last) * 1000.0);
+    r.sweep_view_ms += s.viewport.draw_ms;  // the 3D part of that frame (point rendering into the framebuffer)
+  }
   r.sweep_last = now;
   s.viewport.interacting = true;  // what a slider drag does: coarse points while it moves
   const int32_t next = r.sweep_frame_ms.empty() && s.section.index == 0 ? 0 : s.section.index + r.sweep_step;
@@ -110,9 +114,13 @@ Step runSweep(Context& c) {
     double total = 0.0;
     for (double v : ms) total += v;
     const double mean = total / double(ms.size());
-    std::printf("sweep %s: %zu frames, %d x %d x %d voxels, mean %.1f ms, median %.1f ms, %.1f fps (lod %s)\n",
-                axisName(s.section.axis), ms.size(), s.model.nx(), s.model.ny(), s.model.nz(), mean, ms[ms.size() / 2],
-                1000.0 / mean, s.view.lod ? "on" : "off");
+    const int64_t surface = s.viewport.renderer ? s.viewport.renderer->cloud().size() : 0;
+    std::printf(
+        "sweep %s: %zu frames, %d x %d x %d voxels, %s surface points, frame mean %.1f ms (3D view %.1f ms), "
+        "median %.1f ms, %.1f fps (lod %s, last frame drew %s points at level %d)\n",
+        axisName(s.section.axis), ms.size(), s.model.nx(), s.model.ny(), s.model.nz(), std::to_string(surface).c_str(),
+        mean, r.sweep_view_ms / double(ms.size()), ms[ms.size() / 2], 1000.0 / mean, s.view.lod ? "on" : "off",
+        std::to_string(s.viewport.stats.points_drawn).c_str(), s.viewport.stats.lod_level);
     std::fflush(stdout);
     return Step::kDone;
   }
@@ -243,12 +251,13 @@ Step execute(Context& c) {
     s.view.camera.zoom(f);
     return Step::kDone;
   }
-  if (name == "lit" || name == "round" || name == "disputed" || name == "cut") {
+  if (name == "lit" || name == "round" || name == "disputed" || name == "cut" || name == "lod") {
     bool on = false;
     if (!parseOnOff(args[0], on)) return c.fail("'" + name + "' takes on or off");
     (name == "lit"        ? s.view.lit
      : name == "round"    ? s.view.round_points
      : name == "disputed" ? s.view.show_disputed
+     : name == "lod"      ? s.view.lod
                           : s.view.cut_away) = on;
     return Step::kDone;
   }
@@ -301,6 +310,10 @@ Step execute(Context& c) {
     if (nowSeconds() > r.deadline) return c.fail("timed out waiting for " + args[0]);
     return Step::kWait;
   }
+  if (name == "expect-error") {
+    r.expect_error = c.cmd.rest;
+    return Step::kDone;
+  }
   if (name == "quit") {
     s.quit_requested = true;
     return Step::kDone;
@@ -329,6 +342,28 @@ void stepScript(AppState& state) {
     run.started = false;
     run.wait_frames = 0;
     run.settle_countdown = -1;
+    if (!run.expect_error.empty() && cmd.name != "expect-error") {
+      // The command before was expect-error: this one has to fail, with that text in its message. The error
+      // dialog stays up, as it would for a person.
+      const std::string message = !c.error.empty() ? c.error : run.last_error;
+      const bool failed_as_expected =
+          (step == Step::kFail || run.failed) && message.find(run.expect_error) != std::string::npos;
+      if (!failed_as_expected) {
+        std::fprintf(stderr, "voxmod: script line %d (%s): expected an error containing '%s', %s\n", cmd.line,
+                     cmd.name.c_str(), run.expect_error.c_str(),
+                     message.empty() ? "but it succeeded" : ("got: " + message).c_str());
+        run.failed = true;
+        state.exit_code = 1;
+        state.quit_requested = true;
+        return;
+      }
+      std::printf("expected error: %s\n", message.c_str());
+      run.expect_error.clear();
+      run.failed = false;
+      run.last_error.clear();
+      ++run.next;
+      continue;
+    }
     if (step == Step::kFail || run.failed) {
       std::fprintf(stderr, "voxmod: script line %d (%s): %s\n", cmd.line, cmd.name.c_str(),
                    c.error.empty() ? "failed (see the message above)" : c.error.c_str());
