@@ -117,7 +117,10 @@ void installCallbacks(GLFWwindow* window) {
   // Installed before ImGui's GLFW backend, which chains to them.
   glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int, int, int) { wake(w); });
   glfwSetScrollCallback(window, [](GLFWwindow* w, double, double) { wake(w); });
-  glfwSetKeyCallback(window, [](GLFWwindow* w, int, int, int, int) { wake(w); });
+  glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
+    if (action == GLFW_PRESS) stateOf(w).key_presses.emplace_back(key, mods);
+    wake(w);
+  });
   glfwSetCharCallback(window, [](GLFWwindow* w, unsigned int) { wake(w); });
   glfwSetCursorEnterCallback(window, [](GLFWwindow* w, int) { wake(w); });
   glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { wake(w); });
@@ -293,6 +296,7 @@ int runGui(int argc, char** argv) {
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     drawFrame(state);
+    state.key_presses.clear();
     ImGui::Render();
     int fb_w = 0, fb_h = 0;
     glfwGetFramebufferSize(window, &fb_w, &fb_h);

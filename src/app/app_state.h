@@ -275,6 +275,9 @@ struct AppState {
   ErrorQueue errors;
   std::function<void(AppState&)> after_unsaved_prompt;  // what to do once the user saved or discarded
   std::vector<std::string> dropped_files;               // from GLFW's drop callback, handled next frame
+  // Key presses (GLFW key, modifier bits) since the last frame, from GLFW's key callback. ImGui 1.86 only keeps
+  // the keys' current state, so a tap shorter than a frame (llvmpipe frames can be slow) would be lost otherwise.
+  std::vector<std::pair<int, int>> key_presses;
   bool unsaved_prompt_requested = false;
   bool quit_requested = false;
   bool show_about = false;

@@ -423,7 +423,7 @@ bool hasUnsavedChanges(const AppState& state) {
 }
 
 void guardUnsaved(AppState& state, std::function<void(AppState&)> then) {
-  if (!hasUnsavedChanges(state) || state.script) {
+  if (!hasUnsavedChanges(state)) {
     then(state);
     return;
   }

@@ -415,6 +415,7 @@ std::string describeState(const AppState& s) {
   out << "view_points = " << s.viewport.stats.points_drawn << "\n";
   out << "view_lod = " << s.viewport.stats.lod_level << "\n";
   out << "errors = " << s.errors.messages.size() << "\n";
+  out << "unsaved_prompt = " << (s.after_unsaved_prompt ? 1 : 0) << "\n";
   for (const WidgetRect& w : s.widget_rects) {
     out << "rect_" << w.name << " = " << w.x0 << " " << w.y0 << " " << w.x1 << " " << w.y1 << "\n";
   }

@@ -184,6 +184,36 @@ s11="$out/11_state.txt"
 pass "orbit by mouse: yaw $(get "$s10" view_yaw) -> $(get "$s11" view_yaw), pitch $(get "$s10" view_pitch) -> $(get "$s11" view_pitch)"
 expect_differ "$out/10_model.png" "$out/11_orbited.png" "$(viewport_rect "$s10")" 1000 "3D view after orbiting"
 
+# ---- 5. Keyboard: Ctrl+Z undoes the last peel (the shortcut comes from the action table).
+move $((vx0 + 20)) $((vy0 + 60))
+xdotool key ctrl+z
+touch "$out/go_undo"
+wait_for "$out/12_state.txt"
+[[ "$(get "$out/12_state.txt" peeled)" == 1 ]] || fail "Ctrl+Z left peeled = $(get "$out/12_state.txt" peeled), expected 1"
+pass "Ctrl+Z undid the second peel"
+
+# ---- 6. Ctrl+Q with unsaved changes: the prompt appears; Cancel keeps the window; Ctrl+Q again and Discard quits.
+xdotool key ctrl+q
+touch "$out/go_quit"
+wait_for "$out/13_state.txt"
+s13="$out/13_state.txt"
+[[ "$(get "$s13" unsaved_prompt)" == 1 && "$(get "$s13" unsaved)" == 1 ]] || fail "Ctrl+Q did not ask about unsaved changes"
+pass "Ctrl+Q with unsaved changes opened the prompt"
+read -r cx cy <<<"$(centre "$(rect "$s13" prompt_cancel)")"
+click "$cx" "$cy"
+touch "$out/go_cancel"
+wait_for "$out/14_state.txt"
+[[ "$(get "$out/14_state.txt" unsaved_prompt)" == 0 ]] || fail "Cancel did not close the prompt"
+kill -0 "$pid" 2>/dev/null || fail "the window closed although Cancel was clicked"
+pass "Cancel kept the window open"
+sleep 0.5  # the script has ended; the window now waits for events like any session
+move $((vx0 + 20)) $((vy0 + 60))
+xdotool key ctrl+q
+sleep 1
+read -r dx dy <<<"$(centre "$(rect "$s13" prompt_discard)")"
+click "$dx" "$dy"
+for ((k = 0; k < 100 && $(kill -0 "$pid" 2>/dev/null && echo 1 || echo 0); ++k)); do sleep 0.1; done
+kill -0 "$pid" 2>/dev/null && fail "Discard did not close the window"
 wait "$pid" || fail "voxmod exited with status $?"
-pass "voxmod exited cleanly"
+pass "Ctrl+Q, Discard: voxmod exited cleanly"
 echo "gui test passed: $checks checks; screenshots in $out"

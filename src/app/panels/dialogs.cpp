@@ -200,7 +200,13 @@ void drawUnsavedPrompt(AppState& state) {
     state.after_unsaved_prompt = nullptr;
     return f;
   };
-  if (ImGui::Button("Save", ImVec2(110.0f, 0.0f))) {
+  auto record = [&state](const char* name) {
+    const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
+    state.widget_rects.push_back({name, r0.x, r0.y, r1.x, r1.y});
+  };
+  const bool save = ImGui::Button("Save", ImVec2(110.0f, 0.0f));
+  record("prompt_save");
+  if (save) {
     ImGui::CloseCurrentPopup();
     auto f = then();
     if (!state.doc.save_path.empty()) {
@@ -211,13 +217,16 @@ void drawUnsavedPrompt(AppState& state) {
     }
   }
   ImGui::SameLine();
-  if (ImGui::Button("Discard", ImVec2(110.0f, 0.0f))) {
+  const bool discard = ImGui::Button("Discard", ImVec2(110.0f, 0.0f));
+  record("prompt_discard");
+  if (discard) {
     ImGui::CloseCurrentPopup();
     if (auto f = then()) f(state);
   }
   ImGui::SameLine();
-  if (ImGui::Button("Cancel", ImVec2(110.0f, 0.0f)) ||
-      ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+  const bool cancel = ImGui::Button("Cancel", ImVec2(110.0f, 0.0f));
+  record("prompt_cancel");
+  if (cancel || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
     ImGui::CloseCurrentPopup();
     then();
   }

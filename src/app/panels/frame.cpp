@@ -163,11 +163,14 @@ void drawMainMenu(AppState& state) {
 void handleShortcuts(AppState& state) {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel)) return;
-  const int mods = (io.KeyCtrl ? GLFW_MOD_CONTROL : 0) | (io.KeyShift ? GLFW_MOD_SHIFT : 0);
-  for (const Action& a : actionTable()) {
-    // ImGui 1.86's GLFW backend indexes io.KeysDown by GLFW key code, so the table's keys are used directly.
-    if (a.shortcut.key == 0 || !ImGui::IsKeyPressed(a.shortcut.key, false)) continue;
-    if (a.shortcut.mods == mods) dispatch(state, a.id);
+  for (const auto& [key, key_mods] : state.key_presses) {
+    const int mods = key_mods & (GLFW_MOD_CONTROL | GLFW_MOD_SHIFT | GLFW_MOD_ALT);
+    for (const Action& a : actionTable()) {
+      if (a.shortcut.key == key && a.shortcut.mods == mods) {
+        dispatch(state, a.id);
+        break;
+      }
+    }
   }
 }
 

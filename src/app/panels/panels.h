@@ -12,7 +12,8 @@ void drawFrame(AppState& state);
 
 // Menu bar generated from the action table, plus Open Recent.
 void drawMainMenu(AppState& state);
-// Runs the action of every shortcut pressed this frame (not while a text field has the keyboard).
+// Runs the action of every shortcut key pressed since the last frame (not while a text field has the keyboard or
+// a dialog is open).
 void handleShortcuts(AppState& state);
 void drawStatusBar(AppState& state);
 
