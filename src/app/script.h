@@ -20,8 +20,8 @@
 //   save PATH                        save the model (.vxm or .binvox)
 //   export-view PATH | export-section PATH | export-xray PATH | export-csv PATH
 //   screenshot PATH                  the whole window as PNG, after the next frame is drawn
-//   state PATH                       write the window's state as "key = value" lines (widget rectangles in window
-//                                    pixels, section index, peel level, ...) for a test driver
+//   state PATH                       once background work has finished, write the window's state as "key = value"
+//                                    lines (widget rectangles in window pixels, section index, peel level, ...)
 //   wait N                           draw N frames
 //   wait-file PATH [SECONDS]         keep drawing until PATH exists (a test driver's signal), default 60 s
 //   expect-error TEXT                the next command must fail with an error containing TEXT (its error dialog

@@ -288,6 +288,7 @@ Step execute(Context& c) {
     return r.failed ? Step::kFail : Step::kDone;
   }
   if (name == "state") {
+    if (Step w = waitSettled(c, 0); w != Step::kDone) return w;  // counts that are still being computed
     if (Status st = io::writeFileAtomic(c.cmd.rest, describeState(s)); !st) return c.fail(st.error().message);
     return Step::kDone;
   }
