@@ -151,6 +151,9 @@ void setUpImGui(AppState& state, GLFWwindow* window, const std::string& ini_path
   style.GrabRounding = 3.0f;
   style.GrabMinSize = 14.0f;
   style.ItemSpacing = ImVec2(8.0f, 6.0f);
+  // Dialogs over a busy point rendering read better opaque.
+  style.Colors[ImGuiCol_PopupBg].w = 1.0f;
+  style.Colors[ImGuiCol_WindowBg].w = 1.0f;
   installCallbacks(window);
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");

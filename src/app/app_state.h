@@ -281,6 +281,7 @@ struct AppState {
   bool unsaved_prompt_requested = false;
   bool quit_requested = false;
   bool show_about = false;
+  bool close_dialogs = false;  // the script's "dialog close": every open dialog closes itself on the next frame
 
   // Frame bookkeeping.
   int64_t frame = 0;

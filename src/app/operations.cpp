@@ -74,6 +74,7 @@ ModelSnapshot newBase(AppState& state, VoxelGrid grid, std::shared_ptr<const Mod
 void applyLoaded(AppState& state, LoadedFile loaded) {
   Document& doc = state.doc;
   doc = Document{};
+  state.voxelize_job.abandon();  // a voxelization of the previous document's mesh must not land in this one
   // Results derived from the previous document can never be asked for again: free them now.
   state.depth.clear();
   state.surface_stats.clear();

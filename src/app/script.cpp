@@ -15,7 +15,7 @@ struct Signature {
 };
 
 // Argument counts per command; the meaning of each is checked when it runs (see script.h).
-constexpr std::array<Signature, 27> kSignatures = {{
+constexpr std::array<Signature, 29> kSignatures = {{
     {"open", 1, -1},        {"voxelize", 1, 2},     {"section", 1, 2},
     {"sweep", 1, 2},        {"peel", 1, 1},         {"xray", 2, 2},
     {"panel", 1, 1},        {"view", 1, 2},         {"zoom", 1, 1},
@@ -23,8 +23,9 @@ constexpr std::array<Signature, 27> kSignatures = {{
     {"cut", 1, 1},          {"undo", 0, 0},         {"redo", 0, 0},
     {"save", 1, -1},        {"export-view", 1, -1}, {"export-section", 1, -1},
     {"export-xray", 1, -1}, {"export-csv", 1, -1},  {"screenshot", 1, -1},
-    {"state", 1, -1},       {"wait", 1, 1},         {"wait-file", 1, 2},
+    {"state", 1, -1},       {"wait", 1, 2},         {"wait-file", 1, 2},
     {"quit", 0, 0},         {"lod", 1, 1},          {"expect-error", 1, -1},
+    {"hover", 1, 3},        {"dialog", 1, 1},
 }};
 
 const Signature* findSignature(const std::string& name) {

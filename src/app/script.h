@@ -22,7 +22,10 @@
 //   screenshot PATH                  the whole window as PNG, after the next frame is drawn
 //   state PATH                       once background work has finished, write the window's state as "key = value"
 //                                    lines (widget rectangles in window pixels, section index, peel level, ...)
-//   wait N                           draw N frames
+//   wait N | wait frames N           draw N frames
+//   hover WIDGET [FX FY]             move the pointer to a widget recorded by `state` (e.g. xray_image), at
+//                                    fractions FX, FY of its width and height (default the centre)
+//   dialog voxelize|open|save|about|close   open one of the dialogs, or close whichever is open
 //   wait-file PATH [SECONDS]         keep drawing until PATH exists (a test driver's signal), default 60 s
 //   expect-error TEXT                the next command must fail with an error containing TEXT (its error dialog
 //                                    stays up); any other outcome fails the script

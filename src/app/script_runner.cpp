@@ -6,6 +6,9 @@
 #include <sstream>
 #include <system_error>
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
 #include "app/operations.h"
 #include "app/viewport.h"
 #include "vox/io/file_util.h"
@@ -294,7 +297,8 @@ Step execute(Context& c) {
   }
   if (name == "wait") {
     int n = 0;
-    if (!parseNumber(args[0], n) || n < 0) return c.fail("wait takes a frame count");
+    const std::string& count = args[0] == "frames" && args.size() > 1 ? args[1] : args[0];  // "wait frames N"
+    if (!parseNumber(count, n) || n < 0) return c.fail("wait takes a frame count");
     if (first) r.wait_frames = n;
     if (r.wait_frames > 0) {
       --r.wait_frames;
@@ -310,6 +314,35 @@ Step execute(Context& c) {
     if (std::filesystem::exists(args[0], ec)) return Step::kDone;
     if (nowSeconds() > r.deadline) return c.fail("timed out waiting for " + args[0]);
     return Step::kWait;
+  }
+  if (name == "hover") {
+    // Moves the real pointer (glfwSetCursorPos warps the X pointer) to a point of a widget drawn last frame, given
+    // as fractions of its width and height, so hover read-outs and tooltips can be shown without a mouse.
+    float fx = 0.5f, fy = 0.5f;
+    if (args.size() > 1 && !parseNumber(args[1], fx)) return c.fail("hover fractions must be numbers");
+    if (args.size() > 2 && !parseNumber(args[2], fy)) return c.fail("hover fractions must be numbers");
+    auto it = std::find_if(s.widget_rects.begin(), s.widget_rects.end(),
+                           [&](const WidgetRect& w) { return w.name == args[0]; });
+    if (it == s.widget_rects.end()) return c.fail("no widget '" + args[0] + "' on screen");
+    glfwSetCursorPos(s.window, double(it->x0 + (it->x1 - it->x0) * fx), double(it->y0 + (it->y1 - it->y0) * fy));
+    return Step::kDone;
+  }
+  if (name == "dialog") {
+    if (args[0] == "voxelize") {
+      if (!s.doc.mesh) return c.fail("the voxelize dialog needs an open mesh");
+      s.voxelize.open_requested = true;
+    } else if (args[0] == "open") {
+      openBrowser(s, BrowserPurpose::kOpen);
+    } else if (args[0] == "save") {
+      openBrowser(s, BrowserPurpose::kSaveModel);
+    } else if (args[0] == "about") {
+      s.show_about = true;
+    } else if (args[0] == "close") {
+      s.close_dialogs = true;
+    } else {
+      return c.fail("dialog takes voxelize, open, save, about or close");
+    }
+    return Step::kDone;
   }
   if (name == "expect-error") {
     r.expect_error = c.cmd.rest;

@@ -1,5 +1,6 @@
 #include "app/ui.h"
 
+#include <algorithm>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
@@ -78,6 +79,20 @@ void tableRow(const char* label, const std::string& value) {
   ImGui::TextDisabled("%s", label);
   ImGui::TableSetColumnIndex(1);
   ImGui::TextWrapped("%s", value.c_str());
+}
+
+void markCell(ImVec2 area_min, ImVec2 area_max, ImVec2 cell_min, ImVec2 cell_max) {
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 c((cell_min.x + cell_max.x) * 0.5f, (cell_min.y + cell_max.y) * 0.5f);
+  const float half = std::max(3.5f, (cell_max.x - cell_min.x) * 0.5f);
+  const ImU32 line = IM_COL32(255, 255, 255, 110);
+  dl->AddLine(ImVec2(area_min.x, c.y), ImVec2(c.x - half - 1.0f, c.y), line);
+  dl->AddLine(ImVec2(c.x + half + 1.0f, c.y), ImVec2(area_max.x, c.y), line);
+  dl->AddLine(ImVec2(c.x, area_min.y), ImVec2(c.x, c.y - half - 1.0f), line);
+  dl->AddLine(ImVec2(c.x, c.y + half + 1.0f), ImVec2(c.x, area_max.y), line);
+  dl->AddRect(ImVec2(c.x - half - 1.0f, c.y - half - 1.0f), ImVec2(c.x + half + 1.0f, c.y + half + 1.0f),
+              IM_COL32(0, 0, 0, 255));
+  dl->AddRect(ImVec2(c.x - half, c.y - half), ImVec2(c.x + half, c.y + half), IM_COL32(255, 255, 255, 255));
 }
 
 void wrappedColoured(const ImVec4& colour, const std::string& text) {

@@ -28,6 +28,10 @@ void helpMarker(const char* text);
 bool beginFactTable(const char* id, float label_width = 125.0f);
 // Label on the left, value on the right in a two-column table row.
 void tableRow(const char* label, const std::string& value);
+// Marks the cell [cell_min, cell_max] (a voxel or ray under the mouse) in an image spanning [area_min, area_max]:
+// thin cross-hair lines across the image and a box around the cell (at least 7 pixels, so it shows at any scale).
+// Screenshots carry no mouse pointer, so this also shows where a read-out was taken.
+void markCell(ImVec2 area_min, ImVec2 area_max, ImVec2 cell_min, ImVec2 cell_max);
 // Wrapped text in a colour (warnings, errors).
 void wrappedColoured(const ImVec4& colour, const std::string& text);
 

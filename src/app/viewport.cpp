@@ -139,6 +139,14 @@ void renderView(AppState& state, int w, int h, bool coarse) {
       glClear(GL_DEPTH_BUFFER_BIT);
       render::DrawParams over = params;
       over.lut = render::Lut::kLit;
+      // A core of a few voxels would be a few pixels: draw it at least 8 pixels wide so it can be found.
+      if (over.point_size_px <= 0.0) {
+        const render::Camera& cam = state.view.camera;
+        const double ppv = render::pixelsPerVoxel(cam, double(h), cam.distance);
+        over.point_size_px = std::max(
+            6.0,
+            render::closedPointSize(ppv, render::pointCoverageFactor(cam, over.round_points, double(w) / double(h))));
+      }
       over.colour = (vp.overlay_key % 4 == 1) ? kCoreColour : kDisputedColour;
       over.cull_back_groups = true;
       vp.overlay->draw(state.view.camera, w, h, over);
@@ -268,7 +276,9 @@ void drawViewport(AppState& state) {
   // Read-outs and the view buttons drawn over the image.
   const ImVec2 after = ImGui::GetCursorScreenPos();
   if (state.model.empty()) {
-    const char* msg = modelBusy(state) ? "Working..." : "Open a mesh or voxel file (File > Open, or drop it here)";
+    const char* msg = modelBusy(state) ? "Working..."
+                      : state.doc.mesh ? "Not voxelized yet: Model > Voxelize... (Ctrl+R)"
+                                       : "Open a mesh or voxel file (File > Open, or drop it here)";
     const ImVec2 ts = ImGui::CalcTextSize(msg);
     dl->AddText(ImVec2(pos.x + (float(w) - ts.x) * 0.5f, pos.y + (float(h) - ts.y) * 0.5f),
                 IM_COL32(220, 220, 220, 255), msg);

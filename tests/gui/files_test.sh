@@ -9,7 +9,7 @@ src=$2
 out=$3
 
 missing=()
-for tool in xvfb-run xauth; do command -v "$tool" >/dev/null 2>&1 || missing+=("$tool"); done
+for tool in xvfb-run xauth identify; do command -v "$tool" >/dev/null 2>&1 || missing+=("$tool"); done
 if ((${#missing[@]} > 0)); then
   msg="gui test needs ${missing[*]} (scripts/setup.sh installs them)"
   [[ "${CI:-}" == "true" ]] && { echo "FAIL: $msg" >&2; exit 1; }
@@ -59,4 +59,21 @@ for f in section.png xray.png view.png xray.csv 01_error_dialog.png 02_reopened.
 done
 head -n 1 "$out/xray.csv" | grep -q "^u,v,thickness_voxels" || fail "xray.csv has no header"
 echo "ok - section, X-ray and view exports written"
+
+# Settings: a session without a script reads the window size it had last time, remembers the file it opened,
+# and keeps ImGui's ini beside its own.
+mkdir -p "$XDG_CONFIG_HOME/voxmod"
+printf 'window_width = 1000\nwindow_height = 700\nlit = 0\n' >"$XDG_CONFIG_HOME/voxmod/voxmod.ini"
+status=0
+xvfb-run -a -s "-screen 0 1280x800x24" "$voxmod" "$out/part.vxm" --screenshot "$out/03_session.png" \
+  >"$out/session.log" 2>&1 || status=$?
+((status == 0)) || fail "the plain session exited with status $status: $(cat "$out/session.log")"
+size=$(identify -format "%wx%h" "$out/03_session.png")
+[[ "$size" == 1000x700 ]] || fail "the window did not open at the remembered 1000x700 (screenshot is $size)"
+ini="$XDG_CONFIG_HOME/voxmod/voxmod.ini"
+grep -q "^recent = .*part.vxm$" "$ini" || fail "part.vxm is not in the recent files: $(cat "$ini")"
+grep -q "^lit = 0$" "$ini" || fail "the shading choice was not kept: $(cat "$ini")"
+grep -q "^window_width = 1000$" "$ini" || fail "the window size was not kept: $(cat "$ini")"
+[[ -f "$XDG_CONFIG_HOME/voxmod/imgui.ini" ]] || fail "no imgui.ini beside voxmod.ini"
+echo "ok - settings: window size, recent files and choices remembered in $ini"
 echo "files test passed; output in $out"

@@ -7,6 +7,10 @@
 
 #include <imgui.h>
 
+#include "vox/render/gl.h"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
 #include "app/actions.h"
 #include "app/operations.h"
 #include "app/panels/panels.h"
@@ -48,7 +52,7 @@ void drawVoxelizeDialog(AppState& state) {
   }
   centreNextWindow();
   if (!ImGui::BeginPopupModal("Voxelize", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-  if (!state.doc.mesh) {  // the mesh went away (another file was opened)
+  if (!state.doc.mesh || state.close_dialogs) {  // the mesh went away (another file was opened), or a script closes
     ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
     return;
@@ -192,6 +196,7 @@ void drawUnsavedPrompt(AppState& state) {
   }
   centreNextWindow();
   if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  if (state.close_dialogs) state.after_unsaved_prompt = nullptr;  // as Cancel
   ImGui::Text("The model of %s has changes that are not saved.", state.doc.path.filename().string().c_str());
   if (state.doc.model) ImGui::TextDisabled("Last change: %s", state.doc.model->label.c_str());
   ImGui::Spacing();
@@ -226,7 +231,7 @@ void drawUnsavedPrompt(AppState& state) {
   ImGui::SameLine();
   const bool cancel = ImGui::Button("Cancel", ImVec2(110.0f, 0.0f));
   record("prompt_cancel");
-  if (cancel || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+  if (cancel || state.close_dialogs || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
     ImGui::CloseCurrentPopup();
     then();
   }
@@ -244,8 +249,9 @@ void drawAboutDialog(AppState& state) {
   ImGui::TextDisabled("After the thesis 'Voxel based solid models' (2005): scan-line voxelization into Z bit-plane");
   ImGui::TextDisabled("layers, points shaded by their face-neighbour code, sections, skin removal and X-ray scans.");
   ImGui::Spacing();
-  ImGui::Text("Dear ImGui %s, GLFW %s", ImGui::GetVersion(), "3.3");
-  if (ImGui::Button("Close", ImVec2(120.0f, 0.0f))) ImGui::CloseCurrentPopup();
+  ImGui::Text("Dear ImGui %s, GLFW %s", ImGui::GetVersion(), glfwGetVersionString());
+  ImGui::Text("OpenGL: %s", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+  if (ImGui::Button("Close", ImVec2(120.0f, 0.0f)) || state.close_dialogs) ImGui::CloseCurrentPopup();
   ImGui::EndPopup();
 }
 

@@ -144,7 +144,8 @@ void drawFileBrowser(AppState& state) {
   ImGui::SameLine();
   if (ImGui::Button(isSave(b.purpose) ? "Save" : "Open", ImVec2(80.0f, 0.0f))) activate = true;
   ImGui::SameLine();
-  if (ImGui::Button("Cancel", ImVec2(80.0f, 0.0f)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+  if (ImGui::Button("Cancel", ImVec2(80.0f, 0.0f)) || state.close_dialogs ||
+      ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
     b.then = nullptr;
     ImGui::CloseCurrentPopup();
   } else if (activate && !b.file_name.empty()) {

@@ -250,6 +250,7 @@ void drawFrame(AppState& state) {
   drawUnsavedPrompt(state);
   drawAboutDialog(state);
   drawErrorDialog(state);  // last: an error raised by another dialog this frame shows on top of it
+  state.close_dialogs = false;
   handleShortcuts(state);
 }
 

@@ -178,6 +178,8 @@ void drawSectionImage(AppState& state) {
     voxel[ax.right] = u;
     voxel[ax.up] = v;
     const glm::dvec3 c = state.model.frame().voxelCentre(voxel[0], voxel[1], voxel[2]);
+    const ImVec2 cell(origin.x + float(u) * scale, origin.y + float(row) * scale);
+    markCell(origin, ImVec2(origin.x + size.x, origin.y + size.y), cell, ImVec2(cell.x + scale, cell.y + scale));
     ImGui::SetTooltip("voxel (%d, %d, %d): %s\ncentre (%.4g, %.4g, %.4g) %s", voxel[0], voxel[1], voxel[2],
                       section->mask.at(u, row) ? "material" : "empty", c.x, c.y, c.z,
                       units == "model" ? "model units" : units.c_str());

@@ -199,6 +199,11 @@ void drawXrayImage(AppState& state) {
       const int a = int(x->axis);
       const int32_t v = th - 1 - row;  // row 0 holds the largest "up" index
       const int32_t t = x->thickness.at(u, row);
+      const ImVec2 map0(origin.x + float(state.xray_map_x) * fit, origin.y + float(state.xray_map_y) * fit);
+      const float cell = float(s) * fit;
+      const ImVec2 c0(map0.x + float(u) * cell, map0.y + float(row) * cell);
+      markCell(map0, ImVec2(map0.x + float(tw) * cell, map0.y + float(th) * cell), c0,
+               ImVec2(c0.x + cell, c0.y + cell));
       char buf[200];
       const std::string units = state.model.frame().units;
       if (t > 0) {
