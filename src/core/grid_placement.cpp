@@ -58,8 +58,8 @@ Result<GridPlacement> placeGridByVoxelSize(const Box3d& bounds, double voxel_siz
   if (r > double(kMaxResolution)) {
     return makeError(ErrorCode::kLimit, "voxel size " + std::to_string(voxel_size) + " gives " +
                                             std::to_string(int64_t(std::min(r, 1e15))) +
-                                            " voxels on the longest axis (at most " +
-                                            std::to_string(kMaxResolution) + ")");
+                                            " voxels on the longest axis (at most " + std::to_string(kMaxResolution) +
+                                            ")");
   }
   return place(bounds, voxel_size, std::max<int64_t>(1, int64_t(r)));
 }

@@ -9,12 +9,18 @@ namespace vox {
 
 glm::ivec3 directionStep(Direction d) {
   switch (d) {
-    case Direction::kYMinus: return {0, -1, 0};
-    case Direction::kXMinus: return {-1, 0, 0};
-    case Direction::kXPlus: return {1, 0, 0};
-    case Direction::kYPlus: return {0, 1, 0};
-    case Direction::kZMinus: return {0, 0, -1};
-    case Direction::kZPlus: return {0, 0, 1};
+    case Direction::kYMinus:
+      return {0, -1, 0};
+    case Direction::kXMinus:
+      return {-1, 0, 0};
+    case Direction::kXPlus:
+      return {1, 0, 0};
+    case Direction::kYPlus:
+      return {0, 1, 0};
+    case Direction::kZMinus:
+      return {0, 0, -1};
+    case Direction::kZPlus:
+      return {0, 0, 1};
   }
   return {0, 0, 0};
 }
@@ -93,9 +99,7 @@ std::optional<glm::ivec3> VoxelGrid::neighbourAt(glm::ivec3 voxel, Direction d, 
   return glm::ivec3(int32_t(x), int32_t(y), int32_t(z));
 }
 
-void VoxelGrid::clear() {
-  std::fill(layers_.begin(), layers_.end(), zero_layer_);
-}
+void VoxelGrid::clear() { std::fill(layers_.begin(), layers_.end(), zero_layer_); }
 
 int64_t VoxelGrid::filledCount() const {
   int64_t n = 0;

@@ -90,9 +90,7 @@ TEST_F(Cli, peelAllOfABoxRemovesShellsDownToTheCore) {
   EXPECT_EQ(j["core_voxels"], 8);
 }
 
-TEST_F(Cli, peelNeedsLayersOrAll) {
-  EXPECT_EQ(runVoxmod({"peel", box_stl(), "--res", "10"}).exit_code, 1);
-}
+TEST_F(Cli, peelNeedsLayersOrAll) { EXPECT_EQ(runVoxmod({"peel", box_stl(), "--res", "10"}).exit_code, 1); }
 
 TEST_F(Cli, massOfABoxIsItsVolumeAndCentre) {
   auto r = runVoxmod({"mass", box_stl(), "--res", "10", "--json"});
@@ -107,8 +105,8 @@ TEST_F(Cli, massOfABoxIsItsVolumeAndCentre) {
 }
 
 TEST_F(Cli, sectionWritesImageOfTheRightSize) {
-  auto r = runVoxmod({"section", box_stl(), "--res", "10", "--axis", "x", "--index", "3", "-o", path("s.png"),
-                      "--json"});
+  auto r =
+      runVoxmod({"section", box_stl(), "--res", "10", "--axis", "x", "--index", "3", "-o", path("s.png"), "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(parse(r)["filled"], 100);
   auto png = io::loadPng(path("s.png"));
@@ -118,8 +116,8 @@ TEST_F(Cli, sectionWritesImageOfTheRightSize) {
 }
 
 TEST_F(Cli, xrayReportsThicknessInVoxelsAndModelUnits) {
-  auto r = runVoxmod({"xray", box_stl(), "--res", "10", "--axis", "z", "--mode", "total", "-o", path("x.png"),
-                      "--csv", path("x.csv"), "--json"});
+  auto r = runVoxmod({"xray", box_stl(), "--res", "10", "--axis", "z", "--mode", "total", "-o", path("x.png"), "--csv",
+                      path("x.csv"), "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json j = parse(r);
   EXPECT_EQ(j["min"], 10);

@@ -43,9 +43,9 @@ RunResult runVoxmod(const std::vector<std::string>& args);
 }  // namespace vox::test
 
 // Skips (outside CI) or fails (in CI) the current test when ../shared is missing; otherwise binds `var` to it.
-#define VOX_REQUIRE_SHARED(var)                                                                   \
-  const std::filesystem::path var = ::vox::test::sharedDir();                                    \
-  if (var.empty()) {                                                                              \
-    if (::vox::test::inCI()) FAIL() << "shared test data (../shared) is missing in CI";          \
-    GTEST_SKIP() << "shared test data (../shared beside the checkout) not found; skipping";      \
+#define VOX_REQUIRE_SHARED(var)                                                             \
+  const std::filesystem::path var = ::vox::test::sharedDir();                               \
+  if (var.empty()) {                                                                        \
+    if (::vox::test::inCI()) FAIL() << "shared test data (../shared) is missing in CI";     \
+    GTEST_SKIP() << "shared test data (../shared beside the checkout) not found; skipping"; \
   }

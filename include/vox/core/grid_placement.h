@@ -13,7 +13,7 @@ inline constexpr int32_t kMaxResolution = 4096;
 
 struct GridPlacement {
   Dims dims;
-  GridFrame frame;  // origin and voxel size; units and source left for the caller
+  GridFrame frame;         // origin and voxel size; units and source left for the caller
   int32_t resolution = 0;  // voxels along the longest axis
 };
 

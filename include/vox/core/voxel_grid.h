@@ -41,8 +41,8 @@ struct GridFrame {
   bool operator==(const GridFrame&) const = default;
 
   glm::dvec3 voxelCentre(int64_t i, int64_t j, int64_t k) const {
-    return origin + glm::dvec3((double(i) + 0.5) * voxel_size, (double(j) + 0.5) * voxel_size,
-                               (double(k) + 0.5) * voxel_size);
+    return origin +
+           glm::dvec3((double(i) + 0.5) * voxel_size, (double(j) + 0.5) * voxel_size, (double(k) + 0.5) * voxel_size);
   }
 };
 

@@ -53,8 +53,8 @@ TEST(MeshTopology, negativeZeroWeldsWithPositiveZero) {
 
 TEST(MeshTopology, degenerateTrianglesAreCounted) {
   TriangleMesh m = cube();
-  m.triangles.push_back({{{0, 0, 0}, {0, 0, 0}, {1, 1, 1}}});        // repeated vertex
-  m.triangles.push_back({{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}});        // collinear: zero area
+  m.triangles.push_back({{{0, 0, 0}, {0, 0, 0}, {1, 1, 1}}});  // repeated vertex
+  m.triangles.push_back({{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}});  // collinear: zero area
   EXPECT_EQ(analyzeTopology(m).degenerate_triangles, 2);
   EXPECT_FALSE(isDegenerate(m.triangles[0]));
 }

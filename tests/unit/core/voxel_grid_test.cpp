@@ -118,7 +118,7 @@ TEST(VoxelGrid, copiesShareLayersUntilWritten) {
   VoxelGrid b = a;  // snapshot
   for (int z = 0; z < 8; ++z) EXPECT_TRUE(a.sharesLayerWith(b, z)) << z;
   b.reset(3, 3, 3);
-  EXPECT_TRUE(a.get(3, 3, 3));   // the snapshot keeps its data
+  EXPECT_TRUE(a.get(3, 3, 3));  // the snapshot keeps its data
   EXPECT_FALSE(b.get(3, 3, 3));
   EXPECT_FALSE(a.sharesLayerWith(b, 3));
   EXPECT_TRUE(a.sharesLayerWith(b, 4));
@@ -143,7 +143,7 @@ TEST(VoxelGrid, clearAndReleaseEmptyLayers) {
 
 TEST(Surface, cubeSurfaceCountAndCodesMatchBruteForce) {
   VoxelGrid g = box(Dims{70, 9, 9}, {1, 1, 1}, {69, 8, 8});  // spans two words per row
-  g.reset(30, 4, 4);  // an interior cavity adds six surface voxels
+  g.reset(30, 4, 4);                                         // an interior cavity adds six surface voxels
   int64_t brute = 0;
   for (int z = 0; z < 9; ++z)
     for (int y = 0; y < 9; ++y)
