@@ -295,12 +295,14 @@ int runGui(int argc, char** argv) {
     if (!modelBusy(state) || (state.script && state.script->started)) stepScript(state);
     if (state.quit_requested) break;
 
+    const double t_build = nowSeconds();
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     drawFrame(state);
     state.key_presses.clear();
     ImGui::Render();
+    const double t_draw = nowSeconds();
     int fb_w = 0, fb_h = 0;
     glfwGetFramebufferSize(window, &fb_w, &fb_h);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -308,6 +310,11 @@ int runGui(int argc, char** argv) {
     glClearColor(0.1f, 0.1f, 0.12f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    const bool timing = state.script && state.script->sweeping;
+    // The section benchmark splits each frame into phases; llvmpipe rasterizes when the work is flushed, so wait
+    // for it there (only then: glFinish would slow every frame of an interactive session for nothing).
+    if (timing) glFinish();
+    const double t_swap = nowSeconds();
 
     if (state.script && !state.script->screenshot_path.empty()) {
       writeScreenshot(state, window, state.script->screenshot_path);
@@ -322,6 +329,12 @@ int runGui(int argc, char** argv) {
       }
     }
     glfwSwapBuffers(window);
+    if (timing) {
+      const double t_end = nowSeconds();
+      state.frame_phase_ms[0] = (t_draw - t_build) * 1000.0;
+      state.frame_phase_ms[1] = (t_swap - t_draw) * 1000.0;
+      state.frame_phase_ms[2] = (t_end - t_swap) * 1000.0;
+    }
 
     if (const std::string t = windowTitle(state); t != title) {
       glfwSetWindowTitle(window, t.c_str());

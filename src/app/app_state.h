@@ -211,6 +211,7 @@ struct ScriptRun {
   int32_t sweep_step = 1;
   std::vector<double> sweep_frame_ms;
   double sweep_view_ms = 0.0;
+  double sweep_phase_ms[3] = {0.0, 0.0, 0.0};
   double sweep_last = 0.0;
 };
 
@@ -287,7 +288,10 @@ struct AppState {
   int64_t frame = 0;
   double frame_time_s = 0.0;  // duration of the last frame
   double fps = 0.0;           // smoothed
-  int redraw_frames = 2;      // frames still to draw before sleeping until the next event
+  // While a script sweeps the section: milliseconds of the last frame spent building the UI (including the section
+  // and the 3D view's draw calls), rasterizing (3D points and UI, up to glFinish) and swapping buffers.
+  double frame_phase_ms[3] = {0.0, 0.0, 0.0};
+  int redraw_frames = 2;  // frames still to draw before sleeping until the next event
 
   // Testing and docs.
   std::optional<ScriptRun> script;

@@ -99,6 +99,7 @@ Step runSweep(Context& c) {
     r.sweep_frame_ms.clear();
     r.sweep_last = 0.0;
     r.sweep_view_ms = 0.0;
+    for (double& p : r.sweep_phase_ms) p = 0.0;
     return Step::kWait;
   }
   // One section per frame, timed from frame start to frame start (the whole frame: section, 3D view, UI, swap).
@@ -106,6 +107,7 @@ Step runSweep(Context& c) {
   if (r.sweep_last > 0.0) {
     r.sweep_frame_ms.push_back((now - r.sweep_last) * 1000.0);
     r.sweep_view_ms += s.viewport.draw_ms;  // the 3D part of that frame (point rendering into the framebuffer)
+    for (int i = 0; i < 3; ++i) r.sweep_phase_ms[i] += s.frame_phase_ms[i];
   }
   r.sweep_last = now;
   s.viewport.interacting = true;  // what a slider drag does: coarse points while it moves
@@ -118,12 +120,15 @@ Step runSweep(Context& c) {
     for (double v : ms) total += v;
     const double mean = total / double(ms.size());
     const int64_t surface = s.viewport.renderer ? s.viewport.renderer->cloud().size() : 0;
+    const double frames = double(ms.size());
     std::printf(
-        "sweep %s: %zu frames, %d x %d x %d voxels, %s surface points, frame mean %.1f ms (3D view %.1f ms), "
-        "median %.1f ms, %.1f fps (lod %s, last frame drew %s points at level %d)\n",
+        "sweep %s: %zu frames, %d x %d x %d voxels, %s surface points (drew %s at level %d), lod %s: "
+        "mean %.1f ms, median %.1f ms, %.1f fps; per frame: UI + section + 3D draw calls %.1f ms (3D calls %.1f), "
+        "rasterize %.1f ms, swap %.1f ms\n",
         axisName(s.section.axis), ms.size(), s.model.nx(), s.model.ny(), s.model.nz(), std::to_string(surface).c_str(),
-        mean, r.sweep_view_ms / double(ms.size()), ms[ms.size() / 2], 1000.0 / mean, s.view.lod ? "on" : "off",
-        std::to_string(s.viewport.stats.points_drawn).c_str(), s.viewport.stats.lod_level);
+        std::to_string(s.viewport.stats.points_drawn).c_str(), s.viewport.stats.lod_level, s.view.lod ? "on" : "off",
+        mean, ms[ms.size() / 2], 1000.0 / mean, r.sweep_phase_ms[0] / frames, r.sweep_view_ms / frames,
+        r.sweep_phase_ms[1] / frames, r.sweep_phase_ms[2] / frames);
     std::fflush(stdout);
     return Step::kDone;
   }
