@@ -295,9 +295,10 @@ struct AppState {
 
   // Testing and docs.
   std::optional<ScriptRun> script;
-  bool voxelize_after_load = false;      // the bundled model at start-up: voxelize at once instead of asking
-  std::vector<WidgetRect> widget_rects;  // refilled every frame
-  std::string screenshot_on_idle;        // --screenshot PATH: write once everything has settled, then quit
+  bool voxelize_after_load = false;        // the bundled model at start-up: voxelize at once instead of asking
+  bool voxelized_counts_as_saved = false;  // ... and that voxelization is not a change the user could lose
+  std::vector<WidgetRect> widget_rects;    // refilled every frame
+  std::string screenshot_on_idle;          // --screenshot PATH: write once everything has settled, then quit
   int exit_code = 0;
 };
 

@@ -108,6 +108,9 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
     state.panel = Panel::kModel;
     state.panel_change_requested = true;
     if (state.voxelize_after_load || !state.screenshot_on_idle.empty()) {
+      // Voxelized without being asked (the bundled part at start-up): that model is the starting point, not a
+      // change the user could lose.
+      state.voxelized_counts_as_saved = true;
       startVoxelize(state, state.voxelize.params);
     } else if (!state.script) {
       // A mesh is voxelized at the resolution the user picks: show the plan first (a script voxelizes itself).
@@ -135,6 +138,8 @@ void applyVoxelized(AppState& state, VoxelizeResult result, const VoxelizeParams
   const bool first = !state.doc.model.has_value();
   setModel(state, newBase(state, std::move(grid), std::move(origin), "voxelize " + res_text), true);
   if (first) state.view.fit_pending = true;
+  if (state.voxelized_counts_as_saved) state.doc.saved_version = state.doc.model->version;
+  state.voxelized_counts_as_saved = false;
 }
 
 std::string describe(const Error& e, const std::filesystem::path& file) {
