@@ -107,11 +107,13 @@ class Job {
 template <class Key, class T>
 class AsyncValue {
  public:
+  // True when `key` has neither a value (or error) nor a computation under way: request() would start one.
+  bool wants(const Key& key) const {
+    return !((value_ || error_) && value_key_ == key) && !(job_.active() && job_key_ == key);
+  }
   // Makes sure the value for `key` is present or being computed; `work` runs only when it is neither.
   void request(const Key& key, const std::string& label, typename Job<T>::Work work) {
-    if ((value_ && value_key_ == key) || (error_ && value_key_ == key) || (job_.active() && job_key_ == key)) {
-      return;
-    }
+    if (!wants(key)) return;
     job_key_ = key;
     job_.start(label, std::move(work));
   }

@@ -569,29 +569,33 @@ void updateDocument(AppState& state) {
 
   const ModelSnapshot& m = *state.doc.model;
   // The depth map of the base: needed by the Skin panel and by queued peels.
-  if (state.panel == Panel::kSkin || state.skin.pending_peel) {
+  // (Each request runs only when its key has nothing yet: the grid copies for the workers are made only then.)
+  if ((state.panel == Panel::kSkin || state.skin.pending_peel) && state.depth.wants(m.base_id)) {
     VoxelGrid base = m.base;
     state.depth.request(m.base_id, "Computing skin layers", [base](const ProgressFn& progress) {
       auto d = computeDepthMap(base, progress);
       if (!d) return Result<std::shared_ptr<const DepthMap>>(d.error());
       return Result<std::shared_ptr<const DepthMap>>(std::make_shared<const DepthMap>(std::move(d).value()));
     });
-    if (const Error* e = state.depth.error(m.base_id); e && state.skin.pending_peel) {
-      state.skin.pending_peel.reset();
-      reportError(state, "skin removal failed: " + e->message, state.doc.path);
-    }
+  }
+  if (const Error* e = state.depth.error(m.base_id); e && state.skin.pending_peel) {
+    state.skin.pending_peel.reset();
+    reportError(state, "skin removal failed: " + e->message, state.doc.path);
   }
   if (state.skin.pending_peel && currentDepthMap(state)) peelTo(state, *state.skin.pending_peel);
 
-  VoxelGrid grid = state.model;
-  state.surface_stats.request(state.model_version, "Counting surface voxels",
-                              [grid](const ProgressFn&) { return Result<SurfaceStats>(computeSurfaceStats(grid)); });
-  if (state.panel == Panel::kMass) {
+  const VoxelGrid& grid = state.model;
+  if (state.surface_stats.wants(state.model_version)) {
+    state.surface_stats.request(state.model_version, "Counting surface voxels",
+                                [grid](const ProgressFn&) { return Result<SurfaceStats>(computeSurfaceStats(grid)); });
+  }
+  if (state.panel == Panel::kMass && state.mass.wants(state.model_version)) {
     state.mass.request(state.model_version, "Mass properties",
                        [grid](const ProgressFn&) { return Result<MassProperties>(computeMassProperties(grid)); });
   }
-  if (state.panel == Panel::kXray) {
-    const XrayKey key{state.model_version, state.xray.params.axis, state.xray.params.mode};
+  const XrayKey xray_key{state.model_version, state.xray.params.axis, state.xray.params.mode};
+  if (state.panel == Panel::kXray && state.xray_result.wants(xray_key)) {
+    const XrayKey& key = xray_key;
     const XrayParams params = state.xray.params;
     state.xray_result.request(key, "X-ray", [grid, params](const ProgressFn&) {
       auto x = computeXray(grid, params);

@@ -140,14 +140,15 @@ void renderView(AppState& state, int w, int h, bool coarse) {
       render::DrawParams over = params;
       over.lut = render::Lut::kLit;
       // A core of a few voxels would be a few pixels: draw it at least 8 pixels wide so it can be found.
-      if (over.point_size_px <= 0.0) {
+      const bool core = vp.overlay_key % 4 == 1;
+      if (core && over.point_size_px <= 0.0) {
         const render::Camera& cam = state.view.camera;
         const double ppv = render::pixelsPerVoxel(cam, double(h), cam.distance);
         over.point_size_px = std::max(
             6.0,
             render::closedPointSize(ppv, render::pointCoverageFactor(cam, over.round_points, double(w) / double(h))));
       }
-      over.colour = (vp.overlay_key % 4 == 1) ? kCoreColour : kDisputedColour;
+      over.colour = core ? kCoreColour : kDisputedColour;
       over.cull_back_groups = true;
       vp.overlay->draw(state.view.camera, w, h, over);
     }
