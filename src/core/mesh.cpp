@@ -85,6 +85,7 @@ MeshTopology analyzeTopology(const TriangleMesh& mesh) {
     if (uses == 1) ++topo.boundary_edges;
     if (uses >= 3) ++topo.nonmanifold_edges;
     if (uses == 2 && forward != 1) ++topo.inconsistent_edges;
+    if (2 * size_t(forward) != uses) ++topo.unbalanced_edges;
     i = j;
   }
   return topo;

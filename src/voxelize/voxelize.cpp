@@ -435,6 +435,14 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       if (topology->watertight()) {
         result.mode_used = FillMode::kNonzero;
         result.mode_reason = "mesh is closed (" + edges_text + "): using nonzero";
+      } else if (topology->closedOriented()) {
+        // Closed bodies that touch or overlap (an assembly): every edge is used as often in each direction, so
+        // the winding number is exact everywhere and nonzero gives the union, where vote would equal parity and
+        // leave the overlaps empty.
+        result.mode_used = FillMode::kNonzero;
+        result.mode_reason = "mesh is not manifold (" + edges_text +
+                             ") but closed: every edge is used equally often in both directions (touching or "
+                             "overlapping bodies): using nonzero, which fills their union";
       } else {
         result.mode_used = FillMode::kVote;
         result.mode_reason = "mesh is not watertight (" + edges_text + "): using vote";

@@ -31,13 +31,18 @@ struct TriangleMesh {
 };
 
 struct MeshTopology {
-  int64_t vertices = 0;              // distinct positions (exact float equality; -0 == +0)
-  int64_t edges = 0;                 // distinct undirected edges
-  int64_t boundary_edges = 0;        // used by exactly one triangle
-  int64_t nonmanifold_edges = 0;     // used by three or more triangles
-  int64_t inconsistent_edges = 0;    // two-triangle edges traversed in the same direction by both (mixed winding)
+  int64_t vertices = 0;            // distinct positions (exact float equality; -0 == +0)
+  int64_t edges = 0;               // distinct undirected edges
+  int64_t boundary_edges = 0;      // used by exactly one triangle
+  int64_t nonmanifold_edges = 0;   // used by three or more triangles
+  int64_t inconsistent_edges = 0;  // two-triangle edges traversed in the same direction by both (mixed winding)
+  // Edges not traversed equally often in both directions (boundary edges among them). When there are none, the
+  // surface is a closed oriented cycle: the winding number is defined everywhere, even where closed bodies touch
+  // or overlap (non-manifold edges used 2 + 2 times), so the nonzero rule gives their union exactly.
+  int64_t unbalanced_edges = 0;
   int64_t degenerate_triangles = 0;  // a repeated vertex or exactly zero area
   bool watertight() const { return boundary_edges == 0 && nonmanifold_edges == 0; }
+  bool closedOriented() const { return edges > 0 && unbalanced_edges == 0; }
 };
 
 // Welds vertices by exact coordinate equality and counts edges by use. O(T log T).

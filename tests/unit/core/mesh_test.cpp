@@ -42,6 +42,24 @@ TEST(MeshTopology, flippedTriangleIsInconsistentAndDuplicateMakesNonManifoldEdge
   EXPECT_EQ(analyzeTopology(d).nonmanifold_edges, 3);
 }
 
+TEST(MeshTopology, touchingClosedBodiesAreNonManifoldButBalanced) {
+  // Two unit cubes sharing the face x = 1: the shared edges are used four times, twice in each direction.
+  TriangleMesh m = cube();
+  for (Triangle t : cube().triangles) {
+    for (auto& v : t.v) v.x += 1.0f;
+    m.triangles.push_back(t);
+  }
+  const MeshTopology t = analyzeTopology(m);
+  EXPECT_GT(t.nonmanifold_edges, 0);
+  EXPECT_FALSE(t.watertight());
+  EXPECT_EQ(t.unbalanced_edges, 0);
+  EXPECT_TRUE(t.closedOriented());
+  TriangleMesh open = cube();
+  open.triangles.pop_back();
+  EXPECT_EQ(analyzeTopology(open).unbalanced_edges, 3);
+  EXPECT_FALSE(analyzeTopology(open).closedOriented());
+}
+
 TEST(MeshTopology, negativeZeroWeldsWithPositiveZero) {
   TriangleMesh m = cube();
   for (auto& t : m.triangles)

@@ -98,6 +98,12 @@ TEST(BrokenMeshAccuracy, cycloidalAssemblyOverlapsSplitTheRulesExactlyAsTheRefer
       EXPECT_EQ(differing(f.parity.grid, f.nonzero.grid), 9563);
     }
   }
+  // Its bodies are closed (every edge balanced), so auto picks nonzero: the union, not parity's empty overlaps.
+  VoxelizeParams params;
+  params.resolution = 64;
+  auto automatic = voxelizeSolid(stl->mesh, params, {}, &stl->topology);
+  ASSERT_TRUE(automatic.ok()) << automatic.error().message;
+  EXPECT_EQ(automatic->mode_used, FillMode::kNonzero) << automatic->mode_reason;
 }
 
 TEST(BrokenMeshAccuracy, stanfordBunnyHolesAreOutvotedAndDisputed) {
