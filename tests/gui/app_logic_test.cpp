@@ -1,0 +1,308 @@
+// The window's logic without a window: script parsing, settings, background jobs, the action table, and the
+// document operations (open, peel, undo / redo, unsaved state) that the panels and the script share. No GL and no
+// display are needed; the GUI itself is tested under Xvfb by gui_test.sh and files_test.sh.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <set>
+#include <thread>
+
+#include "app/actions.h"
+#include "app/app_state.h"
+#include "app/job.h"
+#include "app/operations.h"
+#include "app/script.h"
+#include "app/settings.h"
+#include "support/test_support.h"
+#include "vox/io/voxel_file.h"
+
+namespace vox::app {
+namespace {
+
+// ---- Script ----
+
+TEST(AppScript, parsesCommandsWithLineNumbersAndRest) {
+  auto s = parseScript("# comment\n\nopen my part.stl\nvoxelize 200 vote  # trailing comment\nwait frames 3\nquit\n",
+                       "t.script");
+  ASSERT_TRUE(s.ok()) << s.error().message;
+  ASSERT_EQ(s->size(), 4u);
+  EXPECT_EQ((*s)[0].line, 3);
+  EXPECT_EQ((*s)[0].name, "open");
+  EXPECT_EQ((*s)[0].rest, "my part.stl");  // paths with spaces survive
+  EXPECT_EQ((*s)[1].args, (std::vector<std::string>{"200", "vote"}));
+  EXPECT_EQ((*s)[2].args, (std::vector<std::string>{"frames", "3"}));
+}
+
+TEST(AppScript, rejectsUnknownCommandsNamingFileAndLine) {
+  auto s = parseScript("open a.stl\nvoxelise 200\n", "t.script");
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.error().message, "t.script:2: unknown command 'voxelise'");
+}
+
+TEST(AppScript, rejectsWrongArgumentCounts) {
+  auto s = parseScript("xray z\n", "t.script");
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.error().message.find("t.script:1: 'xray' takes 2 arguments, found 1"), std::string::npos)
+      << s.error().message;
+  EXPECT_FALSE(parseScript("quit now\n", "t").ok());
+}
+
+// ---- Settings ----
+
+TEST(AppSettings, roundTripsThroughTheIniText) {
+  test::TempDir dir;
+  Settings s;
+  s.window_width = 1000;
+  s.window_height = 700;
+  s.recent_files = {"/a/b c.stl", "/d/e.vxm"};
+  s.last_directory = "/a";
+  s.resolution = 400;
+  s.fill_mode = "vote";
+  s.lit = false;
+  s.round_points = true;
+  s.point_size_px = 3.0f;
+  s.lod = false;
+  ASSERT_TRUE(saveSettings(s, dir / "sub" / "voxmod.ini").ok());  // creates the directory
+  const Settings r = loadSettings(dir / "sub" / "voxmod.ini");
+  EXPECT_EQ(r.window_width, 1000);
+  EXPECT_EQ(r.window_height, 700);
+  EXPECT_EQ(r.recent_files, s.recent_files);
+  EXPECT_EQ(r.last_directory, "/a");
+  EXPECT_EQ(r.resolution, 400);
+  EXPECT_EQ(r.fill_mode, "vote");
+  EXPECT_FALSE(r.lit);
+  EXPECT_TRUE(r.round_points);
+  EXPECT_EQ(r.point_size_px, 3.0f);
+  EXPECT_FALSE(r.lod);
+}
+
+TEST(AppSettings, handEditedNonsenseIsIgnoredOrClamped) {
+  test::TempDir dir;
+  test::writeFile(dir / "voxmod.ini",
+                  "garbage line\nwindow_width = 12\nresolution = 99999\nlit = maybe\n"
+                  "unknown_key = 1\nwindow_height = tall\n");
+  const Settings r = loadSettings(dir / "voxmod.ini");
+  EXPECT_EQ(r.window_width, 640);   // clamped up to a usable window
+  EXPECT_EQ(r.window_height, 800);  // unparsable: default
+  EXPECT_EQ(r.resolution, 4096);
+  EXPECT_TRUE(r.lit);
+  const Settings missing = loadSettings(dir / "nope.ini");
+  EXPECT_EQ(missing.window_width, 1280);
+}
+
+TEST(AppSettings, recentFilesAreDeduplicatedMostRecentFirstAndCapped) {
+  Settings s;
+  for (int i = 0; i < 12; ++i) addRecentFile(s, "/f" + std::to_string(i));
+  addRecentFile(s, "/f5");
+  ASSERT_EQ(s.recent_files.size(), kMaxRecentFiles);
+  EXPECT_EQ(s.recent_files[0], "/f5");
+  EXPECT_EQ(s.recent_files[1], "/f11");
+  EXPECT_EQ(std::count(s.recent_files.begin(), s.recent_files.end(), "/f5"), 1);
+}
+
+// ---- Jobs ----
+
+template <class T>
+Result<T> waitFor(Job<T>& job) {
+  for (int i = 0; i < 2000; ++i) {
+    if (auto r = job.take()) return std::move(*r);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return makeError(ErrorCode::kLimit, "job did not finish");
+}
+
+TEST(AppJob, runsOnAWorkerAndHandsTheResultOverOnce) {
+  Job<int> job;
+  job.start("answer", [](const ProgressFn& progress) -> Result<int> {
+    progress(0.5);
+    return 42;
+  });
+  EXPECT_TRUE(job.active());
+  auto r = waitFor(job);
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(*r, 42);
+  EXPECT_FALSE(job.active());
+  EXPECT_FALSE(job.take().has_value());
+}
+
+TEST(AppJob, cancelReachesTheWorkThroughProgress) {
+  Job<int> job;
+  std::atomic<bool> started{false};
+  job.start("forever", [&started](const ProgressFn& progress) -> Result<int> {
+    started = true;
+    while (progress(0.1)) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    return makeError(ErrorCode::kCancelled, "cancelled");
+  });
+  while (!started) std::this_thread::yield();
+  job.cancel();
+  auto r = waitFor(job);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().code, ErrorCode::kCancelled);
+}
+
+TEST(AppJob, startingAgainRetiresTheRunningJobWithoutWaiting) {
+  Job<int> job;
+  job.start("slow", [](const ProgressFn& progress) -> Result<int> {
+    while (progress(0.0)) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    return 1;
+  });
+  job.start("fast", [](const ProgressFn&) -> Result<int> { return 2; });
+  auto r = waitFor(job);
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(*r, 2);  // the first job's result never arrives
+}
+
+TEST(AppAsyncValue, computesOncePerKeyAndDropsStaleKeys) {
+  AsyncValue<int, int> v;
+  std::atomic<int> runs{0};
+  auto work = [&runs](int x) {
+    return [&runs, x](const ProgressFn&) -> Result<int> {
+      ++runs;
+      return x * 10;
+    };
+  };
+  v.request(1, "one", work(1));
+  v.request(1, "one", work(1));  // already under way
+  for (int i = 0; i < 2000 && !v.get(1); ++i) {
+    v.poll();
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ASSERT_NE(v.get(1), nullptr);
+  EXPECT_EQ(*v.get(1), 10);
+  EXPECT_FALSE(v.wants(1));
+  v.request(1, "one", work(1));  // present: nothing runs
+  EXPECT_EQ(runs.load(), 1);
+  EXPECT_TRUE(v.wants(2));
+  EXPECT_EQ(v.get(2), nullptr);
+}
+
+// ---- Action table ----
+
+TEST(AppActions, everyActionIsInTheTableOnceAndShortcutsAreUnique) {
+  std::set<int> ids;
+  std::set<std::pair<int, int>> shortcuts;
+  for (const Action& a : actionTable()) {
+    EXPECT_TRUE(ids.insert(int(a.id)).second) << a.label;
+    EXPECT_NE(a.run, nullptr) << a.label;
+    if (a.shortcut.key != 0) {
+      EXPECT_TRUE(shortcuts.insert({a.shortcut.key, a.shortcut.mods}).second) << "shortcut of " << a.label;
+    }
+  }
+  for (int id = 0; id <= int(ActionId::kAbout); ++id) EXPECT_TRUE(ids.count(id)) << "ActionId " << id;
+  EXPECT_EQ(shortcutText(action(ActionId::kSaveAs).shortcut), "Ctrl+Shift+S");
+  EXPECT_EQ(shortcutText(action(ActionId::kSectionNext).shortcut), "PgUp");
+  EXPECT_EQ(shortcutText(action(ActionId::kExportBinvox).shortcut), "");
+}
+
+// ---- Document operations ----
+
+// Pumps the per-frame update until `done` holds (the workers run in the background).
+template <class F>
+bool pump(AppState& state, F done) {
+  for (int i = 0; i < 4000; ++i) {
+    updateDocument(state);
+    if (done()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  return false;
+}
+
+// A solid 12 x 10 x 8 block: 4 skin layers, since the thinnest side (8) loses a voxel at both ends per layer.
+VoxelGrid block() {
+  VoxelGrid g(Dims{12, 10, 8});
+  for (int32_t z = 0; z < 8; ++z) {
+    for (int32_t y = 0; y < 10; ++y) g.fillRun(y, z, 0, 12);
+  }
+  return g;
+}
+
+TEST(AppDocument, openPeelUndoRedoAndTheUnsavedState) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
+  AppState state;
+  startOpen(state, dir / "block.vxm");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  EXPECT_EQ(state.model.filledCount(), 12 * 10 * 8);
+  EXPECT_FALSE(hasUnsavedChanges(state));  // as on disk
+  EXPECT_FALSE(canUndo(state));
+
+  // A peel asked for before the depth map exists is queued, then applied.
+  state.panel = Panel::kSkin;
+  peelTo(state, 1);
+  ASSERT_TRUE(state.skin.pending_peel.has_value());
+  ASSERT_TRUE(pump(state, [&] { return !state.skin.pending_peel && state.doc.model->peeled == 1; }));
+  EXPECT_EQ(state.model.filledCount(), 10 * 8 * 6);
+  EXPECT_TRUE(hasUnsavedChanges(state));
+  EXPECT_EQ(peelLayersAvailable(state), 4);  // 8 voxels thick: layers 1..4
+
+  peelTo(state, 100);  // clamped: the core (the last layer) stays
+  EXPECT_EQ(state.doc.model->peeled, 3);
+  EXPECT_EQ(state.model.filledCount(), 6 * 4 * 2);
+
+  undo(state);
+  EXPECT_EQ(state.doc.model->peeled, 1);
+  undo(state);
+  EXPECT_EQ(state.doc.model->peeled, 0);
+  EXPECT_FALSE(hasUnsavedChanges(state));  // back to what the file holds
+  EXPECT_FALSE(canUndo(state));
+  redo(state);
+  EXPECT_EQ(state.doc.model->peeled, 1);
+  EXPECT_EQ(state.model.filledCount(), 10 * 8 * 6);
+
+  // Save makes the current state the saved one; the saved file re-opens equal.
+  ASSERT_TRUE(saveModel(state, dir / "peeled.vxm"));
+  EXPECT_FALSE(hasUnsavedChanges(state));
+  auto back = io::loadVxm(dir / "peeled.vxm");
+  ASSERT_TRUE(back.ok());
+  EXPECT_EQ(back->filledCount(), 10 * 8 * 6);
+}
+
+TEST(AppDocument, aBrokenFileIsAnErrorDialogAndTheDocumentStays) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
+  test::writeFile(dir / "bad.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n");
+  AppState state;
+  startOpen(state, dir / "block.vxm");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  startOpen(state, dir / "bad.stl");
+  ASSERT_TRUE(pump(state, [&] { return !state.errors.messages.empty(); }));
+  EXPECT_NE(state.errors.messages[0].find("bad.stl"), std::string::npos) << state.errors.messages[0];
+  EXPECT_EQ(state.doc.path, dir / "block.vxm");  // the open document is untouched
+  EXPECT_TRUE(state.doc.model.has_value());
+}
+
+TEST(AppDocument, savingNeedsAVoxelExtension) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
+  AppState state;
+  startOpen(state, dir / "block.vxm");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  EXPECT_FALSE(saveModel(state, dir / "block.txt"));
+  ASSERT_EQ(state.errors.messages.size(), 1u);
+  EXPECT_NE(state.errors.messages[0].find("block.txt"), std::string::npos);
+  EXPECT_TRUE(saveModel(state, dir / "copy.binvox"));
+}
+
+TEST(AppDocument, unsavedChangesAskBeforeQuitting) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
+  AppState state;
+  startOpen(state, dir / "block.vxm");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  requestQuit(state);
+  EXPECT_TRUE(state.quit_requested);  // nothing to lose
+  state.quit_requested = false;
+  state.panel = Panel::kSkin;
+  peelTo(state, 1);
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model->peeled == 1; }));
+  requestQuit(state);
+  EXPECT_FALSE(state.quit_requested);
+  EXPECT_TRUE(state.unsaved_prompt_requested);
+  ASSERT_TRUE(state.after_unsaved_prompt);
+  state.after_unsaved_prompt(state);  // "Discard"
+  EXPECT_TRUE(state.quit_requested);
+}
+
+}  // namespace
+}  // namespace vox::app
