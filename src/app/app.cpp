@@ -45,8 +45,10 @@ struct Options {
   int width = 0, height = 0;
 };
 
-// Returns false (after printing why) on a usage error.
-bool parseOptions(int argc, char** argv, Options& o) {
+enum class Parsed { kRun, kHelp, kUsageError };
+
+// On a usage error, prints why.
+Parsed parseOptions(int argc, char** argv, Options& o) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&](std::string& out) {
@@ -58,31 +60,30 @@ bool parseOptions(int argc, char** argv, Options& o) {
       return true;
     };
     if (a == "--script") {
-      if (!value(o.script)) return false;
+      if (!value(o.script)) return Parsed::kUsageError;
     } else if (a == "--screenshot") {
-      if (!value(o.screenshot)) return false;
+      if (!value(o.screenshot)) return Parsed::kUsageError;
     } else if (a == "--size") {
       std::string s;
-      if (!value(s)) return false;
+      if (!value(s)) return Parsed::kUsageError;
       if (std::sscanf(s.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 320 || o.height < 240 ||
           o.width > 16384 || o.height > 16384) {
         std::fprintf(stderr, "voxmod: --size wants WIDTHxHEIGHT (at least 320x240), found '%s'\n", s.c_str());
-        return false;
+        return Parsed::kUsageError;
       }
     } else if (a == "-h" || a == "--help") {
-      std::fputs(kUsage, stdout);
-      std::exit(0);
+      return Parsed::kHelp;
     } else if (!a.empty() && a[0] == '-') {
       std::fprintf(stderr, "voxmod: unknown option '%s'\n%s", a.c_str(), kUsage);
-      return false;
+      return Parsed::kUsageError;
     } else if (o.file.empty()) {
       o.file = a;
     } else {
       std::fprintf(stderr, "voxmod: only one FILE can be opened, found '%s' and '%s'\n", o.file.c_str(), a.c_str());
-      return false;
+      return Parsed::kUsageError;
     }
   }
-  return true;
+  return Parsed::kRun;
 }
 
 // The bundled part: beside the installed executable (<exe dir>/../models or <exe dir>/models), else in the source
@@ -135,7 +136,7 @@ void installCallbacks(GLFWwindow* window) {
   });
 }
 
-void setUpImGui(AppState& state, GLFWwindow* window, const std::string& ini_path) {
+void setUpImGui(GLFWwindow* window, const std::string& ini_path) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
@@ -157,7 +158,6 @@ void setUpImGui(AppState& state, GLFWwindow* window, const std::string& ini_path
   installCallbacks(window);
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
-  (void)state;
 }
 
 // The window's back buffer after ImGui has drawn, as the user sees it.
@@ -195,7 +195,15 @@ bool anyWork(const AppState& s) {
 
 int runGui(int argc, char** argv) {
   Options options;
-  if (!parseOptions(argc, argv, options)) return 1;
+  switch (parseOptions(argc, argv, options)) {
+    case Parsed::kRun:
+      break;
+    case Parsed::kHelp:
+      std::fputs(kUsage, stdout);
+      return 0;
+    case Parsed::kUsageError:
+      return 1;
+  }
 
   AppState state;
   // A script (a test, a benchmark, the documentation's screenshots) starts from the defaults and leaves the user's
@@ -245,7 +253,7 @@ int runGui(int argc, char** argv) {
   // A script measures frame times, so it must not wait for vertical sync.
   glfwSwapInterval(state.script ? 0 : 1);
 
-  setUpImGui(state, window, imgui_ini);
+  setUpImGui(window, imgui_ini);
   if (Status s = initViewport(state); !s) {
     std::fprintf(stderr, "voxmod: %s\n", s.error().message.c_str());
     ImGui_ImplOpenGL3_Shutdown();
@@ -269,10 +277,17 @@ int runGui(int argc, char** argv) {
   std::string title;
   int idle_frames = 0;
   while (!state.quit_requested) {
-    const bool animate = state.script || anyWork(state) || state.section.playing || state.redraw_frames > 0 ||
-                         !state.screenshot_on_idle.empty() || state.viewport.interacting;
-    if (animate) {
+    // Draw continuously only while something moves; while a worker computes, refresh its progress 20 times a
+    // second and leave the CPU to it (llvmpipe draws on the same cores); otherwise sleep until an event.
+    const bool moving = state.section.playing || state.redraw_frames > 0 || state.viewport.interacting ||
+                        (state.script && state.script->sweeping);
+    const bool working =
+        anyWork(state) || (state.script && !state.script->sweeping) || !state.screenshot_on_idle.empty();
+    const bool animate = moving || working;
+    if (moving || (working && !anyWork(state))) {
       glfwPollEvents();
+    } else if (working) {
+      glfwWaitEventsTimeout(0.05);
     } else {
       glfwWaitEventsTimeout(0.5);
     }
