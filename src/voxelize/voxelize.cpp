@@ -217,26 +217,8 @@ PassStats sumStats(const std::vector<PassScratch>& scratch, const RayCaster& cas
   return s;
 }
 
-// Sets padded bits [x0 + 1, x1 + 1) of a row (voxels x0 <= x < x1, clamped to [0, nx)) with word operations.
-void fillBits(uint64_t* row, int64_t nx, int64_t x0, int64_t x1) {
-  x0 = std::max<int64_t>(x0, 0);
-  x1 = std::min<int64_t>(x1, nx);
-  if (x0 >= x1) return;
-  const int64_t b0 = x0 + 1, b1 = x1 + 1;
-  const int64_t w0 = b0 >> 6, w1 = (b1 - 1) >> 6;
-  const uint64_t first = ~uint64_t(0) << (b0 & 63);
-  const uint64_t last = ~uint64_t(0) >> (63 - ((b1 - 1) & 63));
-  if (w0 == w1) {
-    row[w0] |= first & last;
-    return;
-  }
-  row[w0] |= first;
-  for (int64_t w = w0 + 1; w < w1; ++w) row[w] = ~uint64_t(0);
-  row[w1] |= last;
-}
-
 // Rays along X, row = layer z: sort the crossings of each ray and write the inside runs as write(y, x0, x1) (word
-// operations: VoxelGrid::fillRun, or fillBits on a scratch layer).
+// operations: VoxelGrid::fillRun, or fillRowBits on a scratch layer).
 template <class RunWriter>
 void fillRowAlongX(int32_t ny, int32_t nx, const std::vector<Crossing>& crossings, Rule rule, PassScratch& s,
                    RunWriter&& write) {
@@ -571,7 +553,7 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
             sweep_x.next(cx);
             sweep_y.next(cy);
             fillRowAlongX(dims.ny, dims.nx, cx, Rule::kParity, sx[size_t(t)], [&](int32_t y, int64_t x0, int64_t x1) {
-              fillBits(bx.data() + (int64_t(y) + 1) * wpr, dims.nx, x0, x1);
+              fillRowBits(bx.data() + (int64_t(y) + 1) * wpr, dims.nx, x0, x1);
             });
             toggleRowAlongY(by.data(), dims.ny, dims.nx, wpr, cy, sy[size_t(t)]);
             uint64_t* c = grid.mutableLayerWords(z);

@@ -13,20 +13,11 @@ using test::runVoxmod;
 using test::TempDir;
 using json = nlohmann::json;
 
-// Axis-aligned box [0, 1]^3 as a closed, outward-oriented mesh: at --res n it fills an n^3 grid exactly
-// (centres are strictly inside), so peel, mass and X-ray have closed-form answers.
-TriangleMesh unitBox() {
-  const glm::vec3 p[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  const int f[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
-                        {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
-  TriangleMesh m;
-  for (auto& t : f) m.triangles.push_back({{p[t[0]], p[t[1]], p[t[2]]}});
-  return m;
-}
-
+// Every test writes the unit cube [0, 1]^3 as box.stl: at --res n it fills an n^3 grid exactly (centres are
+// strictly inside), so peel, mass and X-ray have closed-form answers.
 class Cli : public ::testing::Test {
  protected:
-  void SetUp() override { ASSERT_TRUE(io::saveStlBinary(unitBox(), box_stl()).ok()); }
+  void SetUp() override { ASSERT_TRUE(io::saveStlBinary(test::unitCubeMesh(), box_stl()).ok()); }
   std::string box_stl() const { return (tmp_ / "box.stl").string(); }
   std::string path(const std::string& name) const { return (tmp_ / name).string(); }
   TempDir tmp_;

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "vox/core/mesh.h"
+
 namespace vox::test {
 
 // ../shared beside the checkout (or $VOXMOD_SHARED_DIR); empty path when it does not exist.
@@ -14,6 +16,9 @@ std::filesystem::path sharedDir();
 bool inCI();
 // The source tree (for tests/data, models/).
 std::filesystem::path sourceDir();
+
+// The unit cube [0, 1]^3 as 12 outward-facing triangles (a closed, consistently oriented mesh).
+TriangleMesh unitCubeMesh();
 
 // A fresh directory under the system temp dir, removed when the object goes out of scope.
 class TempDir {

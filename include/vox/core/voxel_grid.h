@@ -133,6 +133,10 @@ class VoxelGrid {
   std::vector<std::shared_ptr<Layer>> layers_;  // nz + 2 entries, padding layers first and last
 };
 
+// Sets voxels x0 <= x < x1 (clamped to [0, nx)) of one padded row laid out as in VoxelGrid (bit x + 1), with word
+// operations. For callers that fill scratch rows of the same layout; VoxelGrid::fillRun uses it.
+void fillRowBits(uint64_t* row, int64_t nx, int64_t x0, int64_t x1);
+
 // Memory a grid of these dims needs with every layer allocated, in bytes (for refusing before allocating).
 uint64_t estimateGridBytes(const Dims& dims);
 

@@ -2,21 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_support.h"
+
 namespace vox {
 namespace {
 
-// Unit cube from 12 outward-facing triangles.
-TriangleMesh cube() {
-  const glm::vec3 p[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  const int f[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
-                        {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
-  TriangleMesh m;
-  for (auto& t : f) m.triangles.push_back({{p[t[0]], p[t[1]], p[t[2]]}});
-  return m;
-}
-
 TEST(MeshTopology, closedCubeIsWatertightWithPositiveVolume) {
-  const TriangleMesh m = cube();
+  const TriangleMesh m = test::unitCubeMesh();
   const MeshTopology t = analyzeTopology(m);
   EXPECT_EQ(t.vertices, 8);
   EXPECT_EQ(t.edges, 18);
@@ -26,7 +18,7 @@ TEST(MeshTopology, closedCubeIsWatertightWithPositiveVolume) {
 }
 
 TEST(MeshTopology, missingTriangleLeavesThreeBoundaryEdges) {
-  TriangleMesh m = cube();
+  TriangleMesh m = test::unitCubeMesh();
   m.triangles.pop_back();
   const MeshTopology t = analyzeTopology(m);
   EXPECT_EQ(t.boundary_edges, 3);
@@ -34,18 +26,18 @@ TEST(MeshTopology, missingTriangleLeavesThreeBoundaryEdges) {
 }
 
 TEST(MeshTopology, flippedTriangleIsInconsistentAndDuplicateMakesNonManifoldEdges) {
-  TriangleMesh m = cube();
+  TriangleMesh m = test::unitCubeMesh();
   std::swap(m.triangles[0].v[1], m.triangles[0].v[2]);
   EXPECT_EQ(analyzeTopology(m).inconsistent_edges, 3);
-  TriangleMesh d = cube();
+  TriangleMesh d = test::unitCubeMesh();
   d.triangles.push_back(d.triangles[0]);
   EXPECT_EQ(analyzeTopology(d).nonmanifold_edges, 3);
 }
 
 TEST(MeshTopology, touchingClosedBodiesAreNonManifoldButBalanced) {
   // Two unit cubes sharing the face x = 1: the shared edges are used four times, twice in each direction.
-  TriangleMesh m = cube();
-  for (Triangle t : cube().triangles) {
+  TriangleMesh m = test::unitCubeMesh();
+  for (Triangle t : test::unitCubeMesh().triangles) {
     for (auto& v : t.v) v.x += 1.0f;
     m.triangles.push_back(t);
   }
@@ -54,14 +46,14 @@ TEST(MeshTopology, touchingClosedBodiesAreNonManifoldButBalanced) {
   EXPECT_FALSE(t.watertight());
   EXPECT_EQ(t.unbalanced_edges, 0);
   EXPECT_TRUE(t.closedOriented());
-  TriangleMesh open = cube();
+  TriangleMesh open = test::unitCubeMesh();
   open.triangles.pop_back();
   EXPECT_EQ(analyzeTopology(open).unbalanced_edges, 3);
   EXPECT_FALSE(analyzeTopology(open).closedOriented());
 }
 
 TEST(MeshTopology, negativeZeroWeldsWithPositiveZero) {
-  TriangleMesh m = cube();
+  TriangleMesh m = test::unitCubeMesh();
   for (auto& t : m.triangles)
     for (auto& v : t.v)
       if (v.x == 0.0f) v.x = -0.0f;
@@ -70,7 +62,7 @@ TEST(MeshTopology, negativeZeroWeldsWithPositiveZero) {
 }
 
 TEST(MeshTopology, degenerateTrianglesAreCounted) {
-  TriangleMesh m = cube();
+  TriangleMesh m = test::unitCubeMesh();
   m.triangles.push_back({{{0, 0, 0}, {0, 0, 0}, {1, 1, 1}}});  // repeated vertex
   m.triangles.push_back({{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}});  // collinear: zero area
   EXPECT_EQ(analyzeTopology(m).degenerate_triangles, 2);
@@ -79,7 +71,7 @@ TEST(MeshTopology, degenerateTrianglesAreCounted) {
 
 TEST(Box3d, boundsOfMeshAndEmptyBox) {
   EXPECT_TRUE(TriangleMesh{}.bounds().empty());
-  const Box3d b = cube().bounds();
+  const Box3d b = test::unitCubeMesh().bounds();
   EXPECT_EQ(b.min, glm::dvec3(0));
   EXPECT_EQ(b.max, glm::dvec3(1));
 }

@@ -12,18 +12,8 @@ namespace {
 
 std::vector<uint8_t> bytesOf(const std::string& s) { return {s.begin(), s.end()}; }
 
-// Unit cube from 12 outward-facing triangles.
-TriangleMesh cube() {
-  const glm::vec3 p[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  const int f[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
-                        {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
-  TriangleMesh m;
-  for (auto& t : f) m.triangles.push_back({{p[t[0]], p[t[1]], p[t[2]]}});
-  return m;
-}
-
 TEST(Stl, binaryWriterRoundTripsEveryFloatBit) {
-  TriangleMesh m = cube();
+  TriangleMesh m = test::unitCubeMesh();
   m.triangles[3].v[1] = {1e-38f, -0.0f, 3.4e38f};  // a denormal-adjacent value, negative zero, near FLT_MAX
   test::TempDir tmp;
   ASSERT_TRUE(saveStlBinary(m, tmp / "c.stl").ok());
@@ -42,13 +32,13 @@ TEST(Stl, binaryWriterRoundTripsEveryFloatBit) {
 
 TEST(Stl, closedCubeHasNoWarningsAndAnOpenOneSaysHowOpen) {
   test::TempDir tmp;
-  ASSERT_TRUE(saveStlBinary(cube(), tmp / "c.stl").ok());
+  ASSERT_TRUE(saveStlBinary(test::unitCubeMesh(), tmp / "c.stl").ok());
   auto r = loadStl(tmp / "c.stl");
   ASSERT_TRUE(r.ok()) << r.error().message;
   EXPECT_TRUE(r->topology.watertight());
   EXPECT_TRUE(r->warnings.empty());
 
-  TriangleMesh open = cube();
+  TriangleMesh open = test::unitCubeMesh();
   open.triangles.pop_back();
   ASSERT_TRUE(saveStlBinary(open, tmp / "o.stl").ok());
   r = loadStl(tmp / "o.stl");
