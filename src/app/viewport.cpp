@@ -20,6 +20,7 @@ constexpr glm::vec3 kCoreColour{1.0f, 0.2f, 0.85f};
 constexpr glm::vec3 kDisputedColour{1.0f, 0.85f, 0.1f};
 constexpr double kOrbitDegreesPerPixel = 0.4;
 constexpr double kZoomPerWheelStep = 1.15;
+constexpr double kCoarseBelowPixelsPerVoxel = 0.5;
 
 render::SectionAxis toRenderAxis(Axis a) {
   switch (a) {
@@ -260,7 +261,11 @@ void drawViewport(AppState& state) {
   }
   fitIfPending(state, aspect);
   vp.interacting = vp.interacting || dragging;
-  const bool coarse = state.view.lod && vp.interacting;
+  // Coarser points while something moves; and at rest when a voxel covers less than half a pixel, where the full
+  // set only aliases (neighbouring sub-pixel voxels with different codes give a speckled surface) and costs more.
+  const double ppv =
+      state.model_bounds ? render::pixelsPerVoxel(state.view.camera, double(h), state.view.camera.distance) : 1.0;
+  const bool coarse = state.view.lod && (vp.interacting || ppv < kCoarseBelowPixelsPerVoxel);
 
   const std::vector<double> sig = signature(state, w, h, coarse);
   if (vp.dirty || sig != vp.drawn_signature) {
