@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "support/test_support.h"
+#include "unit/render/test_grids.h"
 #include "vox/io/image_io.h"
 
 namespace vox::render::testing {
@@ -103,20 +104,7 @@ void expectMatchesBaseline(const ImageRgba& actual, const std::string& name) {
   }
 }
 
-VoxelGrid ball(double r) {
-  const int32_t n = int32_t(std::ceil(2 * r)) + 4;
-  VoxelGrid g(Dims{n, n, n});
-  const double c = n * 0.5;
-  for (int32_t z = 0; z < n; ++z) {
-    for (int32_t y = 0; y < n; ++y) {
-      const double dy = y + 0.5 - c, dz = z + 0.5 - c, h2 = r * r - dy * dy - dz * dz;
-      if (h2 < 0) continue;
-      const double h = std::sqrt(h2);
-      g.fillRun(y, z, int64_t(std::ceil(c - h - 0.5)), int64_t(std::floor(c + h - 0.5)) + 1);
-    }
-  }
-  return g;
-}
+VoxelGrid ball(double r) { return ball(int32_t(std::ceil(2 * r)) + 4, r); }
 
 void fillBox(VoxelGrid& g, glm::ivec3 lo, glm::ivec3 hi, bool filled) {
   for (int32_t z = lo.z; z < hi.z; ++z)

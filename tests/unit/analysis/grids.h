@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "support/grids.h"
 #include "vox/core/voxel_grid.h"
 
 namespace vox::test {
@@ -44,18 +45,6 @@ inline VoxelGrid ballGrid(Dims d, glm::dvec3 c, double r, GridFrame frame = {}) 
       g.fillRun(y, z, lo, hi);
     }
   }
-  return g;
-}
-
-// Random grid with the given fill probability (deterministic seed).
-inline VoxelGrid randomGrid(Dims d, double p, uint32_t seed) {
-  VoxelGrid g(d);
-  std::mt19937 rng(seed);
-  std::bernoulli_distribution fill(p);
-  for (int z = 0; z < d.nz; ++z)
-    for (int y = 0; y < d.ny; ++y)
-      for (int x = 0; x < d.nx; ++x)
-        if (fill(rng)) g.set(x, y, z);
   return g;
 }
 

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <random>
 
+#include "support/grids.h"
 #include "vox/core/voxel_grid.h"
 
 namespace vox::render::testing {
@@ -37,15 +38,6 @@ inline void fillBox(VoxelGrid& g, glm::ivec3 lo, glm::ivec3 hi) {
 }
 
 // Each voxel filled with probability p: every code occurs, including isolated voxels and thin walls.
-inline VoxelGrid noise(Dims d, double p, uint32_t seed) {
-  VoxelGrid g(d);
-  std::mt19937 rng(seed);
-  std::bernoulli_distribution fill(p);
-  for (int32_t z = 0; z < d.nz; ++z)
-    for (int32_t y = 0; y < d.ny; ++y)
-      for (int32_t x = 0; x < d.nx; ++x)
-        if (fill(rng)) g.set(x, y, z);
-  return g;
-}
+inline VoxelGrid noise(Dims d, double p, uint32_t seed) { return vox::test::randomGrid(d, p, seed); }
 
 }  // namespace vox::render::testing
