@@ -304,5 +304,33 @@ TEST(AppDocument, unsavedChangesAskBeforeQuitting) {
   EXPECT_TRUE(state.quit_requested);
 }
 
+// A save that fails (here: a path below a regular file, which even root cannot create) reports the path, keeps the
+// model and its unsaved state, and a save elsewhere then succeeds.
+TEST(AppDocument, aFailedSaveKeepsTheModelAndAnotherPlaceWorks) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
+  AppState state;
+  startOpen(state, dir / "block.vxm");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  state.panel = Panel::kSkin;
+  peelTo(state, 1);
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model->peeled == 1; }));
+  ASSERT_TRUE(hasUnsavedChanges(state));
+
+  const auto bad = dir / "block.vxm" / "sub.vxm";
+  EXPECT_FALSE(saveModel(state, bad));
+  ASSERT_EQ(state.errors.messages.size(), 1u);
+  EXPECT_NE(state.errors.messages[0].find("sub.vxm"), std::string::npos) << state.errors.messages[0];
+  EXPECT_TRUE(state.doc.model.has_value());
+  EXPECT_EQ(state.doc.model->peeled, 1);
+  EXPECT_TRUE(hasUnsavedChanges(state));
+
+  EXPECT_TRUE(saveModel(state, dir / "elsewhere.vxm"));
+  EXPECT_FALSE(hasUnsavedChanges(state));
+  auto reread = io::loadVxm(dir / "elsewhere.vxm");
+  ASSERT_TRUE(reread.ok()) << reread.error().message;
+  EXPECT_LT(reread->filledCount(), block().filledCount());  // the peeled model was saved
+}
+
 }  // namespace
 }  // namespace vox::app
