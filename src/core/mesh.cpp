@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 
 #include <glm/geometric.hpp>
@@ -30,29 +31,38 @@ bool isDegenerate(const Triangle& t) {
 
 namespace {
 
-// Key for exact welding: the float bits, with -0 folded onto +0.
-std::array<uint32_t, 3> positionKey(const glm::vec3& v) {
-  std::array<uint32_t, 3> k{};
+// Key for welding. Exact (tolerance 0): the float bits, with -0 folded onto +0. With a tolerance: each coordinate
+// rounded to a multiple of it, so positions closer than the tolerance usually (not when they straddle a rounding
+// boundary) share a key: enough to see through exporter noise such as 0 vs 1e-35.
+std::array<int64_t, 3> positionKey(const glm::vec3& v, double tolerance) {
+  std::array<int64_t, 3> k{};
   for (int i = 0; i < 3; ++i) {
-    const float f = v[i] == 0.0f ? 0.0f : v[i];
-    std::memcpy(&k[size_t(i)], &f, sizeof(float));
+    if (tolerance > 0.0) {
+      k[size_t(i)] = std::llround(double(v[i]) / tolerance);
+    } else {
+      const float f = v[i] == 0.0f ? 0.0f : v[i];
+      uint32_t bits = 0;
+      std::memcpy(&bits, &f, sizeof(float));
+      k[size_t(i)] = bits;
+    }
   }
   return k;
 }
 
 }  // namespace
 
-MeshTopology analyzeTopology(const TriangleMesh& mesh) {
+MeshTopology analyzeTopology(const TriangleMesh& mesh, double weld_tolerance) {
   MeshTopology topo;
   const size_t nt = mesh.triangles.size();
   // Weld: sort corner keys, give equal keys one id.
   struct Corner {
-    std::array<uint32_t, 3> key;
+    std::array<int64_t, 3> key;
     uint32_t corner;
   };
   std::vector<Corner> corners(nt * 3);
   for (size_t t = 0; t < nt; ++t) {
-    for (size_t c = 0; c < 3; ++c) corners[t * 3 + c] = {positionKey(mesh.triangles[t].v[c]), uint32_t(t * 3 + c)};
+    for (size_t c = 0; c < 3; ++c)
+      corners[t * 3 + c] = {positionKey(mesh.triangles[t].v[c], weld_tolerance), uint32_t(t * 3 + c)};
   }
   std::sort(corners.begin(), corners.end(), [](const Corner& a, const Corner& b) { return a.key < b.key; });
   std::vector<uint32_t> vid(nt * 3);
@@ -89,6 +99,11 @@ MeshTopology analyzeTopology(const TriangleMesh& mesh) {
     i = j;
   }
   return topo;
+}
+
+double noiseWeldTolerance(const TriangleMesh& mesh) {
+  const Box3d b = mesh.bounds();
+  return b.empty() ? 0.0 : 1e-9 * glm::length(b.extent());
 }
 
 double signedVolume(const TriangleMesh& mesh) {

@@ -45,8 +45,12 @@ struct MeshTopology {
   bool closedOriented() const { return edges > 0 && unbalanced_edges == 0; }
 };
 
-// Welds vertices by exact coordinate equality and counts edges by use. O(T log T).
-MeshTopology analyzeTopology(const TriangleMesh& mesh);
+// Welds vertices by exact coordinate equality (weld_tolerance 0), or by rounding coordinates to multiples of
+// weld_tolerance (model units), and counts edges by use. O(T log T).
+MeshTopology analyzeTopology(const TriangleMesh& mesh, double weld_tolerance = 0.0);
+
+// The tolerance the shared corpus uses to tell exporter noise from real gaps: 1e-9 of the bounding-box diagonal.
+double noiseWeldTolerance(const TriangleMesh& mesh);
 
 // Signed volume by the divergence theorem (positive for an outward-oriented closed mesh), in model units cubed.
 // Summed about the bounding-box centre to limit cancellation.

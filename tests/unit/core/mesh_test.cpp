@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "support/test_support.h"
 
 namespace vox {
@@ -50,6 +52,22 @@ TEST(MeshTopology, touchingClosedBodiesAreNonManifoldButBalanced) {
   open.triangles.pop_back();
   EXPECT_EQ(analyzeTopology(open).unbalanced_edges, 3);
   EXPECT_FALSE(analyzeTopology(open).closedOriented());
+}
+
+TEST(MeshTopology, exporterNoiseOpensTheMeshExactlyButWeldsWithinTheNoiseTolerance) {
+  // As in featuretype.stl: one corner written as 1e-35 in some triangles and 0 in others.
+  TriangleMesh m = test::unitCubeMesh();
+  for (size_t i = 0; i < m.triangles.size(); i += 2)
+    for (auto& v : m.triangles[i].v)
+      if (v == glm::vec3(0, 0, 0)) v.x = 1e-35f;
+  EXPECT_GT(analyzeTopology(m).boundary_edges, 0);
+  EXPECT_NEAR(noiseWeldTolerance(m), 1e-9 * std::sqrt(3.0), 1e-15);
+  const MeshTopology welded = analyzeTopology(m, noiseWeldTolerance(m));
+  EXPECT_TRUE(welded.watertight());
+  EXPECT_TRUE(welded.closedOriented());
+  // A real gap (a missing triangle) stays open at any small tolerance.
+  m.triangles.pop_back();
+  EXPECT_FALSE(analyzeTopology(m, noiseWeldTolerance(m)).closedOriented());
 }
 
 TEST(MeshTopology, negativeZeroWeldsWithPositiveZero) {

@@ -106,6 +106,25 @@ TEST(BrokenMeshAccuracy, cycloidalAssemblyOverlapsSplitTheRulesExactlyAsTheRefer
   EXPECT_EQ(automatic->mode_used, FillMode::kNonzero) << automatic->mode_reason;
 }
 
+TEST(BrokenMeshAccuracy, exporterNoiseDoesNotSendFeaturetypeToVote) {
+  VOX_REQUIRE_SHARED(shared);
+  auto stl = io::loadStl(shared / "meshes" / "featuretype.stl");
+  ASSERT_TRUE(stl.ok()) << stl.error().message;
+  EXPECT_EQ(stl->topology.boundary_edges, 576);  // open by exact vertex equality
+  VoxelizeParams params;
+  params.resolution = 64;
+  auto automatic = voxelizeSolid(stl->mesh, params, {}, &stl->topology);
+  ASSERT_TRUE(automatic.ok()) << automatic.error().message;
+  EXPECT_EQ(automatic->mode_used, FillMode::kNonzero) << automatic->mode_reason;
+  EXPECT_NE(automatic->mode_reason.find("welded"), std::string::npos) << automatic->mode_reason;
+  // The bunny's holes are real: welding does not close them, so auto still votes.
+  auto bunny = io::loadStl(shared / "meshes" / "stanford_bunny.stl");
+  ASSERT_TRUE(bunny.ok()) << bunny.error().message;
+  auto voted = voxelizeSolid(bunny->mesh, params, {}, &bunny->topology);
+  ASSERT_TRUE(voted.ok()) << voted.error().message;
+  EXPECT_EQ(voted->mode_used, FillMode::kVote) << voted->mode_reason;
+}
+
 TEST(BrokenMeshAccuracy, stanfordBunnyHolesAreOutvotedAndDisputed) {
   VOX_REQUIRE_SHARED(shared);
   auto stl = io::loadStl(shared / "meshes" / "stanford_bunny.stl");
