@@ -51,7 +51,15 @@ std::array<int64_t, 3> positionKey(const glm::vec3& v, double tolerance) {
 
 }  // namespace
 
-MeshTopology analyzeTopology(const TriangleMesh& mesh, double weld_tolerance) {
+MeshTopology analyzeTopology(const TriangleMesh& mesh) {
+  MeshTopology topo = analyzeTopologyWelded(mesh, 0.0);
+  if (topo.boundary_edges > 0) {
+    topo.closes_when_noise_welded = analyzeTopologyWelded(mesh, noiseWeldTolerance(mesh)).closedOriented();
+  }
+  return topo;
+}
+
+MeshTopology analyzeTopologyWelded(const TriangleMesh& mesh, double weld_tolerance) {
   MeshTopology topo;
   const size_t nt = mesh.triangles.size();
   // Weld: sort corner keys, give equal keys one id.

@@ -271,9 +271,13 @@ Result<StlLoad> parseStl(std::span<const uint8_t> bytes, const std::string& name
                            " degenerate triangles (zero area; kept)");
   }
   if (!t.watertight()) {
-    out.warnings.push_back(name + ": not watertight: " + std::to_string(t.boundary_edges) + " boundary edges, " +
-                           std::to_string(t.nonmanifold_edges) +
-                           " non-manifold edges (vertices welded by exact equality)");
+    std::string w = name + ": not watertight: " + std::to_string(t.boundary_edges) + " boundary edges, " +
+                    std::to_string(t.nonmanifold_edges) + " non-manifold edges (vertices welded by exact equality)";
+    // Exporter noise (corners that should coincide differing by ~1e-17) is worth telling apart from real holes.
+    if (t.closes_when_noise_welded) {
+      w += "; closed when vertices within 1e-9 of the model's size are welded (exporter noise)";
+    }
+    out.warnings.push_back(std::move(w));
   }
   return out;
 }

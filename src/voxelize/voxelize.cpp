@@ -425,7 +425,7 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
         result.mode_reason = "mesh is not manifold (" + edges_text +
                              ") but closed: every edge is used equally often in both directions (touching or "
                              "overlapping bodies): using nonzero, which fills their union";
-      } else if (topology->boundary_edges > 0 && analyzeTopology(mesh, noiseWeldTolerance(mesh)).closedOriented()) {
+      } else if (topology->closes_when_noise_welded) {
         // Open only by exporter noise (corners that should coincide differ by ~1e-17): closed once vertices within
         // 1e-9 of the bounding-box diagonal are welded. A ray slips through such a seam only if it passes within
         // that distance of it, so nonzero gives the closed solid (on featuretype it matches the reference exactly),

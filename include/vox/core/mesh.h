@@ -41,13 +41,18 @@ struct MeshTopology {
   // or overlap (non-manifold edges used 2 + 2 times), so the nonzero rule gives their union exactly.
   int64_t unbalanced_edges = 0;
   int64_t degenerate_triangles = 0;  // a repeated vertex or exactly zero area
+  // Exact welding found boundary edges, but welding vertices within noiseWeldTolerance() closes the surface
+  // (exporter noise, e.g. a corner written as 0 in one triangle and 1e-35 in the next).
+  bool closes_when_noise_welded = false;
   bool watertight() const { return boundary_edges == 0 && nonmanifold_edges == 0; }
   bool closedOriented() const { return edges > 0 && unbalanced_edges == 0; }
 };
 
-// Welds vertices by exact coordinate equality (weld_tolerance 0), or by rounding coordinates to multiples of
-// weld_tolerance (model units), and counts edges by use. O(T log T).
-MeshTopology analyzeTopology(const TriangleMesh& mesh, double weld_tolerance = 0.0);
+// Welds vertices by exact coordinate equality and counts edges by use; when that leaves boundary edges, a second
+// pass welds within noiseWeldTolerance() to fill closes_when_noise_welded. O(T log T).
+MeshTopology analyzeTopology(const TriangleMesh& mesh);
+// One pass, welding by rounding coordinates to multiples of weld_tolerance (model units; 0 = exact equality).
+MeshTopology analyzeTopologyWelded(const TriangleMesh& mesh, double weld_tolerance);
 
 // The tolerance the shared corpus uses to tell exporter noise from real gaps: 1e-9 of the bounding-box diagonal.
 double noiseWeldTolerance(const TriangleMesh& mesh);
