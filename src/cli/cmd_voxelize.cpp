@@ -42,6 +42,9 @@ int runVoxelize(const VoxelizeOptions& o) {
   if (!result) return out.fail(Error{result.error().code, o.mesh + ": " + result.error().message});
   const double t_voxelized = nowSeconds();
   for (const std::string& w : result->warnings) out.warn(w);
+  // The mesh is no longer needed: release it before the file is encoded, so writing never adds to the peak.
+  const int64_t triangles = int64_t(stl->mesh.triangles.size());
+  std::vector<Triangle>().swap(stl->mesh.triangles);
   VoxelGrid& g = result->grid;
   g.frame().source = std::filesystem::path(o.mesh).filename().string();
 
@@ -60,7 +63,7 @@ int runVoxelize(const VoxelizeOptions& o) {
   auto& d = out.data();
   d["mesh"] = o.mesh;
   d["output"] = o.out;
-  d["triangles"] = int64_t(stl->mesh.triangles.size());
+  d["triangles"] = triangles;
   d["dims"] = {g.nx(), g.ny(), g.nz()};
   d["voxel_size"] = h;
   d["origin"] = jsonVec3(g.frame().origin);
@@ -76,10 +79,9 @@ int runVoxelize(const VoxelizeOptions& o) {
   d["total_s"] = t_written - t0;
   d["grid_bytes"] = g.memoryBytes();
   d["peak_rss_bytes"] = peakRssBytes();
-  out.say("voxelized " + o.mesh + " (" + std::to_string(stl->mesh.triangles.size()) + " triangles) to " +
-          std::to_string(g.nx()) + " x " + std::to_string(g.ny()) + " x " + std::to_string(g.nz()) + ", " +
-          std::to_string(filled) + " filled voxels, mode " + fillModeName(result->mode_used) + " (" +
-          result->mode_reason + ")");
+  out.say("voxelized " + o.mesh + " (" + std::to_string(triangles) + " triangles) to " + std::to_string(g.nx()) +
+          " x " + std::to_string(g.ny()) + " x " + std::to_string(g.nz()) + ", " + std::to_string(filled) +
+          " filled voxels, mode " + fillModeName(result->mode_used) + " (" + result->mode_reason + ")");
   if (result->mode_used == FillMode::kVote) {
     out.say(std::to_string(result->disputed_count) + " voxels in dispute between the three ray directions");
   }

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
@@ -31,22 +33,115 @@ bool isDegenerate(const Triangle& t) {
 
 namespace {
 
-// Key for welding. Exact (tolerance 0): the float bits, with -0 folded onto +0. With a tolerance: each coordinate
+// Welding keys. Exact (tolerance 0): the float bits, with -0 folded onto +0. With a tolerance: each coordinate
 // rounded to a multiple of it, so positions closer than the tolerance usually (not when they straddle a rounding
 // boundary) share a key: enough to see through exporter noise such as 0 vs 1e-35.
-std::array<int64_t, 3> positionKey(const glm::vec3& v, double tolerance) {
-  std::array<int64_t, 3> k{};
-  for (int i = 0; i < 3; ++i) {
-    if (tolerance > 0.0) {
-      k[size_t(i)] = std::llround(double(v[i]) / tolerance);
-    } else {
-      const float f = v[i] == 0.0f ? 0.0f : v[i];
-      uint32_t bits = 0;
-      std::memcpy(&bits, &f, sizeof(float));
-      k[size_t(i)] = bits;
+using ExactKey = std::array<uint32_t, 3>;
+using RoundedKey = std::array<int64_t, 3>;
+
+ExactKey exactKey(const glm::vec3& v) {
+  ExactKey k{};
+  for (int i = 0; i < 3; ++i) k[size_t(i)] = std::bit_cast<uint32_t>(v[i] == 0.0f ? 0.0f : v[i]);
+  return k;
+}
+
+RoundedKey roundedKey(const glm::vec3& v, double tolerance) {
+  RoundedKey k{};
+  for (int i = 0; i < 3; ++i) k[size_t(i)] = std::llround(double(v[i]) / tolerance);
+  return k;
+}
+
+template <class Key>
+uint64_t hashKey(const Key& k) {
+  // Each coordinate folded in with a multiply and a rotation, then a final avalanche (splitmix64's finalizer).
+  uint64_t h = 0x9E3779B97F4A7C15ull;
+  for (const auto c : k) h = std::rotl((h ^ uint64_t(c)) * 0xBF58476D1CE4E5B9ull, 29);
+  h ^= h >> 31;
+  h *= 0x94D049BB133111EBull;
+  return h ^ (h >> 29);
+}
+
+// Vertex ids for the 3 * T corners: equal keys get one id, numbered in order of first appearance. An open-addressing
+// hash table of distinct positions (kept at most half full) rather than a sort of all corners: about 16 bytes per
+// vertex (a closed mesh has about T / 2 vertices) instead of 32 per corner, and one pass instead of a sort.
+template <class Key, class KeyFn>
+std::vector<uint32_t> weldCorners(const TriangleMesh& mesh, KeyFn&& key_of, int64_t& vertices) {
+  struct Slot {
+    Key key;
+    uint32_t id;
+  };
+  constexpr uint32_t kEmpty = UINT32_MAX;
+  const size_t corners = mesh.triangles.size() * 3;
+  std::vector<uint32_t> vid(corners);
+  size_t capacity = std::bit_ceil(std::max<size_t>(16, mesh.triangles.size()));
+  std::vector<Slot> table(capacity, Slot{Key{}, kEmpty});
+  uint32_t next = 0;
+  auto insert = [&](std::vector<Slot>& t, const Key& key, uint32_t id) -> uint32_t {
+    const size_t mask = t.size() - 1;
+    for (size_t i = size_t(hashKey(key)) & mask;; i = (i + 1) & mask) {
+      if (t[i].id == kEmpty) {
+        t[i] = Slot{key, id};
+        return id;
+      }
+      if (t[i].key == key) return t[i].id;
+    }
+  };
+  for (size_t c = 0; c < corners; ++c) {
+    const uint32_t id = insert(table, key_of(mesh.triangles[c / 3].v[c % 3]), next);
+    vid[c] = id;
+    if (id != next) continue;
+    if (++next > capacity / 2) {  // grow: rehash into twice the slots
+      capacity *= 2;
+      std::vector<Slot> bigger(capacity, Slot{Key{}, kEmpty});
+      for (const Slot& s : table) {
+        if (s.id != kEmpty) insert(bigger, s.key, s.id);
+      }
+      table.swap(bigger);
     }
   }
-  return k;
+  vertices = next;
+  return vid;
+}
+
+// Counts edge uses from the corners' vertex ids. Directed edges are bucketed by their lower vertex (a counting
+// sort); each bucket is small (a vertex's higher neighbours), sorted on its own, and equal upper vertices are one
+// undirected edge. An entry holds the upper vertex and the direction: (hi << 1) | forward, in 32 bits while the ids
+// allow it.
+template <class Packed>
+void countEdges(const std::vector<uint32_t>& vid, int64_t vertices, MeshTopology& topo) {
+  const size_t corners = vid.size();
+  std::vector<size_t> start(size_t(vertices) + 1, 0);
+  for (size_t c = 0; c < corners; ++c) {
+    const uint32_t a = vid[c], b = vid[c - c % 3 + (c + 1) % 3];
+    if (a != b) ++start[size_t(std::min(a, b)) + 1];
+  }
+  for (size_t v = 0; v < size_t(vertices); ++v) start[v + 1] += start[v];
+  std::vector<Packed> entries(start[size_t(vertices)]);
+  {
+    std::vector<size_t> fill(start.begin(), start.end() - 1);
+    for (size_t c = 0; c < corners; ++c) {
+      const uint32_t a = vid[c], b = vid[c - c % 3 + (c + 1) % 3];
+      if (a == b) continue;
+      const Packed forward = a < b ? 1 : 0;
+      entries[fill[std::min(a, b)]++] = Packed(std::max(a, b)) << 1 | forward;
+    }
+  }
+  for (size_t v = 0; v < size_t(vertices); ++v) {
+    const auto b = entries.begin() + ptrdiff_t(start[v]), e = entries.begin() + ptrdiff_t(start[v + 1]);
+    std::sort(b, e);
+    for (auto i = b; i != e;) {
+      auto j = i;
+      size_t forward = 0;
+      while (j != e && (*j >> 1) == (*i >> 1)) forward += size_t(*j++ & 1);
+      const size_t uses = size_t(j - i);
+      ++topo.edges;
+      if (uses == 1) ++topo.boundary_edges;
+      if (uses >= 3) ++topo.nonmanifold_edges;
+      if (uses == 2 && forward != 1) ++topo.inconsistent_edges;
+      if (2 * forward != uses) ++topo.unbalanced_edges;
+      i = j;
+    }
+  }
 }
 
 }  // namespace
@@ -61,50 +156,19 @@ MeshTopology analyzeTopology(const TriangleMesh& mesh) {
 
 MeshTopology analyzeTopologyWelded(const TriangleMesh& mesh, double weld_tolerance) {
   MeshTopology topo;
-  const size_t nt = mesh.triangles.size();
-  // Weld: sort corner keys, give equal keys one id.
-  struct Corner {
-    std::array<int64_t, 3> key;
-    uint32_t corner;
-  };
-  std::vector<Corner> corners(nt * 3);
-  for (size_t t = 0; t < nt; ++t) {
-    for (size_t c = 0; c < 3; ++c)
-      corners[t * 3 + c] = {positionKey(mesh.triangles[t].v[c], weld_tolerance), uint32_t(t * 3 + c)};
+  // Corners are numbered in 32 bits.
+  if (mesh.triangles.size() > UINT32_MAX / 3) {
+    throw std::length_error("analyzeTopology: more than 1431655765 triangles");
   }
-  std::sort(corners.begin(), corners.end(), [](const Corner& a, const Corner& b) { return a.key < b.key; });
-  std::vector<uint32_t> vid(nt * 3);
-  uint32_t next = 0;
-  for (size_t i = 0; i < corners.size(); ++i) {
-    if (i > 0 && corners[i].key != corners[i - 1].key) ++next;
-    vid[corners[i].corner] = next;
-  }
-  topo.vertices = corners.empty() ? 0 : int64_t(next) + 1;
-
-  // Each directed edge as ((min id << 32) | max id, forward?); equal keys after sorting are one undirected edge.
-  std::vector<std::pair<uint64_t, uint8_t>> de;
-  de.reserve(nt * 3);
-  for (size_t t = 0; t < nt; ++t) {
-    if (isDegenerate(mesh.triangles[t])) ++topo.degenerate_triangles;
-    for (size_t c = 0; c < 3; ++c) {
-      const uint32_t a = vid[t * 3 + c], b = vid[t * 3 + (c + 1) % 3];
-      if (a == b) continue;
-      const uint64_t lo = std::min(a, b), hi = std::max(a, b);
-      de.emplace_back(lo << 32 | hi, uint8_t(a < b ? 1 : 0));
-    }
-  }
-  std::sort(de.begin(), de.end());
-  for (size_t i = 0; i < de.size();) {
-    size_t j = i;
-    int forward = 0;
-    while (j < de.size() && de[j].first == de[i].first) forward += de[j++].second;
-    const size_t uses = j - i;
-    ++topo.edges;
-    if (uses == 1) ++topo.boundary_edges;
-    if (uses >= 3) ++topo.nonmanifold_edges;
-    if (uses == 2 && forward != 1) ++topo.inconsistent_edges;
-    if (2 * size_t(forward) != uses) ++topo.unbalanced_edges;
-    i = j;
+  std::vector<uint32_t> vid =
+      weld_tolerance > 0.0 ? weldCorners<RoundedKey>(
+                                 mesh, [&](const glm::vec3& v) { return roundedKey(v, weld_tolerance); }, topo.vertices)
+                           : weldCorners<ExactKey>(mesh, exactKey, topo.vertices);
+  for (const Triangle& t : mesh.triangles) topo.degenerate_triangles += isDegenerate(t) ? 1 : 0;
+  if (topo.vertices < (int64_t(1) << 31)) {
+    countEdges<uint32_t>(vid, topo.vertices, topo);
+  } else {
+    countEdges<uint64_t>(vid, topo.vertices, topo);
   }
   return topo;
 }

@@ -227,10 +227,16 @@ bool startsWithSolid(std::span<const uint8_t> bytes) {
   return keywordIs(rest, "solid");
 }
 
-}  // namespace
+// The topology pass numbers corners in 32 bits.
+constexpr uint64_t kMaxTriangles = UINT32_MAX / 3;
 
-Result<StlLoad> parseStl(std::span<const uint8_t> bytes, const std::string& name) {
-  StlLoad out;
+Error tooManyTriangles(const std::string& name, uint64_t count) {
+  return makeError(ErrorCode::kLimit, name + ": " + std::to_string(count) + " triangles; voxmod reads at most " +
+                                          std::to_string(kMaxTriangles));
+}
+
+// The triangles of an STL file (binary or ASCII, decided by content); topology and warnings come later.
+Status parseStlMesh(std::span<const uint8_t> bytes, const std::string& name, StlLoad& out) {
   out.mesh.name = name;
   if (bytes.empty()) return makeError(ErrorCode::kParse, name + ": file is empty");
 
@@ -243,12 +249,14 @@ Result<StlLoad> parseStl(std::span<const uint8_t> bytes, const std::string& name
     out.ascii = false;
     out.header = trimmed(std::string_view(reinterpret_cast<const char*>(bytes.data()), kBinaryHeaderBytes));
     if (count == 0) return makeError(ErrorCode::kParse, name + ": binary STL contains no triangles");
-    if (Status s = parseBinary(bytes, name, out); !s.ok()) return s.error();
+    if (count > kMaxTriangles) return tooManyTriangles(name, count);
+    if (Status s = parseBinary(bytes, name, out); !s.ok()) return s;
   } else if (solid && std::memchr(bytes.data(), 0, bytes.size()) == nullptr) {
     out.ascii = true;
     AsciiParser parser(bytes, name);
-    if (Status s = parser.parse(out); !s.ok()) return s.error();
+    if (Status s = parser.parse(out); !s.ok()) return s;
     if (out.mesh.triangles.empty()) return makeError(ErrorCode::kParse, name + ": ASCII STL contains no triangles");
+    if (out.mesh.triangles.size() > kMaxTriangles) return tooManyTriangles(name, out.mesh.triangles.size());
   } else {
     const std::string why =
         solid ? " (it starts with 'solid' but holds binary data, so it is not ASCII)" : std::string();
@@ -264,6 +272,12 @@ Result<StlLoad> parseStl(std::span<const uint8_t> bytes, const std::string& name
                                             std::to_string(size - expected) + " extra)" + why);
   }
 
+  return Ok{};
+}
+
+// Topology (the watertightness check) and the warnings it gives.
+void finishStlLoad(StlLoad& out) {
+  const std::string& name = out.mesh.name;
   out.topology = analyzeTopology(out.mesh);
   const MeshTopology& t = out.topology;
   if (t.degenerate_triangles > 0) {
@@ -279,13 +293,26 @@ Result<StlLoad> parseStl(std::span<const uint8_t> bytes, const std::string& name
     }
     out.warnings.push_back(std::move(w));
   }
+}
+
+}  // namespace
+
+Result<StlLoad> parseStl(std::span<const uint8_t> bytes, const std::string& name) {
+  StlLoad out;
+  if (Status s = parseStlMesh(bytes, name, out); !s.ok()) return s.error();
+  finishStlLoad(out);
   return out;
 }
 
 Result<StlLoad> loadStl(const std::filesystem::path& path) {
-  auto bytes = readFileBytes(path);
-  if (!bytes.ok()) return bytes.error();
-  return parseStl(bytes.value(), path.string());
+  StlLoad out;
+  {
+    auto bytes = readFileBytes(path);
+    if (!bytes.ok()) return bytes.error();
+    if (Status s = parseStlMesh(bytes.value(), path.string(), out); !s.ok()) return s.error();
+  }  // the file's bytes are released before the topology pass allocates its own
+  finishStlLoad(out);
+  return out;
 }
 
 Status saveStlBinary(const TriangleMesh& mesh, const std::filesystem::path& path) {

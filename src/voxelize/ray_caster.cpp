@@ -71,125 +71,124 @@ std::vector<double> centresAlong(const GridPlacement& placement, int axis) {
 }  // namespace
 
 RayCaster::RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, RayAxes axes, int threads)
-    : axes_(axes),
+    : mesh_(mesh),
+      axes_(axes),
       h_(placement.frame.voxel_size),
       inv_h_(1.0 / placement.frame.voxel_size),
-      origin_u_(placement.frame.origin[axes.u]) {
+      origin_u_(placement.frame.origin[axes.u]),
+      origin_v_(placement.frame.origin[axes.v]),
+      origin_w_(placement.frame.origin[axes.w]) {
   cu_ = centresAlong(placement, axes.u);
   cv_ = centresAlong(placement, axes.v);
   cw_ = centresAlong(placement, axes.w);
-  const double ov = placement.frame.origin[axes.v], ow = placement.frame.origin[axes.w];
-  auto project = [&](const Triangle& in, Tri& t) {
-    for (int k = 0; k < 3; ++k) {
-      t.p[k][0] = in.v[k][axes.u];
-      t.p[k][1] = in.v[k][axes.v];
-      t.p[k][2] = in.v[k][axes.w];
-    }
-  };
-  // Sets t's sign and ranges; false when no displaced ray can cross it.
-  auto classify = [&](Tri& t) {
-    // Orientation of the projection = sign of the normal's u component, exactly. Zero area: no displaced ray
-    // can be strictly inside (the three edge signs sum to the area), so the triangle is never crossed.
-    t.sign = orient2d(t.p[0][1], t.p[0][2], t.p[1][1], t.p[1][2], t.p[2][1], t.p[2][2]);
-    if (t.sign == 0) return false;
-    // The displaced ray (v + eps^3, w + eps^2) can be inside the projection only when min <= centre < max on both
-    // axes: at centre == max it is already past the maximum.
-    t.row_lo = firstAtOrAbove(cw_, ow, h_, std::min({t.p[0][2], t.p[1][2], t.p[2][2]}));
-    t.row_hi = firstAtOrAbove(cw_, ow, h_, std::max({t.p[0][2], t.p[1][2], t.p[2][2]}));
-    if (t.row_lo >= t.row_hi) return false;
-    t.ray_lo = firstAtOrAbove(cv_, ov, h_, std::min({t.p[0][1], t.p[1][1], t.p[2][1]}));
-    t.ray_hi = firstAtOrAbove(cv_, ov, h_, std::max({t.p[0][1], t.p[1][1], t.p[2][1]}));
-    return t.ray_lo < t.ray_hi;
-  };
   // Counting sort by first row, so a sweep activates triangles in order. Chunks of the input are contiguous and
   // scattered in chunk order, so the result (row, then input order) does not depend on the number of threads.
-  // The first pass keeps each triangle's sign and ranges (20 bytes) so the second only copies.
-  struct Ranges {
-    int32_t row_lo = -1, row_hi, ray_lo, ray_hi, sign;
+  // The first pass keeps each triangle's rows (8 bytes, row_lo < 0 for a dropped triangle) so the second only
+  // scatters.
+  struct Rows {
+    int32_t lo = -1, hi = 0;
   };
   const int64_t nt = int64_t(mesh.triangles.size());
   const size_t rows = cw_.size();
   threads = int(std::clamp<int64_t>(threads, 1, std::max<int64_t>(1, nt / 16384)));
-  std::vector<Ranges> ranges(static_cast<size_t>(nt));
+  std::vector<Rows> tri_rows(static_cast<size_t>(nt));
   std::vector<std::vector<size_t>> count(size_t(threads), std::vector<size_t>(rows, 0));
   forChunks(nt, threads, [&](int c, int64_t begin, int64_t end) {
     auto& mine = count[size_t(c)];
     for (int64_t i = begin; i < end; ++i) {
       Tri t;
-      project(mesh.triangles[size_t(i)], t);
-      if (!classify(t)) continue;
-      ranges[size_t(i)] = Ranges{t.row_lo, t.row_hi, t.ray_lo, t.ray_hi, t.sign};
+      if (!classify(size_t(i), t)) continue;
+      tri_rows[size_t(i)] = Rows{t.row_lo, t.row_hi};
       ++mine[size_t(t.row_lo)];
     }
   });
+  row_start_.assign(rows + 1, 0);
   size_t total = 0;
   for (size_t r = 0; r < rows; ++r) {
+    row_start_[r] = total;
     for (auto& mine : count) {
       const size_t n = mine[r];
       mine[r] = total;  // becomes the chunk's next slot in row r
       total += n;
     }
   }
-  tris_.resize(total);
+  row_start_[rows] = total;
+  entries_.resize(total);
   forChunks(nt, threads, [&](int c, int64_t begin, int64_t end) {
     auto& next = count[size_t(c)];
     for (int64_t i = begin; i < end; ++i) {
-      const Ranges& r = ranges[size_t(i)];
-      if (r.row_lo < 0) continue;
-      Tri& t = tris_[next[size_t(r.row_lo)]++];
-      project(mesh.triangles[size_t(i)], t);
-      t.row_lo = r.row_lo;
-      t.row_hi = r.row_hi;
-      t.ray_lo = r.ray_lo;
-      t.ray_hi = r.ray_hi;
-      t.sign = r.sign;
+      const Rows& r = tri_rows[size_t(i)];
+      if (r.lo >= 0) entries_[next[size_t(r.lo)]++] = Entry{uint32_t(i), r.hi};
     }
   });
 }
 
+bool RayCaster::classify(size_t i, Tri& t) const {
+  const Triangle& in = mesh_.triangles[i];
+  for (int k = 0; k < 3; ++k) {
+    t.p[k][0] = in.v[k][axes_.u];
+    t.p[k][1] = in.v[k][axes_.v];
+    t.p[k][2] = in.v[k][axes_.w];
+  }
+  // Orientation of the projection = sign of the normal's u component, exactly. Zero area: no displaced ray can be
+  // strictly inside (the three edge signs sum to the area), so the triangle is never crossed.
+  t.sign = orient2d(t.p[0][1], t.p[0][2], t.p[1][1], t.p[1][2], t.p[2][1], t.p[2][2]);
+  if (t.sign == 0) return false;
+  // The displaced ray (v + eps^3, w + eps^2) can be inside the projection only when min <= centre < max on both
+  // axes: at centre == max it is already past the maximum.
+  t.row_lo = firstAtOrAbove(cw_, origin_w_, h_, std::min({t.p[0][2], t.p[1][2], t.p[2][2]}));
+  t.row_hi = firstAtOrAbove(cw_, origin_w_, h_, std::max({t.p[0][2], t.p[1][2], t.p[2][2]}));
+  if (t.row_lo >= t.row_hi) return false;
+  t.ray_lo = firstAtOrAbove(cv_, origin_v_, h_, std::min({t.p[0][1], t.p[1][1], t.p[2][1]}));
+  t.ray_hi = firstAtOrAbove(cv_, origin_v_, h_, std::max({t.p[0][1], t.p[1][1], t.p[2][1]}));
+  return t.ray_lo < t.ray_hi;
+}
+
 RayCaster::RowSweep::RowSweep(const RayCaster& caster, int32_t row_begin) : caster_(caster), row_(row_begin) {
-  const auto& tris = caster.tris_;
-  next_start_ =
-      size_t(std::partition_point(tris.begin(), tris.end(), [&](const Tri& t) { return t.row_lo < row_begin; }) -
-             tris.begin());
-  for (size_t i = 0; i < next_start_; ++i) {
-    if (tris[i].row_hi > row_begin) {
-      active_.push_back(uint32_t(i));
-      planes_.emplace_back(tris[i], caster);
-    }
+  const size_t begin = caster.row_start_[size_t(std::clamp(row_begin, 0, caster.rows()))];
+  for (size_t e = 0; e < begin; ++e) {
+    if (caster.entries_[e].row_hi > row_begin) activate(e);
   }
 }
 
+void RayCaster::RowSweep::activate(size_t entry) {
+  Tri t;
+  // Kept triangles were classified as crossable when the caster was built; the same computation gives the same
+  // answer here.
+  caster_.classify(caster_.entries_[entry].triangle, t);
+  planes_.emplace_back(t, caster_);
+}
+
 void RayCaster::RowSweep::next(std::vector<Crossing>& out) {
-  const auto& tris = caster_.tris_;
-  while (next_start_ < tris.size() && tris[next_start_].row_lo <= row_) {
-    active_.push_back(uint32_t(next_start_));
-    planes_.emplace_back(tris[next_start_++], caster_);
+  if (row_ >= caster_.rows()) return;
+  const size_t begin = caster_.row_start_[size_t(row_)], end = caster_.row_start_[size_t(row_) + 1];
+  // The triangles of a row lie anywhere in the mesh: fetch a few ahead so their cache misses overlap.
+  constexpr size_t kAhead = 8;
+  for (size_t e = begin; e < std::min(end, begin + kAhead); ++e) caster_.prefetch(e);
+  for (size_t e = begin; e < end; ++e) {
+    if (e + kAhead < end) caster_.prefetch(e + kAhead);
+    activate(e);
   }
   size_t keep = 0;
-  for (size_t k = 0; k < active_.size(); ++k) {
-    const Tri& t = tris[active_[k]];
-    caster_.rowCrossings(t, planes_[k], row_, out);
-    if (t.row_hi > row_ + 1) {
-      if (keep != k) {
-        active_[keep] = active_[k];
-        planes_[keep] = planes_[k];
-      }
+  for (size_t k = 0; k < planes_.size(); ++k) {
+    const Plane& plane = planes_[k];
+    caster_.rowCrossings(plane, row_, out);
+    if (plane.row_hi > row_ + 1) {
+      if (keep != k) planes_[keep] = plane;
       ++keep;
     }
   }
-  active_.resize(keep);
   planes_.resize(keep);
   ++row_;
 }
 
-void RayCaster::rowCrossings(const Tri& t, const Plane& plane, int32_t row, std::vector<Crossing>& out) const {
+void RayCaster::rowCrossings(const Plane& plane, int32_t row, std::vector<Crossing>& out) const {
   const double w = cw_[size_t(row)];
   const double av = plane.a[1], aw = plane.a[2], bv = plane.b[1], bw = plane.b[2], cv = plane.c[1], cw = plane.c[2];
-  int32_t j0 = t.ray_lo, j1 = t.ray_hi;
+  int32_t j0 = plane.ray_lo, j1 = plane.ray_hi;
   // Rays strictly inside (inner_lo, inner_hi) are certainly crossed; empty unless the section below is computed.
   double inner_lo = 0.0, inner_hi = 0.0;
-  if (j1 - j0 > 2 && t.row_hi - t.row_lo > 1) {
+  if (j1 - j0 > 2 && plane.row_hi - plane.row_lo > 1) {
     // A triangle spanning several rows is usually much narrower in one row than its bounding box (long slivers in
     // CAD meshes): intersect the projection with the line at w, [lo, hi]. Computed in double, each end is off by
     // at most about 10 ulps of the largest coordinate involved; `margin` is a thousand times that. Rays farther
@@ -229,20 +228,21 @@ void RayCaster::rowCrossings(const Tri& t, const Plane& plane, int32_t row, std:
   for (int32_t j = j0; j < j1; ++j) {
     const double v = cv_[size_t(j)];
     if (!(v > inner_lo && v < inner_hi)) {
-      if (edgeSide(av, aw, bv, bw, v, w) != t.sign) continue;
-      if (edgeSide(bv, bw, cv, cw, v, w) != t.sign) continue;
-      if (edgeSide(cv, cw, av, aw, v, w) != t.sign) continue;
+      if (edgeSide(av, aw, bv, bw, v, w) != plane.sign) continue;
+      if (edgeSide(bv, bw, cv, cw, v, w) != plane.sign) continue;
+      if (edgeSide(cv, cw, av, aw, v, w) != plane.sign) continue;
     }
     if (!have_row) {
       const double rw = w - plane.a[2];
       plane_row = PlaneRow{plane.n[2] * rw, plane.w_error * std::abs(rw)};
       have_row = true;
     }
-    out.push_back(Crossing{j, firstPast(plane, plane_row, v, w), t.sign});
+    out.push_back(Crossing{j, firstPast(plane, plane_row, v, w), plane.sign});
   }
 }
 
-RayCaster::Plane::Plane(const Tri& t, const RayCaster& caster) : sign(t.sign) {
+RayCaster::Plane::Plane(const Tri& t, const RayCaster& caster)
+    : sign(t.sign), row_lo(t.row_lo), row_hi(t.row_hi), ray_lo(t.ray_lo), ray_hi(t.ray_hi) {
   for (int k = 0; k < 3; ++k) {
     a[k] = t.p[0][k];
     b[k] = t.p[1][k];

@@ -32,9 +32,10 @@ struct Crossing {
 
 class RayCaster {
  public:
-  // Prepares the triangles for this ray family: float32 vertices in (u, v, w) order, the rows and rays each can
-  // cross, sorted by first row (counting sort, on up to `threads` threads). Triangles whose projection onto (v, w)
-  // has exactly zero area are dropped: no displaced ray crosses them. O(T + rows) time, 56 bytes per triangle.
+  // Prepares the triangles for this ray family: the rows each can cross, sorted by first row (counting sort, on up
+  // to `threads` threads). Triangles whose projection onto (v, w) has exactly zero area are dropped: no displaced
+  // ray crosses them. Keeps a reference to `mesh`, which must outlive the caster. O(T + rows) time; 8 bytes per
+  // triangle (its index and last row), the vertices being read from the mesh when a sweep reaches the triangle.
   RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, RayAxes axes, int threads);
 
   int32_t rows() const { return int32_t(cw_.size()); }
@@ -42,15 +43,32 @@ class RayCaster {
   int32_t length() const { return int32_t(cu_.size()); }
   const RayAxes& axes() const { return axes_; }
   // Triangles kept (with a projection of nonzero area that some ray may cross).
-  size_t triangles() const { return tris_.size(); }
+  size_t triangles() const { return entries_.size(); }
 
  private:
+  // A kept triangle: its index in the mesh and one past its last row. Its first row is implied by the position
+  // in entries_ (row_start_).
+  struct Entry {
+    uint32_t triangle;
+    int32_t row_hi;
+  };
+
+  // A triangle in the ray frame: float32 vertices in (u, v, w) order, the rows and rays it can cross.
   struct Tri {
     float p[3][3];           // vertices A, B, C; each (u, v, w)
     int32_t row_lo, row_hi;  // rows with w_min <= w_k < w_max
     int32_t ray_lo, ray_hi;  // rays with v_min <= v_j < v_max
     int32_t sign;            // exact sign of the normal's u component (orientation of the projection), never 0
   };
+  // Projects mesh triangle `i` into the ray frame and sets its sign and ranges; false when no displaced ray can
+  // cross it.
+  bool classify(size_t i, Tri& t) const;
+  // Hints the cache to load the mesh triangle of entries_[e] (both lines it may straddle).
+  void prefetch(size_t e) const {
+    const char* p = reinterpret_cast<const char*>(&mesh_.triangles[entries_[e].triangle]);
+    __builtin_prefetch(p);
+    __builtin_prefetch(p + sizeof(Triangle) - 1);
+  }
 
   // A triangle's vertices in double and its normal with error bounds, set up once per sweep when it becomes active.
   struct Plane {
@@ -66,7 +84,9 @@ class RayCaster {
     double inv_margin_den;    // 1 / (|n.u| - n_error.u) when reliable
     double v_error, w_error;  // error bound factors of the n.v and n.w terms of the crossing estimate
     int32_t fixed_first;      // >= 0: the triangle lies in a plane u = const; every crossing's first voxel past
-    int32_t sign;
+    int32_t sign;             // as Tri::sign
+    int32_t row_lo, row_hi;   // as Tri
+    int32_t ray_lo, ray_hi;
   };
   // Terms of the crossing estimate that depend only on the row (w).
   struct PlaneRow {
@@ -86,25 +106,27 @@ class RayCaster {
     void next(std::vector<Crossing>& out);
 
    private:
+    void activate(size_t entry);
+
     const RayCaster& caster_;
     int32_t row_;
-    size_t next_start_ = 0;         // next triangle (in row_lo order) not yet activated
-    std::vector<uint32_t> active_;  // triangles with row_lo <= row_ < row_hi
-    std::vector<Plane> planes_;     // their planes, set up once per sweep
+    std::vector<Plane> planes_;  // the triangles with row_lo <= row_ < row_hi, set up once per sweep
   };
 
  private:
-  void rowCrossings(const Tri& t, const Plane& plane, int32_t row, std::vector<Crossing>& out) const;
+  void rowCrossings(const Plane& plane, int32_t row, std::vector<Crossing>& out) const;
   int32_t firstPast(const Plane& plane, const PlaneRow& row, double v, double w) const;
   // Exact: is centre i of ray (v, w) past the triangle's plane? Out of line: the rare slow path of firstPast.
   [[gnu::noinline]] bool exactPast(const Plane& plane, int32_t i, double v, double w) const;
 
+  const TriangleMesh& mesh_;
   RayAxes axes_;
   double h_ = 1.0;
   double inv_h_ = 1.0;
-  double origin_u_ = 0.0;
+  double origin_u_ = 0.0, origin_v_ = 0.0, origin_w_ = 0.0;
   std::vector<double> cu_, cv_, cw_;  // voxel centre coordinates along u, v, w (SPEC section 1, exactly so)
-  std::vector<Tri> tris_;             // sorted by row_lo
+  std::vector<Entry> entries_;        // kept triangles, sorted by first row (then mesh order)
+  std::vector<size_t> row_start_;     // entries_ of first row r: [row_start_[r], row_start_[r + 1])
 };
 
 }  // namespace vox::voxelize_detail

@@ -397,6 +397,10 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
                                      const MeshTopology* topology) {
   const std::string name = mesh.name.empty() ? std::string("the mesh") : mesh.name;
   if (mesh.triangles.empty()) return makeError(ErrorCode::kInvalidArgument, name + " has no triangles");
+  if (mesh.triangles.size() > UINT32_MAX) {  // the ray casters index triangles with 32 bits
+    return makeError(ErrorCode::kLimit, name + " has " + std::to_string(mesh.triangles.size()) +
+                                            " triangles; at most 4294967295 can be voxelized");
+  }
   auto plan_or = planVoxelization(mesh.bounds(), params);
   if (!plan_or) return plan_or.error();
   VoxelizePlan plan = std::move(plan_or).value();

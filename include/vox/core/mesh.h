@@ -49,7 +49,10 @@ struct MeshTopology {
 };
 
 // Welds vertices by exact coordinate equality and counts edges by use; when that leaves boundary edges, a second
-// pass welds within noiseWeldTolerance() to fill closes_when_noise_welded. O(T log T).
+// pass welds within noiseWeldTolerance() to fill closes_when_noise_welded. Expected O(T) time (a hash table of
+// positions, then edges bucketed by vertex) and about 16 bytes per triangle of scratch memory. Throws
+// std::length_error beyond UINT32_MAX / 3 triangles (corners are numbered in 32 bits; the STL reader refuses such
+// files first).
 MeshTopology analyzeTopology(const TriangleMesh& mesh);
 // One pass, welding by rounding coordinates to multiples of weld_tolerance (model units; 0 = exact equality).
 MeshTopology analyzeTopologyWelded(const TriangleMesh& mesh, double weld_tolerance);
