@@ -1,5 +1,7 @@
 #include "vox/core/surface.h"
 
+#include "vox/core/bits.h"
+
 namespace vox {
 
 void rowNeighbourMasks(const VoxelGrid& grid, int32_t y, int32_t z, RowNeighbours& out) {
@@ -46,7 +48,7 @@ int64_t countSurfaceVoxels(const VoxelGrid& grid) {
     if (!grid.layerAllocated(z)) continue;
     for (int32_t y = 0; y < grid.ny(); ++y) {
       rowSurfaceMask(grid, y, z, mask.data());
-      for (uint64_t w : mask) count += std::popcount(w);
+      for (uint64_t w : mask) count += popcount64(w);
     }
   }
   return count;

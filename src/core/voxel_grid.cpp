@@ -5,6 +5,8 @@
 #include <cassert>
 #include <cstdlib>
 
+#include "vox/core/bits.h"
+
 namespace vox {
 
 glm::ivec3 directionStep(Direction d) {
@@ -111,7 +113,7 @@ int64_t VoxelGrid::filledCount() const {
     if (!layerAllocated(z)) continue;
     const uint64_t* w = layerWords(z);
     const int64_t count = wordsPerLayer();
-    for (int64_t i = 0; i < count; ++i) n += std::popcount(w[i]);
+    for (int64_t i = 0; i < count; ++i) n += popcount64(w[i]);
   }
   return n;
 }

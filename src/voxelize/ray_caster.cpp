@@ -51,8 +51,8 @@ inline int32_t clampedIndex(double t, int32_t lo, int32_t hi) {
 // comparisons with the stored centres (non-decreasing), usually one or two.
 int32_t firstAtOrAbove(const std::vector<double>& centres, double origin, double h, double value) {
   const int32_t n = int32_t(centres.size());
-  const double estimate = std::ceil((value - origin) / h - 0.5);
-  int32_t i = estimate >= double(n) ? n : estimate > 0.0 ? int32_t(estimate) : 0;  // NaN-safe clamp
+  // Truncation rather than std::ceil, which is a library call on the x86-64 baseline: off by one at most.
+  int32_t i = clampedIndex((value - origin) / h + 0.5, 0, n);
   while (i > 0 && centres[size_t(i) - 1] >= value) --i;
   while (i < n && centres[size_t(i)] < value) ++i;
   return i;
@@ -233,8 +233,7 @@ void RayCaster::rowCrossings(const Plane& plane, int32_t row, std::vector<Crossi
       if (edgeSide(cv, cw, av, aw, v, w) != plane.sign) continue;
     }
     if (!have_row) {
-      const double rw = w - plane.a[2];
-      plane_row = PlaneRow{plane.n[2] * rw, plane.w_error * std::abs(rw)};
+      plane_row = planeRow(plane, w, j0, j1);
       have_row = true;
     }
     out.push_back(Crossing{j, firstPast(plane, plane_row, v, w), plane.sign});
@@ -279,27 +278,40 @@ RayCaster::Plane::Plane(const Tri& t, const RayCaster& caster)
   }
 }
 
+RayCaster::PlaneRow RayCaster::planeRow(const Plane& pl, double w, int32_t j0, int32_t j1) const {
+  // The crossing of ray (v, w) lies at u = x_c = a.u - (n.v (v - a.v) + n.w (w - a.w)) / n.u, estimated in double
+  // by firstPast. Its forward error bound: first-order error analysis of the formula, using the normal's error
+  // bounds, with every rounding counted as 8 units (two to four times what the analysis needs) and a final factor
+  // 1.01 for the higher-order terms and the rounding of the bound itself. The bound grows with |v - a.v|, |q| and
+  // |x|, so it is taken once for the whole row at their largest over rays j0 .. j1 - 1 (|v - a.v| is largest at
+  // an end of the range): the same bound for every ray of the row, larger than each ray's own, which only sends a
+  // few more centres to the exact test.
+  PlaneRow row;
+  const double rw = w - pl.a[2];
+  row.w_term = pl.n[2] * rw;
+  row.margin = std::numeric_limits<double>::infinity();
+  if (pl.reliable && j0 < j1) {
+    const double u8 = 8.0 * kUnitRoundoff;
+    const double rv = std::max(std::abs(cv_[size_t(j0)] - pl.a[1]), std::abs(cv_[size_t(j1) - 1] - pl.a[1]));
+    const double num_error = pl.v_error * rv + pl.w_error * std::abs(rw);
+    const double q = (std::abs(pl.n[1]) * rv + std::abs(row.w_term)) * std::abs(pl.inv_nu);
+    const double x = std::abs(pl.a[0]) + q;
+    const double q_error = (num_error + q * pl.n_error[0]) * pl.inv_margin_den + u8 * q;
+    row.margin = (q_error + u8 * x) * 1.01;
+    if (!std::isfinite(row.margin)) row.margin = std::numeric_limits<double>::infinity();
+  }
+  return row;
+}
+
 int32_t RayCaster::firstPast(const Plane& pl, const PlaneRow& row, double v, double w) const {
   if (pl.fixed_first >= 0) return pl.fixed_first;
   // The crossing lies at u = x_c = a.u - (n.v (v - a.v) + n.w (w - a.w)) / n.u. Centre i = (u_i + eps, v + eps^3,
-  // w + eps^2) is past it iff u_i >= x_c (at u_i == x_c the displacement eps along u puts it past).
-  //
-  // Fast path: x_c in double with a forward error bound `margin`: first-order error analysis of the formula, using
-  // the normal's error bounds, with every rounding counted as 8 units (two to four times what the analysis needs)
-  // and a final factor 1.001 for the higher-order terms. A centre farther than `margin` from the estimate is
+  // w + eps^2) is past it iff u_i >= x_c (at u_i == x_c the displacement eps along u puts it past). Fast path: x_c
+  // in double, within row.margin of the exact value (planeRow); a centre farther than that from the estimate is
   // decided by comparing doubles.
-  const double rv = v - pl.a[1];
-  const double num = pl.n[1] * rv + row.w_term;
-  const double q = num * pl.inv_nu;
-  double x = pl.a[0] - q;
-  double margin = std::numeric_limits<double>::infinity();
-  if (pl.reliable) {
-    const double u8 = 8.0 * kUnitRoundoff;
-    const double num_error = pl.v_error * std::abs(rv) + row.w_error;
-    const double q_error = (num_error + std::abs(q) * pl.n_error[0]) * pl.inv_margin_den + u8 * std::abs(q);
-    margin = (q_error + u8 * std::abs(x)) * 1.001;
-    if (!std::isfinite(margin)) margin = std::numeric_limits<double>::infinity();
-  }
+  const double num = pl.n[1] * (v - pl.a[1]) + row.w_term;
+  double x = pl.a[0] - num * pl.inv_nu;
+  const double margin = row.margin;
   // The crossing lies inside the triangle, so clamping to the vertices' u range only moves the estimate closer.
   if (!(x >= pl.umin)) x = pl.umin;  // also catches NaN
   if (!(x <= pl.umax)) x = pl.umax;

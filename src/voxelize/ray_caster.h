@@ -90,8 +90,8 @@ class RayCaster {
   };
   // Terms of the crossing estimate that depend only on the row (w).
   struct PlaneRow {
-    double w_term;   // n.w (w - a.w)
-    double w_error;  // its error bound factor times |w - a.w|
+    double w_term;  // n.w (w - a.w)
+    double margin;  // bound on the error of firstPast's estimate for every ray of the row (infinite: unreliable)
   };
 
  public:
@@ -115,6 +115,8 @@ class RayCaster {
 
  private:
   void rowCrossings(const Plane& plane, int32_t row, std::vector<Crossing>& out) const;
+  // The row's terms, for rays j0 .. j1 - 1.
+  PlaneRow planeRow(const Plane& plane, double w, int32_t j0, int32_t j1) const;
   int32_t firstPast(const Plane& plane, const PlaneRow& row, double v, double w) const;
   // Exact: is centre i of ray (v, w) past the triangle's plane? Out of line: the rare slow path of firstPast.
   [[gnu::noinline]] bool exactPast(const Plane& plane, int32_t i, double v, double w) const;

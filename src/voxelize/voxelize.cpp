@@ -27,6 +27,7 @@
 #include <new>
 #include <thread>
 
+#include "vox/core/bits.h"
 #include "vox/core/surface.h"
 #include "voxelize/ray_caster.h"
 
@@ -356,7 +357,7 @@ int64_t removeStrayVoxels(VoxelGrid& grid, int threads) {
         if (stray == 0) continue;
         if (!row) row = grid.mutableRowWords(y, z);
         row[w] &= ~stray;
-        removed[size_t(t)] += std::popcount(stray);
+        removed[size_t(t)] += popcount64(stray);
       }
     }
   });
@@ -578,7 +579,7 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
               if (d != 0) {
                 if (!m) m = mask.mutableLayerWords(z);
                 m[w] = d;
-                count += std::popcount(d);
+                count += popcount64(d);
               }
               bx[size_t(w)] = 0;
               by[size_t(w)] = 0;

@@ -1,0 +1,28 @@
+#pragma once
+// Bit counting shared by the modules that walk bit planes.
+#include <bit>
+#include <cstdint>
+
+namespace vox {
+
+// Population count. The x86-64 baseline that Debian targets has no POPCNT instruction, so std::popcount becomes a
+// call into libgcc; this inline bit-slice count is about twice as fast there and lets loops vectorize. Builds that
+// enable POPCNT (-mpopcnt, -march=x86-64-v2 or later) and other architectures get the instruction.
+inline int popcount64(uint64_t x) {
+#if defined(__x86_64__) && !defined(__POPCNT__)
+  x = x - ((x >> 1) & 0x5555555555555555ull);
+  x = (x & 0x3333333333333333ull) + ((x >> 2) & 0x3333333333333333ull);
+  x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0Full;
+  return int((x * 0x0101010101010101ull) >> 56);
+#else
+  return std::popcount(x);
+#endif
+}
+
+inline int64_t popcountWords(const uint64_t* w, int64_t n) {
+  int64_t c = 0;
+  for (int64_t i = 0; i < n; ++i) c += popcount64(w[i]);
+  return c;
+}
+
+}  // namespace vox
