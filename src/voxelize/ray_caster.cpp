@@ -126,9 +126,10 @@ RayCaster::RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, R
 bool RayCaster::classify(size_t i, Tri& t) const {
   const Triangle& in = mesh_.triangles[i];
   for (int k = 0; k < 3; ++k) {
-    t.p[k][0] = in.v[k][axes_.u];
-    t.p[k][1] = in.v[k][axes_.v];
-    t.p[k][2] = in.v[k][axes_.w];
+    const float* xyz = &in.v[k].x;  // x, y, z are contiguous; glm's operator[] would switch on the index
+    t.p[k][0] = xyz[axes_.u];
+    t.p[k][1] = xyz[axes_.v];
+    t.p[k][2] = xyz[axes_.w];
   }
   // Orientation of the projection = sign of the normal's u component, exactly. Zero area: no displaced ray can be
   // strictly inside (the three edge signs sum to the area), so the triangle is never crossed.
@@ -169,16 +170,17 @@ void RayCaster::RowSweep::next(std::vector<Crossing>& out) {
     if (e + kAhead < end) caster_.prefetch(e + kAhead);
     activate(e);
   }
-  size_t keep = 0;
-  for (size_t k = 0; k < planes_.size(); ++k) {
-    const Plane& plane = planes_[k];
-    caster_.rowCrossings(plane, row_, out);
-    if (plane.row_hi > row_ + 1) {
-      if (keep != k) planes_[keep] = plane;
-      ++keep;
+  // A triangle whose last row this is leaves the set: the last one takes its place (and is handled next), so each
+  // removal moves one plane rather than shifting the rest.
+  for (size_t k = 0; k < planes_.size();) {
+    caster_.rowCrossings(planes_[k], row_, out);
+    if (planes_[k].row_hi > row_ + 1) {
+      ++k;
+    } else {
+      if (k + 1 != planes_.size()) planes_[k] = planes_.back();
+      planes_.pop_back();
     }
   }
-  planes_.resize(keep);
   ++row_;
 }
 

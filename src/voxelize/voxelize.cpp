@@ -295,40 +295,73 @@ void toggleRowAlongY(uint64_t* layer, int32_t ny, int32_t nx, int64_t wpr, const
   }
 }
 
-// Rays along Z, row = y, rays step along x: toggles go into a per-thread slice (x by z), then a running XOR over z
-// writes row y of every layer at or above the lowest crossing. The layers were allocated before the threads
-// started, so writing row y of any layer touches only this row's words.
-void toggleRowAlongZ(const std::vector<uint64_t*>& layers, int64_t wpr, int32_t nz, int32_t nx, int32_t y,
-                     const std::vector<Crossing>& crossings, PassScratch& s) {
-  if (crossings.empty()) return;
-  s.crossings += int64_t(crossings.size());
-  s.parity.assign(size_t(nx), 0);
-  if (s.slice.size() != size_t(nz) * size_t(wpr)) s.slice.assign(size_t(nz) * size_t(wpr), 0);
-  int32_t lowest = nz, highest = -1;
-  for (const Crossing& c : crossings) {
-    s.parity[size_t(c.ray)] ^= 1;
-    if (c.first >= nz) continue;
-    const int64_t xp = int64_t(c.ray) + 1;
-    s.slice[size_t(int64_t(c.first) * wpr + (xp >> 6))] ^= uint64_t(1) << (xp & 63);
-    lowest = std::min(lowest, c.first);
-    highest = std::max(highest, c.first);
-  }
-  for (uint8_t p : s.parity) s.odd_rays += p;
-  if (highest < 0) return;
-  s.running.assign(size_t(wpr), 0);
-  for (int32_t z = lowest; z < nz; ++z) {
-    uint64_t any = 0;
-    uint64_t* toggles = s.slice.data() + int64_t(z) * wpr;
-    uint64_t* row = layers[size_t(z)] + (int64_t(y) + 1) * wpr;
-    for (int64_t w = 0; w < wpr; ++w) {
-      s.running[size_t(w)] ^= toggles[w];
-      toggles[w] = 0;
-      row[w] = s.running[size_t(w)];
-      any |= s.running[size_t(w)];
+// Rays along Z, row = y, rays step along x. Rows are handled in blocks of `block` consecutive rows (y0 ..): each
+// row's crossings toggle bits of a per-thread slice (layer z, row y - y0, word), then a running XOR over z writes
+// the block's rows of every layer at or above the lowest crossing. A block's rows are contiguous in a layer, so each
+// layer gets one contiguous write of block * wpr words rather than `block` scattered rows. The layers were
+// allocated before the threads started, and a block's rows belong to one thread, so no two threads write a word.
+class ZBlockWriter {
+ public:
+  // Writes rows below row_end only (the rows of this thread's slab).
+  ZBlockWriter(const std::vector<uint64_t*>& layers, int64_t wpr, const Dims& dims, int32_t block, int32_t row_end)
+      : layers_(layers), wpr_(wpr), nx_(dims.nx), nz_(dims.nz), block_(block), row_end_(row_end) {}
+
+  // Adds the crossings of row y (rows must come in increasing order; a new block starts when y leaves the current
+  // one). Counts into `s`.
+  void addRow(int32_t y, const std::vector<Crossing>& crossings, PassScratch& s) {
+    if (y0_ < 0 || y >= y0_ + block_ || y < y0_) {
+      flush(s);
+      y0_ = y;
     }
-    if (z >= highest && any == 0) break;  // no toggles left above: the rest of the column stays empty
+    if (crossings.empty()) return;
+    s.crossings += int64_t(crossings.size());
+    const size_t layer_words = size_t(block_) * size_t(wpr_);
+    if (s.slice.size() != size_t(nz_) * layer_words) s.slice.assign(size_t(nz_) * layer_words, 0);
+    s.parity.assign(size_t(nx_), 0);
+    const int64_t row_base = int64_t(y - y0_) * wpr_;
+    for (const Crossing& c : crossings) {
+      s.parity[size_t(c.ray)] ^= 1;
+      if (c.first >= nz_) continue;
+      const int64_t xp = int64_t(c.ray) + 1;
+      s.slice[size_t(int64_t(c.first) * int64_t(layer_words) + row_base + (xp >> 6))] ^= uint64_t(1) << (xp & 63);
+      lowest_ = std::min(lowest_, c.first);
+      highest_ = std::max(highest_, c.first);
+    }
+    for (uint8_t p : s.parity) s.odd_rays += p;
   }
-}
+
+  // Writes the current block into the layers.
+  void flush(PassScratch& s) {
+    if (highest_ >= 0) {
+      const int64_t n = int64_t(block_) * wpr_;  // words of the block, also of each slice layer
+      const int64_t used =
+          std::min<int64_t>(block_, row_end_ - y0_) * wpr_;  // the real rows (the last block may be short)
+      s.running.assign(size_t(n), 0);
+      for (int32_t z = lowest_; z < nz_; ++z) {
+        uint64_t any = 0;
+        uint64_t* toggles = s.slice.data() + int64_t(z) * n;
+        uint64_t* dst = layers_[size_t(z)] + (int64_t(y0_) + 1) * wpr_;
+        for (int64_t w = 0; w < used; ++w) {
+          const uint64_t r = s.running[size_t(w)] ^ toggles[w];
+          s.running[size_t(w)] = r;
+          toggles[w] = 0;
+          dst[w] = r;
+          any |= r;
+        }
+        if (z >= highest_ && any == 0) break;  // no toggles left above: the rest of the columns stays empty
+      }
+    }
+    lowest_ = nz_;
+    highest_ = -1;
+  }
+
+ private:
+  const std::vector<uint64_t*>& layers_;
+  const int64_t wpr_;
+  const int32_t nx_, nz_, block_, row_end_;
+  int32_t y0_ = -1;  // first row of the current block
+  int32_t lowest_ = INT32_MAX, highest_ = -1;
+};
 
 // Thesis 4.3.3: one simultaneous pass removing every filled voxel with at most two filled face neighbours (four or
 // more free faces: isolated voxels, voxel lines and their ends), decided on the grid as it was before the pass.
@@ -544,8 +577,20 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
         const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongZ, threads);
         std::vector<PassScratch> scratch(static_cast<size_t>(threads));
         const int64_t wpr = grid.wordsPerRow();
-        const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t y, const auto& crossings) {
-          toggleRowAlongZ(layers, wpr, dims.nz, dims.nx, y, crossings, scratch[size_t(t)]);
+        // Rows per block: a per-thread slice of about 1 MiB (it stays in cache), at least one row, at most 16.
+        const int32_t block = int32_t(std::clamp<int64_t>((int64_t(1) << 20) / (int64_t(dims.nz) * wpr * 8), 1, 16));
+        const bool ok = runSlabs(caster.rows(), threads, gate, out_of_memory, [&](int t, int32_t r0, int32_t r1) {
+          std::vector<Crossing> crossings;
+          RayCaster::RowSweep sweep(caster, r0);
+          ZBlockWriter writer(layers, wpr, dims, block, r1);
+          PassScratch& s = scratch[size_t(t)];
+          for (int32_t y = r0; y < r1 && !gate.cancelled(); ++y) {
+            crossings.clear();
+            sweep.next(crossings);
+            writer.addRow(y, crossings, s);
+            gate.advance(1);
+          }
+          writer.flush(s);
         });
         if (!ok) return failure();
         odd[2] = sumStats(scratch, caster).odd_rays;
