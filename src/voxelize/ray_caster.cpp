@@ -49,10 +49,11 @@ inline int32_t clampedIndex(double t, int32_t lo, int32_t hi) {
 
 // Index of the first centre >= value (n when none): estimated from the grid formula, then settled by exact
 // comparisons with the stored centres (non-decreasing), usually one or two.
-int32_t firstAtOrAbove(const std::vector<double>& centres, double origin, double h, double value) {
+int32_t firstAtOrAbove(const std::vector<double>& centres, double origin, double inv_h, double value) {
   const int32_t n = int32_t(centres.size());
-  // Truncation rather than std::ceil, which is a library call on the x86-64 baseline: off by one at most.
-  int32_t i = clampedIndex((value - origin) / h + 0.5, 0, n);
+  // Truncation rather than std::ceil (a library call on the x86-64 baseline), times 1 / h rather than a division:
+  // an estimate off by one or two at most, which the comparisons below settle.
+  int32_t i = clampedIndex((value - origin) * inv_h + 0.5, 0, n);
   while (i > 0 && centres[size_t(i) - 1] >= value) --i;
   while (i < n && centres[size_t(i)] < value) ++i;
   return i;
@@ -73,7 +74,6 @@ std::vector<double> centresAlong(const GridPlacement& placement, int axis) {
 RayCaster::RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, RayAxes axes, int threads)
     : mesh_(mesh),
       axes_(axes),
-      h_(placement.frame.voxel_size),
       inv_h_(1.0 / placement.frame.voxel_size),
       origin_u_(placement.frame.origin[axes.u]),
       origin_v_(placement.frame.origin[axes.v]),
@@ -137,11 +137,11 @@ bool RayCaster::classify(size_t i, Tri& t) const {
   if (t.sign == 0) return false;
   // The displaced ray (v + eps^3, w + eps^2) can be inside the projection only when min <= centre < max on both
   // axes: at centre == max it is already past the maximum.
-  t.row_lo = firstAtOrAbove(cw_, origin_w_, h_, std::min({t.p[0][2], t.p[1][2], t.p[2][2]}));
-  t.row_hi = firstAtOrAbove(cw_, origin_w_, h_, std::max({t.p[0][2], t.p[1][2], t.p[2][2]}));
+  t.row_lo = firstAtOrAbove(cw_, origin_w_, inv_h_, std::min({t.p[0][2], t.p[1][2], t.p[2][2]}));
+  t.row_hi = firstAtOrAbove(cw_, origin_w_, inv_h_, std::max({t.p[0][2], t.p[1][2], t.p[2][2]}));
   if (t.row_lo >= t.row_hi) return false;
-  t.ray_lo = firstAtOrAbove(cv_, origin_v_, h_, std::min({t.p[0][1], t.p[1][1], t.p[2][1]}));
-  t.ray_hi = firstAtOrAbove(cv_, origin_v_, h_, std::max({t.p[0][1], t.p[1][1], t.p[2][1]}));
+  t.ray_lo = firstAtOrAbove(cv_, origin_v_, inv_h_, std::min({t.p[0][1], t.p[1][1], t.p[2][1]}));
+  t.ray_hi = firstAtOrAbove(cv_, origin_v_, inv_h_, std::max({t.p[0][1], t.p[1][1], t.p[2][1]}));
   return t.ray_lo < t.ray_hi;
 }
 
@@ -172,7 +172,12 @@ void RayCaster::RowSweep::next(std::vector<Crossing>& out) {
   }
   // A triangle whose last row this is leaves the set: the last one takes its place (and is handled next), so each
   // removal moves one plane rather than shifting the rest.
+  // Meanwhile, fetch the triangles that become active in the next row, one per plane handled, so their cache
+  // misses overlap with this row's work.
+  size_t ahead = end;
+  const size_t ahead_end = size_t(row_) + 2 < caster_.row_start_.size() ? caster_.row_start_[size_t(row_) + 2] : end;
   for (size_t k = 0; k < planes_.size();) {
+    if (ahead < ahead_end) caster_.prefetch(ahead++);
     caster_.rowCrossings(planes_[k], row_, out);
     if (planes_[k].row_hi > row_ + 1) {
       ++k;
@@ -225,8 +230,7 @@ void RayCaster::rowCrossings(const Plane& plane, int32_t row, std::vector<Crossi
       inner_hi = hi - margin;
     }
   }
-  PlaneRow plane_row;
-  bool have_row = false;
+  const double w_term = plane.n[2] * (w - plane.a[2]);  // the part of the crossing's formula fixed by the row
   for (int32_t j = j0; j < j1; ++j) {
     const double v = cv_[size_t(j)];
     if (!(v > inner_lo && v < inner_hi)) {
@@ -234,11 +238,7 @@ void RayCaster::rowCrossings(const Plane& plane, int32_t row, std::vector<Crossi
       if (edgeSide(bv, bw, cv, cw, v, w) != plane.sign) continue;
       if (edgeSide(cv, cw, av, aw, v, w) != plane.sign) continue;
     }
-    if (!have_row) {
-      plane_row = planeRow(plane, w, j0, j1);
-      have_row = true;
-    }
-    out.push_back(Crossing{j, firstPast(plane, plane_row, v, w), plane.sign});
+    out.push_back(Crossing{j, firstPast(plane, w_term, v, w), plane.sign});
   }
 }
 
@@ -259,16 +259,32 @@ RayCaster::Plane::Plane(const Tri& t, const RayCaster& caster)
     n[k] = p[2 * k] - p[2 * k + 1];
     n_error[k] = 8.0 * kUnitRoundoff * (std::abs(p[2 * k]) + std::abs(p[2 * k + 1]));
   }
-  reliable = std::isfinite(n[0]) && std::abs(n[0]) > 4.0 * n_error[0];
   inv_nu = 1.0 / n[0];
-  inv_margin_den = reliable ? 1.0 / (std::abs(n[0]) - n_error[0]) : 0.0;
-  const double u8 = 8.0 * kUnitRoundoff;
-  v_error = n_error[1] + u8 * std::abs(n[1]);
-  w_error = n_error[2] + u8 * std::abs(n[2]);
+  // The crossing of ray (v, w) lies at u = x_c = a.u - (n.v (v - a.v) + n.w (w - a.w)) / n.u, estimated in double
+  // by firstPast. Its forward error bound: first-order error analysis of the formula, using the normal's error
+  // bounds, with every rounding counted as 8 units (two to four times what the analysis needs) and a final factor
+  // 1.01 for the higher-order terms and the rounding of the bound itself. The bound grows with |v - a.v|,
+  // |w - a.w|, |q| and |x|, so it is taken once for the triangle at their largest over the rays and rows it can
+  // cross (largest at an end of each range): one bound for every crossing, larger than each crossing's own, which
+  // only sends a few more centres to the exact test. Infinite (always exact) when n.u is not clearly nonzero.
+  margin = std::numeric_limits<double>::infinity();
+  if (std::isfinite(n[0]) && std::abs(n[0]) > 4.0 * n_error[0]) {
+    const double u8 = 8.0 * kUnitRoundoff;
+    const auto& cv = caster.cv_;
+    const auto& cw = caster.cw_;
+    const double rv = std::max(std::abs(cv[size_t(ray_lo)] - a[1]), std::abs(cv[size_t(ray_hi) - 1] - a[1]));
+    const double rw = std::max(std::abs(cw[size_t(row_lo)] - a[2]), std::abs(cw[size_t(row_hi) - 1] - a[2]));
+    const double num_error = (n_error[1] + u8 * std::abs(n[1])) * rv + (n_error[2] + u8 * std::abs(n[2])) * rw;
+    const double q = (std::abs(n[1]) * rv + std::abs(n[2]) * rw) * std::abs(inv_nu);
+    const double x = std::abs(a[0]) + q;
+    const double q_error = (num_error + q * n_error[0]) / (std::abs(n[0]) - n_error[0]) + u8 * q;
+    margin = (q_error + u8 * x) * 1.01;
+    if (!std::isfinite(margin)) margin = std::numeric_limits<double>::infinity();
+  }
   // A triangle in a plane u = const (common in CAD meshes): every ray crosses it at exactly a.u, so the first
   // centre past it is the first centre >= a.u, the same for every ray.
   fixed_first = t.p[0][0] == t.p[1][0] && t.p[1][0] == t.p[2][0]
-                    ? firstAtOrAbove(caster.cu_, caster.origin_u_, caster.h_, a[0])
+                    ? firstAtOrAbove(caster.cu_, caster.origin_u_, caster.inv_h_, a[0])
                     : -1;
   umin = std::min({a[0], b[0], c[0]});
   umax = std::max({a[0], b[0], c[0]});
@@ -280,40 +296,15 @@ RayCaster::Plane::Plane(const Tri& t, const RayCaster& caster)
   }
 }
 
-RayCaster::PlaneRow RayCaster::planeRow(const Plane& pl, double w, int32_t j0, int32_t j1) const {
-  // The crossing of ray (v, w) lies at u = x_c = a.u - (n.v (v - a.v) + n.w (w - a.w)) / n.u, estimated in double
-  // by firstPast. Its forward error bound: first-order error analysis of the formula, using the normal's error
-  // bounds, with every rounding counted as 8 units (two to four times what the analysis needs) and a final factor
-  // 1.01 for the higher-order terms and the rounding of the bound itself. The bound grows with |v - a.v|, |q| and
-  // |x|, so it is taken once for the whole row at their largest over rays j0 .. j1 - 1 (|v - a.v| is largest at
-  // an end of the range): the same bound for every ray of the row, larger than each ray's own, which only sends a
-  // few more centres to the exact test.
-  PlaneRow row;
-  const double rw = w - pl.a[2];
-  row.w_term = pl.n[2] * rw;
-  row.margin = std::numeric_limits<double>::infinity();
-  if (pl.reliable && j0 < j1) {
-    const double u8 = 8.0 * kUnitRoundoff;
-    const double rv = std::max(std::abs(cv_[size_t(j0)] - pl.a[1]), std::abs(cv_[size_t(j1) - 1] - pl.a[1]));
-    const double num_error = pl.v_error * rv + pl.w_error * std::abs(rw);
-    const double q = (std::abs(pl.n[1]) * rv + std::abs(row.w_term)) * std::abs(pl.inv_nu);
-    const double x = std::abs(pl.a[0]) + q;
-    const double q_error = (num_error + q * pl.n_error[0]) * pl.inv_margin_den + u8 * q;
-    row.margin = (q_error + u8 * x) * 1.01;
-    if (!std::isfinite(row.margin)) row.margin = std::numeric_limits<double>::infinity();
-  }
-  return row;
-}
-
-int32_t RayCaster::firstPast(const Plane& pl, const PlaneRow& row, double v, double w) const {
+int32_t RayCaster::firstPast(const Plane& pl, double w_term, double v, double w) const {
   if (pl.fixed_first >= 0) return pl.fixed_first;
   // The crossing lies at u = x_c = a.u - (n.v (v - a.v) + n.w (w - a.w)) / n.u. Centre i = (u_i + eps, v + eps^3,
   // w + eps^2) is past it iff u_i >= x_c (at u_i == x_c the displacement eps along u puts it past). Fast path: x_c
-  // in double, within row.margin of the exact value (planeRow); a centre farther than that from the estimate is
+  // in double, within pl.margin of the exact value (see Plane); a centre farther than that from the estimate is
   // decided by comparing doubles.
-  const double num = pl.n[1] * (v - pl.a[1]) + row.w_term;
+  const double num = pl.n[1] * (v - pl.a[1]) + w_term;
   double x = pl.a[0] - num * pl.inv_nu;
-  const double margin = row.margin;
+  const double margin = pl.margin;
   // The crossing lies inside the triangle, so clamping to the vertices' u range only moves the estimate closer.
   if (!(x >= pl.umin)) x = pl.umin;  // also catches NaN
   if (!(x <= pl.umax)) x = pl.umax;

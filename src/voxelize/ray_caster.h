@@ -79,19 +79,12 @@ class RayCaster {
     double umin, umax;        // the vertices' u range, which holds every crossing
     double vw_scale;          // largest |v| or |w| of the vertices (for rounding margins)
     double slope[3];          // dv/dw of each edge (A->B, B->C, C->A) in the (v, w) projection; 0 when horizontal
-    bool reliable;            // |n.u| well above its error bound: the estimate's error bound holds
     double inv_nu;            // 1 / n.u
-    double inv_margin_den;    // 1 / (|n.u| - n_error.u) when reliable
-    double v_error, w_error;  // error bound factors of the n.v and n.w terms of the crossing estimate
+    double margin;            // bound on the error of firstPast's estimate of any crossing (infinite: always exact)
     int32_t fixed_first;      // >= 0: the triangle lies in a plane u = const; every crossing's first voxel past
     int32_t sign;             // as Tri::sign
     int32_t row_lo, row_hi;   // as Tri
     int32_t ray_lo, ray_hi;
-  };
-  // Terms of the crossing estimate that depend only on the row (w).
-  struct PlaneRow {
-    double w_term;  // n.w (w - a.w)
-    double margin;  // bound on the error of firstPast's estimate for every ray of the row (infinite: unreliable)
   };
 
  public:
@@ -115,15 +108,13 @@ class RayCaster {
 
  private:
   void rowCrossings(const Plane& plane, int32_t row, std::vector<Crossing>& out) const;
-  // The row's terms, for rays j0 .. j1 - 1.
-  PlaneRow planeRow(const Plane& plane, double w, int32_t j0, int32_t j1) const;
-  int32_t firstPast(const Plane& plane, const PlaneRow& row, double v, double w) const;
+  // First centre past the crossing of ray (v, w); w_term = n.w (w - a.w).
+  int32_t firstPast(const Plane& plane, double w_term, double v, double w) const;
   // Exact: is centre i of ray (v, w) past the triangle's plane? Out of line: the rare slow path of firstPast.
   [[gnu::noinline]] bool exactPast(const Plane& plane, int32_t i, double v, double w) const;
 
   const TriangleMesh& mesh_;
   RayAxes axes_;
-  double h_ = 1.0;
   double inv_h_ = 1.0;
   double origin_u_ = 0.0, origin_v_ = 0.0, origin_w_ = 0.0;
   std::vector<double> cu_, cv_, cw_;  // voxel centre coordinates along u, v, w (SPEC section 1, exactly so)

@@ -11,9 +11,10 @@
 // The crossings of each ray come from RayCaster as (first voxel past the crossing, sign) pairs, so filling is
 // integer work: along X, sorted crossings become runs written with word operations (VoxelGrid::fillRun); along
 // Y and Z (vote mode) each crossing toggles one bit and a prefix XOR over the rows or layers turns toggles into
-// parity, again with word operations. Rows of rays are independent, so the work is split over rows with
-// std::thread; each row writes only its own Z layer (rays along X and Y) or its own Y row of every layer (rays
-// along Z, whose layers are allocated up front), so no two threads ever write the same word.
+// parity, again with word operations (along Z the toggles are listed per layer and XORed into a running layer as the
+// layer pass goes up). Rows of rays are independent, so the work is split over rows with std::thread; each thread
+// writes only the Z layers of its own rows (rays along X and Y) or its own toggle lists (rays along Z), so no two
+// threads ever write the same word.
 #include "vox/voxelize/voxelize.h"
 
 #include <unistd.h>
@@ -134,10 +135,16 @@ class ProgressGate {
 // dynamically so uneven rows balance; about eight slabs per thread, enough to balance and few enough that setting up
 // each slab's sweep stays cheap. slab_fn checks progress.cancelled() per row. Returns false when cancelled or out of
 // memory (`out_of_memory` set).
+// Rows per slab of runSlabs: slabs start at multiples of it.
+int32_t slabRows(int32_t rows, int threads) {
+  threads = std::clamp(threads, 1, std::max(1, int(rows)));
+  return std::max<int32_t>(1, rows / (threads * 8));
+}
+
 template <class SlabFn>
 bool runSlabs(int32_t rows, int threads, ProgressGate& progress, bool& out_of_memory, SlabFn&& slab_fn) {
+  const int32_t slab = slabRows(rows, threads);
   threads = std::clamp(threads, 1, std::max(1, int(rows)));
-  const int32_t slab = std::max<int32_t>(1, rows / (threads * 8));
   const int32_t slabs = (rows + slab - 1) / slab;
   std::atomic<int32_t> next{0};
   std::atomic<bool> failed{false};
@@ -196,8 +203,6 @@ struct PassScratch {
   std::vector<int32_t> start;  // counting sort of crossings by ray
   std::vector<Crossing> sorted;
   std::vector<uint8_t> parity;  // per-ray crossing parity (rays along Y and Z)
-  std::vector<uint64_t> slice;  // rays along Z: toggles of one Y row, layer by layer
-  std::vector<uint64_t> running;
   int64_t odd_rays = 0;         // rays with an odd number of crossings
   int64_t unbalanced_rays = 0;  // rays whose signed crossings do not sum to zero
   int64_t crossings = 0;
@@ -295,73 +300,26 @@ void toggleRowAlongY(uint64_t* layer, int32_t ny, int32_t nx, int64_t wpr, const
   }
 }
 
-// Rays along Z, row = y, rays step along x. Rows are handled in blocks of `block` consecutive rows (y0 ..): each
-// row's crossings toggle bits of a per-thread slice (layer z, row y - y0, word), then a running XOR over z writes
-// the block's rows of every layer at or above the lowest crossing. A block's rows are contiguous in a layer, so each
-// layer gets one contiguous write of block * wpr words rather than `block` scattered rows. The layers were
-// allocated before the threads started, and a block's rows belong to one thread, so no two threads write a word.
-class ZBlockWriter {
- public:
-  // Writes rows below row_end only (the rows of this thread's slab).
-  ZBlockWriter(const std::vector<uint64_t*>& layers, int64_t wpr, const Dims& dims, int32_t block, int32_t row_end)
-      : layers_(layers), wpr_(wpr), nx_(dims.nx), nz_(dims.nz), block_(block), row_end_(row_end) {}
-
-  // Adds the crossings of row y (rows must come in increasing order; a new block starts when y leaves the current
-  // one). Counts into `s`.
-  void addRow(int32_t y, const std::vector<Crossing>& crossings, PassScratch& s) {
-    if (y0_ < 0 || y >= y0_ + block_ || y < y0_) {
-      flush(s);
-      y0_ = y;
-    }
-    if (crossings.empty()) return;
-    s.crossings += int64_t(crossings.size());
-    const size_t layer_words = size_t(block_) * size_t(wpr_);
-    if (s.slice.size() != size_t(nz_) * layer_words) s.slice.assign(size_t(nz_) * layer_words, 0);
-    s.parity.assign(size_t(nx_), 0);
-    const int64_t row_base = int64_t(y - y0_) * wpr_;
-    for (const Crossing& c : crossings) {
-      s.parity[size_t(c.ray)] ^= 1;
-      if (c.first >= nz_) continue;
-      const int64_t xp = int64_t(c.ray) + 1;
-      s.slice[size_t(int64_t(c.first) * int64_t(layer_words) + row_base + (xp >> 6))] ^= uint64_t(1) << (xp & 63);
-      lowest_ = std::min(lowest_, c.first);
-      highest_ = std::max(highest_, c.first);
-    }
-    for (uint8_t p : s.parity) s.odd_rays += p;
+// Rays along Z, row = y, rays step along x: each crossing toggles bit (x, y) of the parity of every layer from
+// `first` up. The toggles are kept, not applied: appended to this thread's list for layer `first` as the bit's
+// position in a layer ((y + 1) * wpr * 64 + x + 1, below 2^32 for any grid voxmod accepts), and the layer pass XORs
+// them into a running parity layer as it goes up in z. So the Z parity never needs a grid of its own.
+void collectTogglesAlongZ(int32_t y, int32_t nz, int32_t nx, int64_t wpr, const std::vector<Crossing>& crossings,
+                          std::vector<std::vector<uint32_t>>& toggles, PassScratch& s) {
+  if (crossings.empty()) return;
+  s.crossings += int64_t(crossings.size());
+  s.parity.assign(size_t(nx), 0);
+  const int64_t row_bit = (int64_t(y) + 1) * wpr * 64 + 1;
+  for (const Crossing& c : crossings) {
+    s.parity[size_t(c.ray)] ^= 1;
+    if (c.first < nz) toggles[size_t(c.first)].push_back(uint32_t(row_bit + c.ray));
   }
+  for (uint8_t p : s.parity) s.odd_rays += p;
+}
 
-  // Writes the current block into the layers.
-  void flush(PassScratch& s) {
-    if (highest_ >= 0) {
-      const int64_t n = int64_t(block_) * wpr_;  // words of the block, also of each slice layer
-      const int64_t used =
-          std::min<int64_t>(block_, row_end_ - y0_) * wpr_;  // the real rows (the last block may be short)
-      s.running.assign(size_t(n), 0);
-      for (int32_t z = lowest_; z < nz_; ++z) {
-        uint64_t any = 0;
-        uint64_t* toggles = s.slice.data() + int64_t(z) * n;
-        uint64_t* dst = layers_[size_t(z)] + (int64_t(y0_) + 1) * wpr_;
-        for (int64_t w = 0; w < used; ++w) {
-          const uint64_t r = s.running[size_t(w)] ^ toggles[w];
-          s.running[size_t(w)] = r;
-          toggles[w] = 0;
-          dst[w] = r;
-          any |= r;
-        }
-        if (z >= highest_ && any == 0) break;  // no toggles left above: the rest of the columns stays empty
-      }
-    }
-    lowest_ = nz_;
-    highest_ = -1;
-  }
-
- private:
-  const std::vector<uint64_t*>& layers_;
-  const int64_t wpr_;
-  const int32_t nx_, nz_, block_, row_end_;
-  int32_t y0_ = -1;  // first row of the current block
-  int32_t lowest_ = INT32_MAX, highest_ = -1;
-};
+void applyToggles(const std::vector<uint32_t>& toggles, uint64_t* layer) {
+  for (const uint32_t bit : toggles) layer[bit >> 6] ^= uint64_t(1) << (bit & 63);
+}
 
 // Thesis 4.3.3: one simultaneous pass removing every filled voxel with at most two filled face neighbours (four or
 // more free faces: isolated voxels, voxel lines and their ends), decided on the grid as it was before the pass.
@@ -565,45 +523,51 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       }
       result.grid = std::move(grid);
     } else {
-      // Parity along Z first, into a full grid (its rays write a row of every layer). Then, layer by layer, parity
-      // along X and along Y into two cache-sized scratch layers, and the per-word majority of the three written
-      // back into the Z grid's layer; the voxels where the axes disagree go into a mask allocated where needed.
-      // Peak: the Z grid plus the mask.
+      // Rays along Z first: their crossings become per-layer toggle lists (collectTogglesAlongZ). Then, layer by
+      // layer going up, parity along X and along Y into two cache-sized scratch layers and parity along Z in a running
+      // layer (the toggles of this layer XORed in); the per-word majority of the three is written into the grid
+      // (layers allocated where a word is filled), and the voxels where the axes disagree into a mask allocated where
+      // needed. Each slab of layers starts from a snapshot of the running Z parity at its first layer. Peak: the grid,
+      // the mask, 4 bytes per crossing along Z, and a layer per slab.
       VoxelGrid grid(dims, frame), mask(dims, frame);
       std::vector<int64_t> odd(3, 0);
+      const int64_t wpr = grid.wordsPerRow(), wpl = grid.wordsPerLayer();
+      // toggles[t][z]: thread t's toggles of layer z.
+      std::vector<std::vector<std::vector<uint32_t>>> toggles(static_cast<size_t>(threads));
       {
-        std::vector<uint64_t*> layers(static_cast<size_t>(dims.nz));
-        forLayers(dims.nz, threads, [&](int, int32_t z) { layers[size_t(z)] = grid.mutableLayerWords(z); });
+        for (auto& per_layer : toggles) per_layer.resize(size_t(dims.nz));
         const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongZ, threads);
         std::vector<PassScratch> scratch(static_cast<size_t>(threads));
-        const int64_t wpr = grid.wordsPerRow();
-        // Rows per block: a per-thread slice of about 1 MiB (it stays in cache), at least one row, at most 16.
-        const int32_t block = int32_t(std::clamp<int64_t>((int64_t(1) << 20) / (int64_t(dims.nz) * wpr * 8), 1, 16));
-        const bool ok = runSlabs(caster.rows(), threads, gate, out_of_memory, [&](int t, int32_t r0, int32_t r1) {
-          std::vector<Crossing> crossings;
-          RayCaster::RowSweep sweep(caster, r0);
-          ZBlockWriter writer(layers, wpr, dims, block, r1);
-          PassScratch& s = scratch[size_t(t)];
-          for (int32_t y = r0; y < r1 && !gate.cancelled(); ++y) {
-            crossings.clear();
-            sweep.next(crossings);
-            writer.addRow(y, crossings, s);
-            gate.advance(1);
-          }
-          writer.flush(s);
+        const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t y, const auto& crossings) {
+          collectTogglesAlongZ(y, dims.nz, dims.nx, wpr, crossings, toggles[size_t(t)], scratch[size_t(t)]);
         });
         if (!ok) return failure();
         odd[2] = sumStats(scratch, caster).odd_rays;
+      }
+      auto applyLayerToggles = [&](int32_t z, uint64_t* layer) {
+        for (const auto& per_layer : toggles) applyToggles(per_layer[size_t(z)], layer);
+      };
+      // The running Z parity at the first layer of every slab of the layer pass.
+      const int32_t slab = slabRows(dims.nz, threads);
+      std::vector<std::vector<uint64_t>> snapshots(size_t((dims.nz + slab - 1) / slab));
+      {
+        std::vector<uint64_t> running(static_cast<size_t>(wpl), 0);
+        for (size_t k = 0; k < snapshots.size(); ++k) {
+          snapshots[k] = running;
+          for (int32_t z = int32_t(k) * slab; z < std::min(dims.nz, int32_t(k + 1) * slab); ++z) {
+            applyLayerToggles(z, running.data());
+          }
+        }
       }
       std::vector<int64_t> disputed(static_cast<size_t>(threads), 0);
       {
         const RayCaster along_x(mesh, plan.placement, voxelize_detail::kRaysAlongX, threads);
         const RayCaster along_y(mesh, plan.placement, voxelize_detail::kRaysAlongY, threads);
         std::vector<PassScratch> sx(static_cast<size_t>(threads)), sy(static_cast<size_t>(threads));
-        const int64_t wpr = grid.wordsPerRow(), wpl = grid.wordsPerLayer();
         const bool ok = runSlabs(dims.nz, threads, gate, out_of_memory, [&](int t, int32_t z0, int32_t z1) {
           std::vector<Crossing> cx, cy;
           std::vector<uint64_t> bx(static_cast<size_t>(wpl), 0), by(static_cast<size_t>(wpl), 0);
+          std::vector<uint64_t> bz = std::move(snapshots[size_t(z0 / slab)]);
           RayCaster::RowSweep sweep_x(along_x, z0), sweep_y(along_y, z0);
           for (int32_t z = z0; z < z1 && !gate.cancelled(); ++z) {
             cx.clear();
@@ -614,12 +578,17 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
               fillRowBits(bx.data() + (int64_t(y) + 1) * wpr, dims.nx, x0, x1);
             });
             toggleRowAlongY(by.data(), dims.ny, dims.nx, wpr, cy, sy[size_t(t)]);
-            uint64_t* c = grid.mutableLayerWords(z);
+            applyLayerToggles(z, bz.data());
+            uint64_t* c = nullptr;
             uint64_t* m = nullptr;
             int64_t count = 0;
             for (int64_t w = 0; w < wpl; ++w) {
-              const uint64_t a = bx[size_t(w)], b = by[size_t(w)], zz = c[w];
-              c[w] = (a & b) | (zz & (a | b));
+              const uint64_t a = bx[size_t(w)], b = by[size_t(w)], zz = bz[size_t(w)];
+              const uint64_t r = (a & b) | (zz & (a | b));
+              if (r != 0) {
+                if (!c) c = grid.mutableLayerWords(z);
+                c[w] = r;
+              }
               const uint64_t d = (a ^ b) | (a ^ zz);
               if (d != 0) {
                 if (!m) m = mask.mutableLayerWords(z);
@@ -637,7 +606,6 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
         odd[0] = sumStats(sx, along_x).odd_rays;
         odd[1] = sumStats(sy, along_y).odd_rays;
       }
-      grid.releaseEmptyLayers();
       for (int64_t d : disputed) result.disputed_count += d;
       const char* axes[3] = {"X", "Y", "Z"};
       std::string odd_text;
