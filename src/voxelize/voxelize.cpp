@@ -505,9 +505,14 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       VoxelGrid grid(dims, frame);
       const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongX, threads);
       std::vector<PassScratch> scratch(static_cast<size_t>(threads));
+      const int64_t wpr = grid.wordsPerRow();
       const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t z, const auto& crossings) {
-        fillRowAlongX(dims.ny, dims.nx, crossings, rule, scratch[size_t(t)],
-                      [&](int32_t y, int64_t x0, int64_t x1) { grid.fillRun(y, z, x0, x1); });
+        uint64_t* layer = nullptr;  // layer z, allocated at its first run (only this thread writes it)
+        fillRowAlongX(dims.ny, dims.nx, crossings, rule, scratch[size_t(t)], [&](int32_t y, int64_t x0, int64_t x1) {
+          if (std::max<int64_t>(x0, 0) >= std::min<int64_t>(x1, dims.nx)) return;  // empty: allocate nothing
+          if (!layer) layer = grid.mutableLayerWords(z);
+          fillRowBits(layer + (int64_t(y) + 1) * wpr, dims.nx, x0, x1);
+        });
       });
       if (!ok) return failure();
       const PassStats stats = sumStats(scratch, caster);
