@@ -5,9 +5,10 @@
 //                            every row, parallel over layers like the voxelizer): the least any voxelizer that
 //                            produces this grid can cost.
 // With --voxmod_large, also igea_refined_508k at R = 2048 and 4096 (8.6 GB of bits at 4096: check the memory).
-// Counters: child processes (fork) run each case five more times (once for R > 1000), cold (freed heap returned to
-// the system first, as in a command-line run): cold_ms is their median wall time, peak_MiB the peak resident memory,
-// extra_MiB the growth over the resident memory at the start (meshes already loaded). grid_MiB is the result grid. The
+// Counters: fresh processes (this program run again with --voxmod_child=KIND/MESH/R) run each case five more times
+// (once for R > 1000), cold as a command-line run is: cold_ms is their median wall time, peak_MiB the peak resident
+// memory of such a process (program, mesh and work), extra_MiB the growth over its resident memory once the mesh is
+// loaded (the work's own memory). grid_MiB is the result grid. The
 // timed iterations run warm: each reuses the pages the previous one freed.
 //
 //   build-rel/bench/voxelize_bench --benchmark_filter='voxelize/armadillo'
@@ -67,50 +68,116 @@ uint64_t procStatus(const char* key) {
 }
 
 struct ChildRun {
-  uint64_t peak = 0, start = 0;  // resident bytes: peak, and at the start
-  double seconds = 0;            // wall time of the run
+  uint64_t peak = 0, start = 0;  // resident bytes: peak, and at the start of the timed work
+  double seconds = 0;            // wall time of the timed work
+  bool ok = false;
 };
 
-// Runs `work` once in a child process, after returning the parent's freed heap to the system: so the run starts
-// cold, as a command-line run does (the timed iterations reuse pages freed by the previous iteration).
-ChildRun measureChild(const std::function<void()>& work) {
+vox::VoxelizeParams paramsFor(int64_t resolution) {
+  vox::VoxelizeParams params;
+  params.resolution = resolution;
+  return params;
+}
+
+// Allocate a grid and write every word of every layer, in parallel over layers.
+vox::VoxelGrid writeFloor(const vox::Dims& dims) {
+  vox::VoxelGrid g(dims);
+  const int threads = std::max(1, int(std::thread::hardware_concurrency()));
+  std::atomic<int32_t> next{0};
+  auto worker = [&] {
+    for (int32_t z; (z = next.fetch_add(1)) < dims.nz;) {
+      for (int32_t y = 0; y < dims.ny; ++y) g.fillRun(y, z, 0, dims.nx);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& th : pool) th.join();
+  return g;
+}
+
+// The child side of a cold run (this program started again with --voxmod_child=KIND/MESH/R): loads the mesh, then
+// times one voxelization (KIND = voxelize) or one floor (KIND = floor) and prints "peak start seconds".
+int runChild(const std::string& spec) {
+  const size_t a = spec.find('/'), b = spec.rfind('/');
+  if (a == std::string::npos || b == a) return 2;
+  const std::string kind = spec.substr(0, a), name = spec.substr(a + 1, b - a - 1);
+  const int64_t resolution = std::stoll(spec.substr(b + 1));
+  auto stl = vox::io::loadStl(vox::bench::sharedMesh(name + ".stl"));
+  if (!stl) return 1;
+  std::function<void()> work;
+  if (kind == "voxelize") {
+    work = [&] {
+      auto r = vox::voxelizeSolid(stl->mesh, paramsFor(resolution), {}, &stl->topology);
+      benchmark::DoNotOptimize(r);
+    };
+  } else {
+    auto placement = vox::placeGridByResolution(stl->mesh.bounds(), resolution);
+    if (!placement) return 1;
+    const vox::Dims dims = placement->dims;
+    work = [dims] {
+      vox::VoxelGrid g = writeFloor(dims);
+      benchmark::DoNotOptimize(g.layerWords(0));
+    };
+  }
+  malloc_trim(0);  // the loader's freed memory goes back to the system: the baseline is what is really in use
+  {
+    std::ofstream reset("/proc/self/clear_refs");
+    reset << "5";  // resets VmHWM to the current VmRSS
+  }
+  const uint64_t start = procStatus("VmRSS:");
+  const auto t0 = std::chrono::steady_clock::now();
+  work();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("%llu %llu %.9f\n", static_cast<unsigned long long>(procStatus("VmHWM:")),
+              static_cast<unsigned long long>(start), seconds);
+  return 0;
+}
+
+// Runs one case cold: in a fresh process (this program again), as a command-line run is, with nothing of this
+// process's heap, page tables or caches of its own.
+ChildRun measureChild(const std::string& spec) {
+  ChildRun r;
   int fds[2];
-  if (pipe(fds) != 0) return {0, 0};
+  if (pipe(fds) != 0) return r;
   const pid_t pid = fork();
   if (pid == 0) {
     close(fds[0]);
-    malloc_trim(0);  // return the parent's freed heap, so the baseline is what is really in use
-    {
-      std::ofstream reset("/proc/self/clear_refs");
-      reset << "5";  // resets VmHWM to the current VmRSS
-    }
-    ChildRun r;
-    r.start = procStatus("VmRSS:");
-    const auto t0 = std::chrono::steady_clock::now();
-    work();
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.peak = procStatus("VmHWM:");
-    if (write(fds[1], &r, sizeof r) != ssize_t(sizeof r)) _exit(1);
-    _exit(0);
+    dup2(fds[1], STDOUT_FILENO);
+    const std::string arg = "--voxmod_child=" + spec;
+    char* argv[] = {const_cast<char*>("voxelize_bench"), const_cast<char*>(arg.c_str()), nullptr};
+    execv("/proc/self/exe", argv);
+    _exit(127);
   }
   close(fds[1]);
-  ChildRun r;
-  if (read(fds[0], &r, sizeof r) != ssize_t(sizeof r)) r = ChildRun{};
+  std::string out;
+  char buf[256];
+  for (ssize_t n; (n = read(fds[0], buf, sizeof buf)) > 0;) out.append(buf, size_t(n));
   close(fds[0]);
   int status = 0;
   waitpid(pid, &status, 0);
+  unsigned long long peak = 0, start = 0;
+  double seconds = 0;
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0 &&
+      std::sscanf(out.c_str(), "%llu %llu %lf", &peak, &start, &seconds) == 3) {
+    r = ChildRun{peak, start, seconds, true};
+  }
   return r;
 }
 
 constexpr double kMiB = 1024.0 * 1024.0;
 
-// Cold runs are `runs` fresh children: cold_ms is the median wall time (a single cold run varies by half on this
+// Cold runs are `runs` fresh processes: cold_ms is the median wall time (a single cold run varies by half on this
 // machine, mostly in page-fault cost), the memory counters the largest seen.
-void setChildCounters(benchmark::State& state, const std::function<void()>& work, int runs) {
+void setChildCounters(benchmark::State& state, const std::string& spec, int runs) {
   std::vector<double> seconds;
   uint64_t peak = 0, extra = 0;
   for (int i = 0; i < runs; ++i) {
-    const ChildRun r = measureChild(work);
+    const ChildRun r = measureChild(spec);
+    if (!r.ok) {
+      state.SkipWithError(("cold run failed: " + spec).c_str());
+      return;
+    }
     seconds.push_back(r.seconds);
     peak = std::max(peak, r.peak);
     extra = std::max(extra, r.peak > r.start ? r.peak - r.start : 0);
@@ -140,8 +207,7 @@ void loadCase(benchmark::State& state, const std::string& name) {
 
 void voxelizeCase(benchmark::State& state, const std::string& name, int64_t resolution) {
   const vox::io::StlLoad& stl = mesh(name);
-  vox::VoxelizeParams params;
-  params.resolution = resolution;
+  const vox::VoxelizeParams params = paramsFor(resolution);
   int64_t filled = 0, disputed = 0;
   double grid_bytes = 0;
   std::string mode;
@@ -164,30 +230,7 @@ void voxelizeCase(benchmark::State& state, const std::string& name, int64_t reso
   state.counters["filled"] = double(filled);
   if (mode == "vote") state.counters["disputed"] = double(disputed);
   state.counters["grid_MiB"] = grid_bytes / kMiB;
-  setChildCounters(
-      state,
-      [&] {
-        auto r = vox::voxelizeSolid(stl.mesh, params, {}, &stl.topology);
-        benchmark::DoNotOptimize(r);
-      },
-      coldRuns(resolution));
-}
-
-// Allocate a grid and write every word of every layer, in parallel over layers.
-vox::VoxelGrid writeFloor(const vox::Dims& dims) {
-  vox::VoxelGrid g(dims);
-  const int threads = std::max(1, int(std::thread::hardware_concurrency()));
-  std::atomic<int32_t> next{0};
-  auto worker = [&] {
-    for (int32_t z; (z = next.fetch_add(1)) < dims.nz;) {
-      for (int32_t y = 0; y < dims.ny; ++y) g.fillRun(y, z, 0, dims.nx);
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& th : pool) th.join();
-  return g;
+  setChildCounters(state, "voxelize/" + name + "/" + std::to_string(resolution), coldRuns(resolution));
 }
 
 void floorCase(benchmark::State& state, const std::string& name, int64_t resolution) {
@@ -205,18 +248,13 @@ void floorCase(benchmark::State& state, const std::string& name, int64_t resolut
     state.ResumeTiming();
   }
   state.counters["voxels"] = double(dims.count());
-  setChildCounters(
-      state,
-      [&] {
-        vox::VoxelGrid g = writeFloor(dims);
-        benchmark::DoNotOptimize(g.layerWords(0));
-      },
-      coldRuns(resolution));
+  setChildCounters(state, "floor/" + name + "/" + std::to_string(resolution), coldRuns(resolution));
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 2 && std::strncmp(argv[1], "--voxmod_child=", 15) == 0) return runChild(argv[1] + 15);
   bool large = false;
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {

@@ -281,13 +281,14 @@ RayCaster::Plane::Plane(const Tri& t, const RayCaster& caster)
     margin = (q_error + u8 * x) * 1.01;
     if (!std::isfinite(margin)) margin = std::numeric_limits<double>::infinity();
   }
-  // A triangle in a plane u = const (common in CAD meshes): every ray crosses it at exactly a.u, so the first
-  // centre past it is the first centre >= a.u, the same for every ray.
-  fixed_first = t.p[0][0] == t.p[1][0] && t.p[1][0] == t.p[2][0]
-                    ? firstAtOrAbove(caster.cu_, caster.origin_u_, caster.inv_h_, a[0])
-                    : -1;
   umin = std::min({a[0], b[0], c[0]});
   umax = std::max({a[0], b[0], c[0]});
+  // Every crossing lies at some u in [umin, umax] (exactly: it is a point of the triangle), and its first centre
+  // past is the first centre u_i >= that u. When no centre lies in [umin, umax) that is the same centre for every
+  // ray: i0, the first centre >= umin (centres below i0 are < umin <= u, and u_i0 >= umax >= u). This covers the
+  // planes u = const of CAD meshes and, at fine resolutions, every triangle narrower than a voxel along u.
+  const int32_t i0 = firstAtOrAbove(caster.cu_, caster.origin_u_, caster.inv_h_, umin);
+  fixed_first = i0 == caster.length() || caster.cu_[size_t(i0)] >= umax ? i0 : -1;
   vw_scale = std::max({std::abs(a[1]), std::abs(b[1]), std::abs(c[1]), std::abs(a[2]), std::abs(b[2]), std::abs(c[2])});
   for (int k = 0; k < 3; ++k) {
     const float* from = t.p[k];

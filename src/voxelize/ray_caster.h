@@ -81,7 +81,7 @@ class RayCaster {
     double slope[3];          // dv/dw of each edge (A->B, B->C, C->A) in the (v, w) projection; 0 when horizontal
     double inv_nu;            // 1 / n.u
     double margin;            // bound on the error of firstPast's estimate of any crossing (infinite: always exact)
-    int32_t fixed_first;      // >= 0: the triangle lies in a plane u = const; every crossing's first voxel past
+    int32_t fixed_first;      // >= 0: no centre lies in [umin, umax); the first voxel past every crossing
     int32_t sign;             // as Tri::sign
     int32_t row_lo, row_hi;   // as Tri
     int32_t ray_lo, ray_hi;
