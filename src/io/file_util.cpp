@@ -81,7 +81,50 @@ Result<std::vector<uint8_t>> readFileBytes(const std::filesystem::path& path) {
   return bytes;
 }
 
-Status writeFileAtomic(const std::filesystem::path& path, std::span<const uint8_t> bytes) {
+namespace {
+
+// Writes to an open file descriptor; remembers errno of the first failure.
+class FdSink final : public ByteSink {
+ public:
+  explicit FdSink(int fd) : fd_(fd) {}
+  Status append(std::span<const uint8_t> bytes) override {
+    if (Status s = writeAll(bytes, -1); !s.ok()) return s;
+    size_ += bytes.size();
+    return Ok{};
+  }
+  Status overwrite(uint64_t offset, std::span<const uint8_t> bytes) override {
+    if (offset + bytes.size() > size_)
+      return makeError(ErrorCode::kInvalidArgument, "overwrite past the end of the data");
+    return writeAll(bytes, int64_t(offset));
+  }
+  int error() const { return error_; }
+
+ private:
+  // write() at the end, or pwrite() at `offset` when it is >= 0, until every byte is written.
+  Status writeAll(std::span<const uint8_t> bytes, int64_t offset) {
+    size_t done = 0;
+    while (done < bytes.size()) {
+      const ssize_t n = offset < 0
+                            ? ::write(fd_, bytes.data() + done, bytes.size() - done)
+                            : ::pwrite(fd_, bytes.data() + done, bytes.size() - done, off_t(offset) + off_t(done));
+      if (n < 0) {
+        if (errno == EINTR) continue;
+        error_ = errno;
+        return makeError(ErrorCode::kIo, reason(errno));
+      }
+      done += size_t(n);
+    }
+    return Ok{};
+  }
+
+  int fd_;
+  uint64_t size_ = 0;
+  int error_ = 0;
+};
+
+}  // namespace
+
+Status writeFileAtomic(const std::filesystem::path& path, const std::function<Status(ByteSink&)>& produce) {
   const std::string p = path.string();
   if (path.filename().empty()) return makeError(ErrorCode::kIo, p + ": cannot write: the path names no file");
   const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
@@ -117,14 +160,12 @@ Status writeFileAtomic(const std::filesystem::path& path, std::span<const uint8_
   };
   if (replacing && ::fchmod(fd, old.st_mode & 07777) != 0) return fail("cannot set permissions", errno);
 
-  size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return fail("write failed", errno);
-    }
-    done += size_t(n);
+  FdSink sink(fd);
+  if (Status s = produce(sink); !s.ok()) {
+    if (sink.error() != 0) return fail("write failed", sink.error());
+    ::close(closer.release());
+    ::unlink(temp.c_str());
+    return s;
   }
   if (::fsync(fd) != 0) return fail("fsync failed", errno);
   const int fd_to_close = closer.release();
@@ -145,6 +186,22 @@ Status writeFileAtomic(const std::filesystem::path& path, std::span<const uint8_
     (void)::fsync(dir_fd);
     ::close(dir_fd);
   }
+  return Ok{};
+}
+
+Status writeFileAtomic(const std::filesystem::path& path, std::span<const uint8_t> bytes) {
+  return writeFileAtomic(path, [&](ByteSink& sink) { return sink.append(bytes); });
+}
+
+Status VectorSink::append(std::span<const uint8_t> data) {
+  bytes.insert(bytes.end(), data.begin(), data.end());
+  return Ok{};
+}
+
+Status VectorSink::overwrite(uint64_t offset, std::span<const uint8_t> data) {
+  if (offset + data.size() > bytes.size())
+    return makeError(ErrorCode::kInvalidArgument, "overwrite past the end of the data");
+  std::copy(data.begin(), data.end(), bytes.begin() + std::ptrdiff_t(offset));
   return Ok{};
 }
 

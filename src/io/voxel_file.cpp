@@ -94,19 +94,58 @@ void unpaddedRow(const VoxelGrid& grid, int32_t y, int32_t z, std::vector<uint64
 
 // ---- Little-endian byte writer / reader ----
 
+// CRC-32 of n bytes, continuing from `crc` (the CRC of the bytes before them; 0 to start).
+uint32_t crc32Of(const uint8_t* data, size_t n, uint32_t crc_before = 0) {
+  // zlib's crc32 takes a uInt length: feed large buffers in pieces.
+  uLong crc = crc_before;
+  while (n > 0) {
+    const size_t piece = std::min<size_t>(n, 1u << 30);
+    crc = ::crc32(crc, data, uInt(piece));
+    data += piece;
+    n -= piece;
+  }
+  return uint32_t(crc);
+}
+
 class Writer {
  public:
+  Writer() = default;
+  // Streaming: whenever a varint leaves more than kChunkBytes buffered, the buffer goes to `sink` (and into the
+  // running CRC-32 of everything streamed); flush() sends the rest. The first failure is kept and later data dropped.
+  explicit Writer(ByteSink* sink) : sink_(sink) {}
+  static constexpr size_t kChunkBytes = size_t(1) << 20;
+
   std::vector<uint8_t> bytes;
+  Status flush() {
+    if (!sink_ || !status_.ok() || bytes.empty()) return status_;
+    status_ = sink_->append(bytes);
+    if (status_.ok()) {
+      crc_ = crc32Of(bytes.data(), bytes.size(), crc_);
+      streamed_ += bytes.size();
+    }
+    bytes.clear();
+    return status_;
+  }
+  const Status& status() const { return status_; }
+  uint64_t streamed() const { return streamed_; }  // bytes handed to the sink
+  uint32_t crc() const { return crc_; }            // their CRC-32
   void u16(uint16_t v) { raw(&v, 2); }
   void u32(uint32_t v) { raw(&v, 4); }
   void u64(uint64_t v) { raw(&v, 8); }
   void f64(double v) { u64(std::bit_cast<uint64_t>(v)); }
+  // Two bytes (a binvox run).
+  void pair(uint8_t a, uint8_t b) {
+    bytes.push_back(a);
+    bytes.push_back(b);
+    if (sink_ && bytes.size() >= kChunkBytes) (void)flush();  // a failure stays in status()
+  }
   void varint(uint64_t v) {
     while (v >= 0x80) {
       bytes.push_back(uint8_t(v | 0x80));
       v >>= 7;
     }
     bytes.push_back(uint8_t(v));
+    if (sink_ && bytes.size() >= kChunkBytes) (void)flush();  // a failure stays in status()
   }
   void text(const std::string& s) {
     const size_t n = std::min<size_t>(s.size(), 0xFFFF);  // longer strings are cut; the header field is 16-bit
@@ -137,6 +176,11 @@ class Writer {
     const T le = little(*v);
     std::memcpy(bytes.data() + at, &le, n);
   }
+
+  ByteSink* sink_ = nullptr;
+  Status status_ = Ok{};
+  uint64_t streamed_ = 0;
+  uint32_t crc_ = 0;
 };
 
 template <class T>
@@ -149,18 +193,6 @@ T loadLE(const uint8_t* p) {
     if constexpr (sizeof(T) == 8) v = T(__builtin_bswap64(v));
   }
   return v;
-}
-
-uint32_t crc32Of(const uint8_t* data, size_t n) {
-  // zlib's crc32 takes a uInt length: feed large buffers in pieces.
-  uLong crc = ::crc32(0L, Z_NULL, 0);
-  while (n > 0) {
-    const size_t piece = std::min<size_t>(n, 1u << 30);
-    crc = ::crc32(crc, data, uInt(piece));
-    data += piece;
-    n -= piece;
-  }
-  return uint32_t(crc);
 }
 
 // ---- .vxm ----
@@ -257,7 +289,12 @@ bool readVarint(const uint8_t*& p, const uint8_t* end, uint64_t& v) {
 
 }  // namespace
 
-std::vector<uint8_t> encodeVxm(const VoxelGrid& grid) {
+namespace {
+
+// The .vxm encoder, streamed: the header with placeholder counts, the body in chunks of about a megabyte, then the
+// completed header written over the placeholder and the file CRC (of the final header and the body, joined with
+// crc32_combine) appended. Memory: one chunk and one row, whatever the grid.
+Status encodeVxmTo(const VoxelGrid& grid, ByteSink& sink) {
   Writer w;
   w.bytes.reserve(4096);
   w.bytes.insert(w.bytes.end(), std::begin(kVxmMagic), std::end(kVxmMagic));
@@ -280,14 +317,15 @@ std::vector<uint8_t> encodeVxm(const VoxelGrid& grid) {
   w.text(f.source);
   const size_t header_crc_at = w.bytes.size();
   w.u32(0);
-  const size_t body_at = w.bytes.size();
-  w.patchU32(header_size_at, uint32_t(body_at));
+  w.patchU32(header_size_at, uint32_t(w.bytes.size()));
+  if (Status s = sink.append(w.bytes); !s.ok()) return s;
 
-  RunEncoder enc(w);
+  Writer body(&sink);
+  RunEncoder enc(body);
   if (!grid.empty()) {
     const uint64_t layer_voxels = uint64_t(grid.nx()) * uint64_t(grid.ny());
     std::vector<uint64_t> words(size_t((int64_t(grid.nx()) + 63) / 64));
-    for (int32_t z = 0; z < grid.nz(); ++z) {
+    for (int32_t z = 0; z < grid.nz() && body.status().ok(); ++z) {
       if (!grid.layerAllocated(z)) {
         enc.add(false, layer_voxels);
         continue;
@@ -299,13 +337,25 @@ std::vector<uint8_t> encodeVxm(const VoxelGrid& grid) {
     }
   }
   enc.finish();
-  const uint64_t body_bytes = w.bytes.size() - body_at;
+  if (Status s = body.flush(); !s.ok()) return s;
   w.patchU64(counts_at, enc.filled());
   w.patchU64(counts_at + 8, enc.runs());
-  w.patchU64(counts_at + 16, body_bytes);
+  w.patchU64(counts_at + 16, body.streamed());
   w.patchU32(header_crc_at, crc32Of(w.bytes.data(), header_crc_at));
-  w.u32(crc32Of(w.bytes.data(), w.bytes.size()));
-  return std::move(w.bytes);
+  if (Status s = sink.overwrite(0, w.bytes); !s.ok()) return s;
+  const uint32_t file_crc =
+      uint32_t(::crc32_combine(crc32Of(w.bytes.data(), w.bytes.size()), body.crc(), z_off_t(body.streamed())));
+  Writer tail;
+  tail.u32(file_crc);
+  return sink.append(tail.bytes);
+}
+
+}  // namespace
+
+std::vector<uint8_t> encodeVxm(const VoxelGrid& grid) {
+  VectorSink sink;
+  (void)encodeVxmTo(grid, sink);  // a memory sink does not fail
+  return std::move(sink.bytes);
 }
 
 Result<VoxelGrid> decodeVxm(std::span<const uint8_t> bytes, const std::string& name, uint64_t memory_limit_bytes) {
@@ -464,7 +514,7 @@ Result<VoxelGrid> decodeVxm(std::span<const uint8_t> bytes, const std::string& n
 
 Status saveVxm(const VoxelGrid& grid, const std::filesystem::path& path) {
   if (grid.empty()) return makeError(ErrorCode::kInvalidArgument, path.string() + ": cannot save an empty grid");
-  return writeFileAtomic(path, encodeVxm(grid));
+  return writeFileAtomic(path, [&](ByteSink& sink) { return encodeVxmTo(grid, sink); });
 }
 
 Result<VoxelGrid> loadVxm(const std::filesystem::path& path) {
@@ -497,7 +547,7 @@ bool parseInt(std::string_view s, int64_t& v) {
 // (value, count) byte pairs with counts of at most 255, merging adjacent runs of one value.
 class BinvoxRuns {
  public:
-  explicit BinvoxRuns(std::vector<uint8_t>& out) : out_(out) {}
+  explicit BinvoxRuns(Writer& out) : out_(out) {}
   void add(bool filled, uint64_t n) {
     if (n == 0) return;
     if (uint8_t(filled) != value_) {
@@ -509,14 +559,13 @@ class BinvoxRuns {
   void flush() {
     while (run_ > 0) {
       const uint64_t piece = std::min<uint64_t>(run_, 255);
-      out_.push_back(value_);
-      out_.push_back(uint8_t(piece));
+      out_.pair(value_, uint8_t(piece));
       run_ -= piece;
     }
   }
 
  private:
-  std::vector<uint8_t>& out_;
+  Writer& out_;
   uint8_t value_ = 0;
   uint64_t run_ = 0;
 };
@@ -566,14 +615,18 @@ std::vector<std::string_view> splitWords(std::string_view line) {
 
 }  // namespace
 
-std::vector<uint8_t> encodeBinvox(const VoxelGrid& grid) {
+namespace {
+
+// The binvox encoder, streamed in chunks of about a megabyte (binvox has no checksum or counts to patch).
+Status encodeBinvoxTo(const VoxelGrid& grid, ByteSink& sink) {
   const int32_t d = std::max({grid.nx(), grid.ny(), grid.nz()});
   const GridFrame& f = grid.frame();
   std::string header = "#binvox 1\ndim " + std::to_string(d) + " " + std::to_string(d) + " " + std::to_string(d) +
                        "\ntranslate " + shortestDouble(f.origin.x) + " " + shortestDouble(f.origin.y) + " " +
                        shortestDouble(f.origin.z) + "\nscale " + shortestDouble(double(d) * f.voxel_size) + "\ndata\n";
-  std::vector<uint8_t> out(header.begin(), header.end());
-  if (d == 0) return out;
+  Writer out(&sink);
+  out.bytes.assign(header.begin(), header.end());
+  if (d == 0) return out.flush();
   BinvoxRuns runs(out);
   // Binvox wants columns along y; the grid stores rows along x. Blocks of 64 x 64 bits are transposed into a
   // buffer of y-columns for 64 consecutive x and every allocated layer, which is then emitted as runs in the
@@ -581,7 +634,7 @@ std::vector<uint8_t> encodeBinvox(const VoxelGrid& grid) {
   ColumnBlocks cols(grid.dims(), [&](int32_t z) { return grid.layerAllocated(z); });
   const int64_t wpr = grid.wordsPerRow();
   uint64_t block[64];
-  for (int64_t x0 = 0; x0 < d; x0 += 64) {
+  for (int64_t x0 = 0; x0 < d && out.status().ok(); x0 += 64) {
     const int64_t bx = x0 >> 6;
     if (x0 < grid.nx()) {
       for (int32_t z = 0; z < grid.nz(); ++z) {
@@ -614,7 +667,15 @@ std::vector<uint8_t> encodeBinvox(const VoxelGrid& grid) {
     }
   }
   runs.flush();
-  return out;
+  return out.flush();
+}
+
+}  // namespace
+
+std::vector<uint8_t> encodeBinvox(const VoxelGrid& grid) {
+  VectorSink sink;
+  (void)encodeBinvoxTo(grid, sink);  // a memory sink does not fail
+  return std::move(sink.bytes);
 }
 
 Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string& name, uint64_t memory_limit_bytes) {
@@ -801,7 +862,7 @@ Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string
 
 Status saveBinvox(const VoxelGrid& grid, const std::filesystem::path& path) {
   if (grid.empty()) return makeError(ErrorCode::kInvalidArgument, path.string() + ": cannot save an empty grid");
-  return writeFileAtomic(path, encodeBinvox(grid));
+  return writeFileAtomic(path, [&](ByteSink& sink) { return encodeBinvoxTo(grid, sink); });
 }
 
 Result<VoxelGrid> loadBinvox(const std::filesystem::path& path) {

@@ -3,6 +3,7 @@
 // then renamed over the target, so a failed save never damages the previous file.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -16,5 +17,27 @@ Result<std::vector<uint8_t>> readFileBytes(const std::filesystem::path& path);
 // Atomic replace (temp file + fsync + rename). Errors name the path and the reason (e.g. "No space left on device").
 Status writeFileAtomic(const std::filesystem::path& path, std::span<const uint8_t> bytes);
 Status writeFileAtomic(const std::filesystem::path& path, const std::string& text);
+
+// Where an encoder streams its output: append() adds bytes at the end, overwrite() replaces bytes already written
+// (a header completed after the body). A failure is returned by the call that met it.
+class ByteSink {
+ public:
+  virtual ~ByteSink() = default;
+  virtual Status append(std::span<const uint8_t> bytes) = 0;
+  virtual Status overwrite(uint64_t offset, std::span<const uint8_t> bytes) = 0;
+};
+
+// Into memory.
+class VectorSink final : public ByteSink {
+ public:
+  Status append(std::span<const uint8_t> bytes) override;
+  Status overwrite(uint64_t offset, std::span<const uint8_t> bytes) override;
+  std::vector<uint8_t> bytes;
+};
+
+// Atomic replace, streamed: `produce` writes the file's content into the temporary file through the sink, so an
+// encoder never needs the whole file in memory. The target is replaced only when produce succeeds and the data is
+// flushed; any failure (produce's own or the disk's) leaves the previous file untouched and is returned.
+Status writeFileAtomic(const std::filesystem::path& path, const std::function<Status(ByteSink&)>& produce);
 
 }  // namespace vox::io

@@ -55,5 +55,32 @@ TEST_F(SmallDisk, saveThatRunsOutOfSpaceKeepsTheOldFileAndSaysWhy) {
   EXPECT_TRUE(reread->get(1, 2, 3));
 }
 
+TEST_F(SmallDisk, streamedSaveThatRunsOutOfSpaceMidwayKeepsTheOldFile) {
+  // A noisy grid whose .vxm is far larger than the file system: the failure comes while the body streams.
+  const auto target = dir_ / "part.vxm";
+  VoxelGrid small(Dims{8, 8, 8});
+  small.set(1, 2, 3);
+  ASSERT_TRUE(io::saveVxm(small, target).ok());
+  const std::string before = test::readFile(target);
+
+  VoxelGrid noisy(Dims{256, 256, 64});
+  uint32_t state = 12345;
+  for (int z = 0; z < 64; ++z)
+    for (int y = 0; y < 256; ++y)
+      for (int x = 0; x < 256; ++x)
+        if (((state = state * 1664525u + 1013904223u) >> 31) != 0) noisy.set(x, y, z);
+  for (const char* name : {"part.vxm", "part.binvox"}) {
+    SCOPED_TRACE(name);
+    const auto s = io::saveVoxelFile(noisy, dir_ / name);
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().code, ErrorCode::kIo);
+    EXPECT_NE(s.error().message.find("No space left on device"), std::string::npos) << s.error().message;
+  }
+  EXPECT_EQ(test::readFile(target), before);
+  int entries = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir_)) ++entries;
+  EXPECT_EQ(entries, 1) << "a temporary file was not removed";
+}
+
 }  // namespace
 }  // namespace vox

@@ -284,6 +284,23 @@ TEST(VoxelFile, dispatchesByExtensionCaseInsensitively) {
   EXPECT_EQ(test::readFile(tmp / "c.binvox").substr(0, 9), "#binvox 1");
 }
 
+TEST(VoxelFile, streamedSavesOfSeveralChunksEqualTheEncodingInMemory) {
+  // A noisy grid encodes to megabytes in either format: the saves stream it in 1 MiB chunks (the .vxm
+  // header and its CRC completed afterwards) and must write exactly the bytes the in-memory encoders return.
+  test::TempDir tmp;
+  const VoxelGrid g = randomGrid({300, 200, 160}, 0.5, 21);
+  const std::vector<uint8_t> vxm = encodeVxm(g), binvox = encodeBinvox(g);
+  ASSERT_GT(vxm.size(), size_t(3) << 19);  // more than one chunk
+  ASSERT_GT(binvox.size(), size_t(3) << 19);
+  ASSERT_TRUE(saveVxm(g, tmp / "g.vxm").ok());
+  ASSERT_TRUE(saveBinvox(g, tmp / "g.binvox").ok());
+  EXPECT_TRUE(test::readFile(tmp / "g.vxm") == std::string(vxm.begin(), vxm.end()));
+  EXPECT_TRUE(test::readFile(tmp / "g.binvox") == std::string(binvox.begin(), binvox.end()));
+  const auto r = loadVxm(tmp / "g.vxm");
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  expectSameVoxels(g, r.value());
+}
+
 TEST(VoxelFile, unknownExtensionNamesTheSupportedOnes) {
   test::TempDir tmp;
   const auto r = loadVoxelFile(tmp / "a.vox");
