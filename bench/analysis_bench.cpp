@@ -10,7 +10,7 @@
 //   xray/<axis>/<mode>       X-ray along each axis in each mode
 //   mass                     mass properties
 //
-//   build-ana/bench/analysis_bench --benchmark_filter='section'
+//   build-rel/bench/analysis_bench --benchmark_filter='section'
 #include <cstdio>
 #include <cstdlib>
 #include <memory>

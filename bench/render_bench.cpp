@@ -15,12 +15,12 @@
 // steadier figure, since wall time there includes waiting for a core.
 // Runs on the headless EGL context (llvmpipe on a machine without a GPU; LP_NUM_THREADS sets its threads).
 //
-//   build-render/bench/render_bench --benchmark_filter='frame/sphere'
+//   build-rel/bench/render_bench --benchmark_filter='frame/sphere'
 //
 // With --voxmod_images=DIR it instead renders the documentation images (docs/images/render_*.png): spheres of
 // diameter R = 100, 200, 400, 1000 at 800 x 800 (classic table, yaw 30, pitch 20: the thesis's Figure 6.2.3 set),
 // and the armadillo at R = 400, lit, and cut away along Y.
-//   build-render/bench/render_bench --voxmod_images=docs/images
+//   build-rel/bench/render_bench --voxmod_images=docs/images
 #include <chrono>
 #include <cmath>
 #include <cstdio>

@@ -76,25 +76,42 @@ std::vector<uint32_t> weldCorners(const TriangleMesh& mesh, KeyFn&& key_of, int6
   size_t capacity = std::bit_ceil(std::max<size_t>(16, mesh.triangles.size()));
   std::vector<Slot> table(capacity, Slot{Key{}, kEmpty});
   uint32_t next = 0;
-  auto insert = [&](std::vector<Slot>& t, const Key& key, uint32_t id) -> uint32_t {
+  auto insert = [&](std::vector<Slot>& t, const Key& key, uint64_t hash, uint32_t id) -> uint32_t {
     const size_t mask = t.size() - 1;
-    for (size_t i = size_t(hashKey(key)) & mask;; i = (i + 1) & mask) {
+    for (size_t i = size_t(hash) & mask;; i = (i + 1) & mask) {
       if (t[i].id == kEmpty) {
         t[i] = Slot{key, id};
         return id;
       }
-      if (t[i].key == key) return t[i].id;
+      const Key& k = t[i].key;  // compared element by element: std::array's == becomes a memcmp call here
+      if (k[0] == key[0] && k[1] == key[1] && k[2] == key[2]) return t[i].id;
     }
   };
+  // A large table misses the cache on nearly every lookup, so the keys and hashes of the next kAhead corners are
+  // computed ahead and their slots prefetched: the misses overlap instead of being waited for one by one.
+  constexpr size_t kAhead = 16;
+  std::array<Key, kAhead> ahead_key{};
+  std::array<uint64_t, kAhead> ahead_hash{};
+  auto prepare = [&](size_t c) {
+    const Key k = key_of(mesh.triangles[c / 3].v[c % 3]);
+    const uint64_t h = hashKey(k);
+    ahead_key[c % kAhead] = k;
+    ahead_hash[c % kAhead] = h;
+    __builtin_prefetch(&table[size_t(h) & (table.size() - 1)]);
+  };
+  for (size_t c = 0; c < std::min(corners, kAhead); ++c) prepare(c);
   for (size_t c = 0; c < corners; ++c) {
-    const uint32_t id = insert(table, key_of(mesh.triangles[c / 3].v[c % 3]), next);
+    const Key key = ahead_key[c % kAhead];
+    const uint64_t hash = ahead_hash[c % kAhead];
+    if (c + kAhead < corners) prepare(c + kAhead);
+    const uint32_t id = insert(table, key, hash, next);
     vid[c] = id;
     if (id != next) continue;
     if (++next > capacity / 2) {  // grow: rehash into twice the slots
       capacity *= 2;
       std::vector<Slot> bigger(capacity, Slot{Key{}, kEmpty});
       for (const Slot& s : table) {
-        if (s.id != kEmpty) insert(bigger, s.key, s.id);
+        if (s.id != kEmpty) insert(bigger, s.key, hashKey(s.key), s.id);
       }
       table.swap(bigger);
     }
