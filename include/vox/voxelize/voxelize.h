@@ -5,8 +5,9 @@
 // result depends only on the float32 vertices and the grid, and is identical for any number of threads.
 //
 // Cost: O(T + R^2 + crossings) time for the rays plus writing the grid (word operations); vote mode casts three
-// ray families. Memory: the grid (estimateGridBytes, layers allocated only where the model is); in vote mode the
-// whole grid plus the disputed mask (up to a second grid); plus about 56 bytes per triangle and ray family.
+// ray families. Memory: the grid (estimateGridBytes, layers allocated only where the model is); in vote mode also
+// the disputed mask (up to a second grid) and 4 bytes per crossing along Z; plus 8 bytes per triangle for the ray
+// caster's row index (it reads vertices from the mesh, which must stay alive) and a few scratch layers per thread.
 #include <cstdint>
 #include <optional>
 #include <string>
