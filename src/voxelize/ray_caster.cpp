@@ -170,8 +170,6 @@ void RayCaster::RowSweep::next(std::vector<Crossing>& out) {
     if (e + kAhead < end) caster_.prefetch(e + kAhead);
     activate(e);
   }
-  // A triangle whose last row this is leaves the set: the last one takes its place (and is handled next), so each
-  // removal moves one plane rather than shifting the rest.
   // Meanwhile, fetch the triangles that become active in the next row, one per plane handled, so their cache
   // misses overlap with this row's work.
   size_t ahead = end;
@@ -182,6 +180,8 @@ void RayCaster::RowSweep::next(std::vector<Crossing>& out) {
     if (planes_[k].row_hi > row_ + 1) {
       ++k;
     } else {
+      // This was the triangle's last row: the last plane takes its place (and is handled next), so a removal moves
+      // one plane rather than shifting the rest.
       if (k + 1 != planes_.size()) planes_[k] = planes_.back();
       planes_.pop_back();
     }
