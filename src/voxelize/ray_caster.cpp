@@ -20,6 +20,7 @@
 #include "voxelize/ray_caster.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -81,6 +82,8 @@ RayCaster::RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, R
   cu_ = centresAlong(placement, axes.u);
   cv_ = centresAlong(placement, axes.v);
   cw_ = centresAlong(placement, axes.w);
+  static_assert(kMaxResolution < Crossing::kMaxRays && kMaxResolution < Crossing::kMaxLength);
+  assert(cv_.size() < size_t(Crossing::kMaxRays) && cu_.size() < size_t(Crossing::kMaxLength));
   // Counting sort by first row, so a sweep activates triangles in order. Chunks of the input are contiguous and
   // scattered in chunk order, so the result (row, then input order) does not depend on the number of threads.
   // The first pass keeps each triangle's rows (8 bytes, row_lo < 0 for a dropped triangle) so the second only

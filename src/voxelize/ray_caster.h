@@ -23,11 +23,26 @@ inline constexpr RayAxes kRaysAlongX{0, 1, 2};  // rows are Z layers, rays withi
 inline constexpr RayAxes kRaysAlongY{1, 0, 2};  // rows are Z layers, rays within a row step along X
 inline constexpr RayAxes kRaysAlongZ{2, 0, 1};  // rows are Y rows, rays within a row step along X
 
-// One crossing of one ray with one triangle.
-struct Crossing {
-  int32_t ray;    // ray index along v within the row
-  int32_t first;  // first voxel index along u whose centre lies past the crossing, 0..nu (nu: past every centre)
-  int32_t sign;   // sign of the triangle normal's u component: -1 where an outward-oriented solid is entered
+// One crossing of one ray with one triangle, packed into 32 bits (ray, then first voxel, then sign, from the high
+// bits down) so that a row's crossings move and sort cheaply: comparing packed values orders them by ray, then along
+// the ray. Needs rays < 2^15 per row and ray lengths <= 65535 (voxmod's grids are at most kMaxResolution = 4096).
+class Crossing {
+ public:
+  static constexpr int32_t kMaxRays = int32_t(1) << 15;
+  static constexpr int32_t kMaxLength = 0xFFFF;
+  Crossing() = default;
+  Crossing(int32_t ray, int32_t first, int32_t sign)
+      : bits_(uint32_t(ray) << 17 | uint32_t(first) << 1 | (sign > 0 ? 1u : 0u)) {}
+  // Ray index along v within the row.
+  int32_t ray() const { return int32_t(bits_ >> 17); }
+  // First voxel index along u whose centre lies past the crossing, 0..nu (nu: past every centre).
+  int32_t first() const { return int32_t((bits_ >> 1) & 0xFFFF); }
+  // Sign of the triangle normal's u component: -1 where an outward-oriented solid is entered.
+  int32_t sign() const { return (bits_ & 1) != 0 ? 1 : -1; }
+  uint32_t packed() const { return bits_; }
+
+ private:
+  uint32_t bits_ = 0;
 };
 
 class RayCaster {

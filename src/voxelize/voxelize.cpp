@@ -232,12 +232,12 @@ void fillRowAlongX(int32_t ny, int32_t nx, const std::vector<Crossing>& crossing
   s.crossings += int64_t(crossings.size());
   // Counting sort by ray: O(ny + crossings).
   s.start.assign(size_t(ny) + 1, 0);
-  for (const Crossing& c : crossings) ++s.start[size_t(c.ray) + 1];
+  for (const Crossing& c : crossings) ++s.start[size_t(c.ray()) + 1];
   for (int32_t j = 0; j < ny; ++j) s.start[size_t(j) + 1] += s.start[size_t(j)];
   s.sorted.resize(crossings.size());
   {
     std::vector<int32_t>& pos = s.start;  // advanced while scattering, restored below
-    for (const Crossing& c : crossings) s.sorted[size_t(pos[size_t(c.ray)]++)] = c;
+    for (const Crossing& c : crossings) s.sorted[size_t(pos[size_t(c.ray())]++)] = c;
     for (int32_t j = ny; j > 0; --j) pos[size_t(j)] = pos[size_t(j) - 1];
     pos[0] = 0;
   }
@@ -245,11 +245,12 @@ void fillRowAlongX(int32_t ny, int32_t nx, const std::vector<Crossing>& crossing
     Crossing* b = s.sorted.data() + s.start[size_t(j)];
     Crossing* e = s.sorted.data() + s.start[size_t(j) + 1];
     if (b == e) continue;
-    // A ray crosses few triangles: insertion sort by position.
+    // A ray crosses few triangles: insertion sort by position (the packed values of one ray's crossings order
+    // them by first voxel).
     for (Crossing* p = b + 1; p < e; ++p) {
       const Crossing c = *p;
       Crossing* q = p;
-      while (q > b && (q - 1)->first > c.first) {
+      while (q > b && (q - 1)->packed() > c.packed()) {
         *q = *(q - 1);
         --q;
       }
@@ -258,18 +259,18 @@ void fillRowAlongX(int32_t ny, int32_t nx, const std::vector<Crossing>& crossing
     const int64_t n = e - b;
     if (rule == Rule::kParity) {
       // Voxel i is inside iff an odd number of crossings lie before its centre: runs [first_0, first_1), ...
-      for (int64_t m = 0; m + 1 < n; m += 2) write(j, b[m].first, b[m + 1].first);
+      for (int64_t m = 0; m + 1 < n; m += 2) write(j, b[m].first(), b[m + 1].first());
       if (n % 2 != 0) {
-        write(j, b[n - 1].first, nx);  // the ray ends inside: the mesh is open on this line
+        write(j, b[n - 1].first(), nx);  // the ray ends inside: the mesh is open on this line
         ++s.odd_rays;
       }
     } else {
       // Winding number from -infinity: entering a solid (normal pointing to -u, sign -1) adds one.
       int64_t winding = 0;
       for (int64_t m = 0; m < n; ++m) {
-        winding -= b[m].sign;
-        const int32_t end = m + 1 < n ? b[m + 1].first : nx;
-        if (winding != 0 && b[m].first < end) write(j, b[m].first, end);
+        winding -= b[m].sign();
+        const int32_t end = m + 1 < n ? b[m + 1].first() : nx;
+        if (winding != 0 && b[m].first() < end) write(j, b[m].first(), end);
       }
       if (winding != 0) ++s.unbalanced_rays;
       if (n % 2 != 0) ++s.odd_rays;
@@ -286,11 +287,11 @@ void toggleRowAlongY(uint64_t* layer, int32_t ny, int32_t nx, int64_t wpr, const
   s.parity.assign(size_t(nx), 0);
   int32_t lowest = ny;
   for (const Crossing& c : crossings) {
-    s.parity[size_t(c.ray)] ^= 1;
-    if (c.first >= ny) continue;
-    const int64_t xp = int64_t(c.ray) + 1;
-    layer[(int64_t(c.first) + 1) * wpr + (xp >> 6)] ^= uint64_t(1) << (xp & 63);
-    lowest = std::min(lowest, c.first);
+    s.parity[size_t(c.ray())] ^= 1;
+    if (c.first() >= ny) continue;
+    const int64_t xp = int64_t(c.ray()) + 1;
+    layer[(int64_t(c.first()) + 1) * wpr + (xp >> 6)] ^= uint64_t(1) << (xp & 63);
+    lowest = std::min(lowest, c.first());
   }
   for (uint8_t p : s.parity) s.odd_rays += p;
   for (int32_t y = lowest + 1; y < ny; ++y) {
@@ -311,8 +312,8 @@ void collectTogglesAlongZ(int32_t y, int32_t nz, int32_t nx, int64_t wpr, const 
   s.parity.assign(size_t(nx), 0);
   const int64_t row_bit = (int64_t(y) + 1) * wpr * 64 + 1;
   for (const Crossing& c : crossings) {
-    s.parity[size_t(c.ray)] ^= 1;
-    if (c.first < nz) toggles[size_t(c.first)].push_back(uint32_t(row_bit + c.ray));
+    s.parity[size_t(c.ray())] ^= 1;
+    if (c.first() < nz) toggles[size_t(c.first())].push_back(uint32_t(row_bit + c.ray()));
   }
   for (uint8_t p : s.parity) s.odd_rays += p;
 }
