@@ -195,6 +195,13 @@ T loadLE(const uint8_t* p) {
   return v;
 }
 
+// A streaming encoder's output collected in memory (a memory sink does not fail).
+std::vector<uint8_t> encodeToMemory(Status (*encode)(const VoxelGrid&, ByteSink&), const VoxelGrid& grid) {
+  VectorSink sink;
+  (void)encode(grid, sink);
+  return std::move(sink.bytes);
+}
+
 // ---- .vxm ----
 
 constexpr uint8_t kVxmMagic[8] = {0x89, 'V', 'X', 'M', '\r', '\n', 0x1A, '\n'};
@@ -287,10 +294,6 @@ bool readVarint(const uint8_t*& p, const uint8_t* end, uint64_t& v) {
   return false;
 }
 
-}  // namespace
-
-namespace {
-
 // The .vxm encoder, streamed: the header with placeholder counts, the body in chunks of about a megabyte, then the
 // completed header written over the placeholder and the file CRC (of the final header and the body, joined with
 // crc32_combine) appended. Memory: one chunk and one row, whatever the grid.
@@ -352,11 +355,7 @@ Status encodeVxmTo(const VoxelGrid& grid, ByteSink& sink) {
 
 }  // namespace
 
-std::vector<uint8_t> encodeVxm(const VoxelGrid& grid) {
-  VectorSink sink;
-  (void)encodeVxmTo(grid, sink);  // a memory sink does not fail
-  return std::move(sink.bytes);
-}
+std::vector<uint8_t> encodeVxm(const VoxelGrid& grid) { return encodeToMemory(encodeVxmTo, grid); }
 
 Result<VoxelGrid> decodeVxm(std::span<const uint8_t> bytes, const std::string& name, uint64_t memory_limit_bytes) {
   const uint8_t* b = bytes.data();
@@ -613,10 +612,6 @@ std::vector<std::string_view> splitWords(std::string_view line) {
   return out;
 }
 
-}  // namespace
-
-namespace {
-
 // The binvox encoder, streamed in chunks of about a megabyte (binvox has no checksum or counts to patch).
 Status encodeBinvoxTo(const VoxelGrid& grid, ByteSink& sink) {
   const int32_t d = std::max({grid.nx(), grid.ny(), grid.nz()});
@@ -672,11 +667,7 @@ Status encodeBinvoxTo(const VoxelGrid& grid, ByteSink& sink) {
 
 }  // namespace
 
-std::vector<uint8_t> encodeBinvox(const VoxelGrid& grid) {
-  VectorSink sink;
-  (void)encodeBinvoxTo(grid, sink);  // a memory sink does not fail
-  return std::move(sink.bytes);
-}
+std::vector<uint8_t> encodeBinvox(const VoxelGrid& grid) { return encodeToMemory(encodeBinvoxTo, grid); }
 
 Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string& name, uint64_t memory_limit_bytes) {
   const char* text = reinterpret_cast<const char*>(bytes.data());

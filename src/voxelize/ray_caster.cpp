@@ -173,12 +173,7 @@ void RayCaster::RowSweep::next(std::vector<Crossing>& out) {
     if (e + kAhead < end) caster_.prefetch(e + kAhead);
     activate(e);
   }
-  // Meanwhile, fetch the triangles that become active in the next row, one per plane handled, so their cache
-  // misses overlap with this row's work.
-  size_t ahead = end;
-  const size_t ahead_end = size_t(row_) + 2 < caster_.row_start_.size() ? caster_.row_start_[size_t(row_) + 2] : end;
   for (size_t k = 0; k < planes_.size();) {
-    if (ahead < ahead_end) caster_.prefetch(ahead++);
     caster_.rowCrossings(planes_[k], row_, out);
     if (planes_[k].row_hi > row_ + 1) {
       ++k;

@@ -27,6 +27,18 @@ class SmallDisk : public ::testing::Test {
   void TearDown() override {
     if (mounted_) ::umount(dir_.c_str());
   }
+  // Saves a small valid .vxm as `name` and returns its bytes (the file a failed save must leave untouched).
+  std::string saveSmallFile(const char* name) {
+    VoxelGrid small(Dims{8, 8, 8});
+    small.set(1, 2, 3);
+    EXPECT_TRUE(io::saveVxm(small, dir_ / name).ok());
+    return test::readFile(dir_ / name);
+  }
+  int entries() const {
+    int n = 0;
+    for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir_)) ++n;
+    return n;
+  }
   test::TempDir tmp_;
   std::filesystem::path dir_;
   bool mounted_ = false;
@@ -34,10 +46,7 @@ class SmallDisk : public ::testing::Test {
 
 TEST_F(SmallDisk, saveThatRunsOutOfSpaceKeepsTheOldFileAndSaysWhy) {
   const auto target = dir_ / "part.vxm";
-  VoxelGrid small(Dims{8, 8, 8});
-  small.set(1, 2, 3);
-  ASSERT_TRUE(io::saveVxm(small, target).ok());
-  const std::string before = test::readFile(target);
+  const std::string before = saveSmallFile("part.vxm");
 
   const std::string big(1 << 20, 'x');  // 1 MiB into a 64 KiB file system
   auto s = io::writeFileAtomic(target, big);
@@ -47,9 +56,7 @@ TEST_F(SmallDisk, saveThatRunsOutOfSpaceKeepsTheOldFileAndSaysWhy) {
   EXPECT_NE(s.error().message.find("No space left on device"), std::string::npos) << s.error().message;
 
   EXPECT_EQ(test::readFile(target), before);  // the previous file is untouched
-  int entries = 0;
-  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir_)) ++entries;
-  EXPECT_EQ(entries, 1) << "the temporary file was not removed";
+  EXPECT_EQ(entries(), 1) << "the temporary file was not removed";
   auto reread = io::loadVxm(target);
   ASSERT_TRUE(reread.ok()) << reread.error().message;
   EXPECT_TRUE(reread->get(1, 2, 3));
@@ -58,10 +65,7 @@ TEST_F(SmallDisk, saveThatRunsOutOfSpaceKeepsTheOldFileAndSaysWhy) {
 TEST_F(SmallDisk, streamedSaveThatRunsOutOfSpaceMidwayKeepsTheOldFile) {
   // A noisy grid whose .vxm is far larger than the file system: the failure comes while the body streams.
   const auto target = dir_ / "part.vxm";
-  VoxelGrid small(Dims{8, 8, 8});
-  small.set(1, 2, 3);
-  ASSERT_TRUE(io::saveVxm(small, target).ok());
-  const std::string before = test::readFile(target);
+  const std::string before = saveSmallFile("part.vxm");
 
   VoxelGrid noisy(Dims{256, 256, 64});
   uint32_t state = 12345;
@@ -77,9 +81,7 @@ TEST_F(SmallDisk, streamedSaveThatRunsOutOfSpaceMidwayKeepsTheOldFile) {
     EXPECT_NE(s.error().message.find("No space left on device"), std::string::npos) << s.error().message;
   }
   EXPECT_EQ(test::readFile(target), before);
-  int entries = 0;
-  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir_)) ++entries;
-  EXPECT_EQ(entries, 1) << "a temporary file was not removed";
+  EXPECT_EQ(entries(), 1) << "a temporary file was not removed";
 }
 
 }  // namespace

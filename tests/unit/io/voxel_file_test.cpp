@@ -44,6 +44,17 @@ void expectSameVoxels(const VoxelGrid& a, const VoxelGrid& b) {
   EXPECT_EQ(a.filledCount(), b.filledCount());
 }
 
+// A grid read back from .binvox: `g` padded with empty voxels to the cube of its largest dimension.
+void expectSamePaddedToCube(const VoxelGrid& g, const VoxelGrid& cube) {
+  const int32_t n = std::max({g.nx(), g.ny(), g.nz()});
+  ASSERT_EQ(cube.dims(), (Dims{n, n, n}));
+  int64_t mismatches = 0;
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) mismatches += cube.get(x, y, z) != (g.inBounds(x, y, z) && g.get(x, y, z));
+  EXPECT_EQ(mismatches, 0);
+}
+
 const Dims kAwkwardDims[] = {{1, 1, 1},   {1, 7, 5},   {62, 3, 4},   {63, 5, 6},  {64, 4, 4},   {65, 3, 9},
                              {126, 2, 3}, {127, 4, 4}, {130, 11, 7}, {200, 1, 3}, {33, 40, 17}, {5, 64, 64}};
 
@@ -183,13 +194,7 @@ TEST(Binvox, paddedRoundTripIsBitExactForAwkwardNonCubicDims) {
     const VoxelGrid g = randomGrid(d, 0.3, seed++);
     const auto r = decodeBinvox(encodeBinvox(g), "t.binvox");
     ASSERT_TRUE(r.ok()) << r.error().message;
-    const int32_t n = std::max({d.nx, d.ny, d.nz});
-    ASSERT_EQ(r->dims(), (Dims{n, n, n}));
-    int64_t mismatches = 0;
-    for (int z = 0; z < n; ++z)
-      for (int y = 0; y < n; ++y)
-        for (int x = 0; x < n; ++x) mismatches += r->get(x, y, z) != (g.inBounds(x, y, z) && g.get(x, y, z));
-    EXPECT_EQ(mismatches, 0);
+    expectSamePaddedToCube(g, r.value());
   }
 }
 
@@ -299,6 +304,9 @@ TEST(VoxelFile, streamedSavesOfSeveralChunksEqualTheEncodingInMemory) {
   const auto r = loadVxm(tmp / "g.vxm");
   ASSERT_TRUE(r.ok()) << r.error().message;
   expectSameVoxels(g, r.value());
+  const auto b = loadBinvox(tmp / "g.binvox");  // every chunk arrived, in order
+  ASSERT_TRUE(b.ok()) << b.error().message;
+  expectSamePaddedToCube(g, b.value());
 }
 
 TEST(VoxelFile, unknownExtensionNamesTheSupportedOnes) {
