@@ -190,53 +190,51 @@ void RayCaster::RowSweep::next(std::vector<Crossing>& out) {
 void RayCaster::rowCrossings(const Plane& plane, int32_t row, std::vector<Crossing>& out) const {
   const double w = cw_[size_t(row)];
   const double av = plane.a[1], aw = plane.a[2], bv = plane.b[1], bw = plane.b[2], cv = plane.c[1], cw = plane.c[2];
-  int32_t j0 = plane.ray_lo, j1 = plane.ray_hi;
-  // Rays strictly inside (inner_lo, inner_hi) are certainly crossed; empty unless the section below is computed.
-  double inner_lo = 0.0, inner_hi = 0.0;
-  if (j1 - j0 > 2 && plane.row_hi - plane.row_lo > 1) {
-    // A triangle spanning several rows is usually much narrower in one row than its bounding box (long slivers in
-    // CAD meshes): intersect the projection with the line at w, [lo, hi]. Computed in double, each end is off by
-    // at most about 10 ulps of the largest coordinate involved; `margin` is a thousand times that. Rays farther
-    // than `margin` outside [lo, hi] miss the triangle, rays farther than `margin` inside cross it (strictly
-    // inside, so no tie is possible); only the rays near either end need the exact edge tests. The index
-    // conversion below adds one more ray on each side, covering its own rounding.
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    const double edges[3][4] = {{av, aw, bv, bw}, {bv, bw, cv, cw}, {cv, cw, av, aw}};
-    for (int k = 0; k < 3; ++k) {
-      const double pv = edges[k][0], pw = edges[k][1], qv = edges[k][2], qw = edges[k][3];
-      if (pw == qw) {
-        if (pw == w) {
-          lo = std::min({lo, pv, qv});
-          hi = std::max({hi, pv, qv});
-        }
-        continue;
-      }
-      if (w < std::min(pw, qw) || w > std::max(pw, qw)) continue;
-      // pv + (w - pw) * dv/dw, with |w - pw| <= |qw - pw|: the same error bound as interpolating directly.
-      const double v = std::clamp(pv + (w - pw) * plane.slope[k], std::min(pv, qv), std::max(pv, qv));
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
-    }
-    if (lo <= hi) {
-      const double margin = 1e-12 * std::max(plane.vw_scale, std::abs(w));
-      // Ray indices, rounded outwards by a whole ray (truncation instead of floor: one more ray at most).
-      const int32_t first = clampedIndex((lo - margin - cv_[0]) * inv_h_, j0, j1) - 1;
-      const int32_t last = clampedIndex((hi + margin - cv_[0]) * inv_h_, j0, j1) + 2;
-      j0 = std::max(j0, first);
-      j1 = std::min(j1, std::max(j0, last));
-      inner_lo = lo + margin;
-      inner_hi = hi - margin;
-    }
-  }
   const double w_term = plane.n[2] * (w - plane.a[2]);  // the part of the crossing's formula fixed by the row
-  for (int32_t j = j0; j < j1; ++j) {
-    const double v = cv_[size_t(j)];
-    if (!(v > inner_lo && v < inner_hi)) {
-      if (edgeSide(av, aw, bv, bw, v, w) != plane.sign) continue;
-      if (edgeSide(bv, bw, cv, cw, v, w) != plane.sign) continue;
-      if (edgeSide(cv, cw, av, aw, v, w) != plane.sign) continue;
+  auto crossedExactly = [&](double v) {
+    return edgeSide(av, aw, bv, bw, v, w) == plane.sign && edgeSide(bv, bw, cv, cw, v, w) == plane.sign &&
+           edgeSide(cv, cw, av, aw, v, w) == plane.sign;
+  };
+  // The section of the projection with the line at w, [lo, hi]: the crossed rays of this row are the rays strictly
+  // inside it, plus any the exact tests admit at its ends. Computed in double, each end is off by at most about 10
+  // ulps of the largest coordinate involved; `margin` is a thousand times that. Rays farther than `margin` outside
+  // [lo, hi] miss the triangle (the closed projection is at positive distance from them, and so from the displaced
+  // ray), rays farther than `margin` inside cross it (the displaced ray is interior: even where the section is a
+  // horizontal edge at w = w_min, the displacement eps^2 along w moves it into the triangle); only rays within
+  // `margin` of an end need the exact edge tests.
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  const double edges[3][4] = {{av, aw, bv, bw}, {bv, bw, cv, cw}, {cv, cw, av, aw}};
+  for (int k = 0; k < 3; ++k) {
+    const double pv = edges[k][0], pw = edges[k][1], qv = edges[k][2], qw = edges[k][3];
+    if (pw == qw) {
+      if (pw == w) {
+        lo = std::min({lo, pv, qv});
+        hi = std::max({hi, pv, qv});
+      }
+      continue;
     }
-    out.push_back(Crossing{j, firstPast(plane, w_term, v, w), plane.sign});
+    if (w < std::min(pw, qw) || w > std::max(pw, qw)) continue;
+    // pv + (w - pw) * dv/dw, with |w - pw| <= |qw - pw|: the same error bound as interpolating directly.
+    const double v = std::clamp(pv + (w - pw) * plane.slope[k], std::min(pv, qv), std::max(pv, qv));
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  if (!(lo <= hi)) {
+    // Not reached for finite coordinates (w_min <= w < w_max, so some edge spans w); decide every ray exactly.
+    for (int32_t j = plane.ray_lo; j < plane.ray_hi; ++j) {
+      const double v = cv_[size_t(j)];
+      if (crossedExactly(v)) out.push_back(Crossing{j, firstPast(plane, w_term, v, w), plane.sign});
+    }
+    return;
+  }
+  const double margin = 1e-12 * std::max(plane.vw_scale, std::abs(w));
+  const double outer_lo = lo - margin, outer_hi = hi + margin, inner_lo = lo + margin, inner_hi = hi - margin;
+  for (int32_t j = std::max(plane.ray_lo, firstAtOrAbove(cv_, origin_v_, inv_h_, outer_lo)); j < plane.ray_hi; ++j) {
+    const double v = cv_[size_t(j)];
+    if (v > outer_hi) break;
+    if ((v > inner_lo && v < inner_hi) || crossedExactly(v)) {
+      out.push_back(Crossing{j, firstPast(plane, w_term, v, w), plane.sign});
+    }
   }
 }
 
@@ -295,7 +293,7 @@ RayCaster::Plane::Plane(const Tri& t, const RayCaster& caster)
   }
 }
 
-int32_t RayCaster::firstPast(const Plane& pl, double w_term, double v, double w) const {
+inline int32_t RayCaster::firstPast(const Plane& pl, double w_term, double v, double w) const {
   if (pl.fixed_first >= 0) return pl.fixed_first;
   // The crossing lies at u = x_c = a.u - (n.v (v - a.v) + n.w (w - a.w)) / n.u. Centre i = (u_i + eps, v + eps^3,
   // w + eps^2) is past it iff u_i >= x_c (at u_i == x_c the displacement eps along u puts it past). Fast path: x_c
