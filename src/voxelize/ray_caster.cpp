@@ -72,6 +72,14 @@ std::vector<double> centresAlong(const GridPlacement& placement, int axis) {
 
 }  // namespace
 
+void CrossingList::grow(size_t needed) {
+  const size_t capacity = std::max({needed, 2 * capacity_, size_t(4096)});
+  std::unique_ptr<Crossing[]> data(new Crossing[capacity]);
+  std::copy(begin(), end(), data.get());
+  data_ = std::move(data);
+  capacity_ = capacity;
+}
+
 RayCaster::RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, RayAxes axes, int threads)
     : mesh_(mesh),
       axes_(axes),
@@ -151,19 +159,12 @@ bool RayCaster::classify(size_t i, Tri& t) const {
 RayCaster::RowSweep::RowSweep(const RayCaster& caster, int32_t row_begin) : caster_(caster), row_(row_begin) {
   const size_t begin = caster.row_start_[size_t(std::clamp(row_begin, 0, caster.rows()))];
   for (size_t e = 0; e < begin; ++e) {
-    if (caster.entries_[e].row_hi > row_begin) activate(e);
+    if (caster.entries_[e].row_hi > row_begin)
+      planes_.emplace_back(caster.entries_[e].triangle, caster.entries_[e].row_hi, caster);
   }
 }
 
-void RayCaster::RowSweep::activate(size_t entry) {
-  Tri t;
-  // Kept triangles were classified as crossable when the caster was built; the same computation gives the same
-  // answer here.
-  caster_.classify(caster_.entries_[entry].triangle, t);
-  planes_.emplace_back(t, caster_);
-}
-
-void RayCaster::RowSweep::next(std::vector<Crossing>& out) {
+void RayCaster::RowSweep::next(CrossingList& out) {
   if (row_ >= caster_.rows()) return;
   const size_t begin = caster_.row_start_[size_t(row_)], end = caster_.row_start_[size_t(row_) + 1];
   // The triangles of a row lie anywhere in the mesh: fetch a few ahead so their cache misses overlap.
@@ -171,7 +172,7 @@ void RayCaster::RowSweep::next(std::vector<Crossing>& out) {
   for (size_t e = begin; e < std::min(end, begin + kAhead); ++e) caster_.prefetch(e);
   for (size_t e = begin; e < end; ++e) {
     if (e + kAhead < end) caster_.prefetch(e + kAhead);
-    activate(e);
+    planes_.emplace_back(caster_.entries_[e].triangle, caster_.entries_[e].row_hi, caster_);
   }
   for (size_t k = 0; k < planes_.size();) {
     caster_.rowCrossings(planes_[k], row_, out);
@@ -187,119 +188,13 @@ void RayCaster::RowSweep::next(std::vector<Crossing>& out) {
   ++row_;
 }
 
-void RayCaster::rowCrossings(const Plane& plane, int32_t row, std::vector<Crossing>& out) const {
-  const double w = cw_[size_t(row)];
-  const double av = plane.a[1], aw = plane.a[2], bv = plane.b[1], bw = plane.b[2], cv = plane.c[1], cw = plane.c[2];
-  const double w_term = plane.n[2] * (w - plane.a[2]);  // the part of the crossing's formula fixed by the row
-  auto crossedExactly = [&](double v) {
-    return edgeSide(av, aw, bv, bw, v, w) == plane.sign && edgeSide(bv, bw, cv, cw, v, w) == plane.sign &&
-           edgeSide(cv, cw, av, aw, v, w) == plane.sign;
-  };
-  // The section of the projection with the line at w, [lo, hi]: the crossed rays of this row are the rays strictly
-  // inside it, plus any the exact tests admit at its ends. Computed in double, each end is off by at most about 10
-  // ulps of the largest coordinate involved; `margin` is a thousand times that. Rays farther than `margin` outside
-  // [lo, hi] miss the triangle (the closed projection is at positive distance from them, and so from the displaced
-  // ray), rays farther than `margin` inside cross it (the displaced ray is interior: even where the section is a
-  // horizontal edge at w = w_min, the displacement eps^2 along w moves it into the triangle); only rays within
-  // `margin` of an end need the exact edge tests.
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  const double edges[3][4] = {{av, aw, bv, bw}, {bv, bw, cv, cw}, {cv, cw, av, aw}};
-  for (int k = 0; k < 3; ++k) {
-    const double pv = edges[k][0], pw = edges[k][1], qv = edges[k][2], qw = edges[k][3];
-    if (pw == qw) {
-      if (pw == w) {
-        lo = std::min({lo, pv, qv});
-        hi = std::max({hi, pv, qv});
-      }
-      continue;
-    }
-    if (w < std::min(pw, qw) || w > std::max(pw, qw)) continue;
-    // pv + (w - pw) * dv/dw, with |w - pw| <= |qw - pw|: the same error bound as interpolating directly.
-    const double v = std::clamp(pv + (w - pw) * plane.slope[k], std::min(pv, qv), std::max(pv, qv));
-    lo = std::min(lo, v);
-    hi = std::max(hi, v);
-  }
-  if (!(lo <= hi)) {
-    // Not reached for finite coordinates (w_min <= w < w_max, so some edge spans w); decide every ray exactly.
-    for (int32_t j = plane.ray_lo; j < plane.ray_hi; ++j) {
-      const double v = cv_[size_t(j)];
-      if (crossedExactly(v)) out.push_back(Crossing{j, firstPast(plane, w_term, v, w), plane.sign});
-    }
-    return;
-  }
-  const double margin = 1e-12 * std::max(plane.vw_scale, std::abs(w));
-  const double outer_lo = lo - margin, outer_hi = hi + margin, inner_lo = lo + margin, inner_hi = hi - margin;
-  for (int32_t j = std::max(plane.ray_lo, firstAtOrAbove(cv_, origin_v_, inv_h_, outer_lo)); j < plane.ray_hi; ++j) {
-    const double v = cv_[size_t(j)];
-    if (v > outer_hi) break;
-    if ((v > inner_lo && v < inner_hi) || crossedExactly(v)) {
-      out.push_back(Crossing{j, firstPast(plane, w_term, v, w), plane.sign});
-    }
-  }
-}
-
-RayCaster::Plane::Plane(const Tri& t, const RayCaster& caster)
-    : sign(t.sign), row_lo(t.row_lo), row_hi(t.row_hi), ray_lo(t.ray_lo), ray_hi(t.ray_hi) {
-  for (int k = 0; k < 3; ++k) {
-    a[k] = t.p[0][k];
-    b[k] = t.p[1][k];
-    c[k] = t.p[2][k];
-  }
-  // Normal (B - A) x (C - A) in double, with a bound on each component's error: the differences, the products and
-  // the difference of the products each round once (relative error u), so |error| <= (4u + O(u^2)) * (|first
-  // product| + |second product|); 8u leaves room for the higher-order terms.
-  const double d1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-  const double d2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  const double p[6] = {d1[1] * d2[2], d1[2] * d2[1], d1[2] * d2[0], d1[0] * d2[2], d1[0] * d2[1], d1[1] * d2[0]};
-  for (int k = 0; k < 3; ++k) {
-    n[k] = p[2 * k] - p[2 * k + 1];
-    n_error[k] = 8.0 * kUnitRoundoff * (std::abs(p[2 * k]) + std::abs(p[2 * k + 1]));
-  }
-  inv_nu = 1.0 / n[0];
-  // The crossing of ray (v, w) lies at u = x_c = a.u - (n.v (v - a.v) + n.w (w - a.w)) / n.u, estimated in double
-  // by firstPast. Its forward error bound: first-order error analysis of the formula, using the normal's error
-  // bounds, with every rounding counted as 8 units (two to four times what the analysis needs) and a final factor
-  // 1.01 for the higher-order terms and the rounding of the bound itself. The bound grows with |v - a.v|,
-  // |w - a.w|, |q| and |x|, so it is taken once for the triangle at their largest over the rays and rows it can
-  // cross (largest at an end of each range): one bound for every crossing, larger than each crossing's own, which
-  // only sends a few more centres to the exact test. Infinite (always exact) when n.u is not clearly nonzero.
-  margin = std::numeric_limits<double>::infinity();
-  if (std::isfinite(n[0]) && std::abs(n[0]) > 4.0 * n_error[0]) {
-    const double u8 = 8.0 * kUnitRoundoff;
-    const auto& cv = caster.cv_;
-    const auto& cw = caster.cw_;
-    const double rv = std::max(std::abs(cv[size_t(ray_lo)] - a[1]), std::abs(cv[size_t(ray_hi) - 1] - a[1]));
-    const double rw = std::max(std::abs(cw[size_t(row_lo)] - a[2]), std::abs(cw[size_t(row_hi) - 1] - a[2]));
-    const double num_error = (n_error[1] + u8 * std::abs(n[1])) * rv + (n_error[2] + u8 * std::abs(n[2])) * rw;
-    const double q = (std::abs(n[1]) * rv + std::abs(n[2]) * rw) * std::abs(inv_nu);
-    const double x = std::abs(a[0]) + q;
-    const double q_error = (num_error + q * n_error[0]) / (std::abs(n[0]) - n_error[0]) + u8 * q;
-    margin = (q_error + u8 * x) * 1.01;
-    if (!std::isfinite(margin)) margin = std::numeric_limits<double>::infinity();
-  }
-  umin = std::min({a[0], b[0], c[0]});
-  umax = std::max({a[0], b[0], c[0]});
-  // Every crossing lies at some u in [umin, umax] (exactly: it is a point of the triangle), and its first centre
-  // past is the first centre u_i >= that u. When no centre lies in [umin, umax) that is the same centre for every
-  // ray: i0, the first centre >= umin (centres below i0 are < umin <= u, and u_i0 >= umax >= u). This covers the
-  // planes u = const of CAD meshes and, at fine resolutions, every triangle narrower than a voxel along u.
-  const int32_t i0 = firstAtOrAbove(caster.cu_, caster.origin_u_, caster.inv_h_, umin);
-  fixed_first = i0 == caster.length() || caster.cu_[size_t(i0)] >= umax ? i0 : -1;
-  vw_scale = std::max({std::abs(a[1]), std::abs(b[1]), std::abs(c[1]), std::abs(a[2]), std::abs(b[2]), std::abs(c[2])});
-  for (int k = 0; k < 3; ++k) {
-    const float* from = t.p[k];
-    const float* to = t.p[(k + 1) % 3];
-    slope[k] = from[2] != to[2] ? (double(to[1]) - double(from[1])) / (double(to[2]) - double(from[2])) : 0.0;
-  }
-}
-
 inline int32_t RayCaster::firstPast(const Plane& pl, double w_term, double v, double w) const {
   if (pl.fixed_first >= 0) return pl.fixed_first;
   // The crossing lies at u = x_c = a.u - (n.v (v - a.v) + n.w (w - a.w)) / n.u. Centre i = (u_i + eps, v + eps^3,
   // w + eps^2) is past it iff u_i >= x_c (at u_i == x_c the displacement eps along u puts it past). Fast path: x_c
   // in double, within pl.margin of the exact value (see Plane); a centre farther than that from the estimate is
   // decided by comparing doubles.
-  const double num = pl.n[1] * (v - pl.a[1]) + w_term;
+  const double num = pl.n_v * (v - pl.a[1]) + w_term;
   double x = pl.a[0] - num * pl.inv_nu;
   const double margin = pl.margin;
   // The crossing lies inside the triangle, so clamping to the vertices' u range only moves the estimate closer.
@@ -315,8 +210,11 @@ inline int32_t RayCaster::firstPast(const Plane& pl, double w_term, double v, do
   };
   const int32_t n = length();
   // About ceil((x - u_0) / h); the exact tests below correct any error of the estimate.
-  int32_t i = clampedIndex((x - cu_[0]) * inv_h_, 0, n);
-  if (i < n && double(i) < (x - cu_[0]) * inv_h_) ++i;
+  const double t = (x - cu_[0]) * inv_h_;
+  int32_t i = clampedIndex(t, 0, n);
+  if (i < n && double(i) < t) ++i;
+  // Usually centre i is past and centre i - 1 is not, both by more than the margin: one branch, two loads.
+  if (i > 0 && i < n && cu_[size_t(i)] - x > margin && x - cu_[size_t(i) - 1] > margin) return i;
   if (i < n && !past(i)) {
     do {
       ++i;
@@ -325,6 +223,161 @@ inline int32_t RayCaster::firstPast(const Plane& pl, double w_term, double v, do
     while (i > 0 && past(i - 1)) --i;
   }
   return i;
+}
+
+void RayCaster::rowCrossings(const Plane& plane, int32_t row, CrossingList& out) const {
+  const double w = cw_[size_t(row)];
+  // The section of the projection with the line at w, [lo, hi]: the crossed rays of this row are the rays strictly
+  // inside it, plus any the exact tests admit at its ends. The row lies in [P0.w, P2.w), so the long edge and one
+  // short edge span it (both ends of the section when it is a horizontal edge at w = P0.w = P1.w). Interpolated
+  // from the edge's lower end, with 0 <= w - p.w <= q.w - p.w, each end is within about 8 ulps of the largest
+  // coordinate involved; the section margin is over a thousand times that. Rays farther than the margin outside
+  // [lo, hi] miss the triangle (the closed projection is at positive distance from them, and so from the displaced
+  // ray); rays farther than the margin inside cross it (the displaced ray is interior: even where the section is a
+  // horizontal edge at w = w_min, the displacement eps^2 along w moves it into the triangle); only rays within the
+  // margin of an end need the exact edge tests.
+  const double v_long = plane.long_v + (w - plane.long_w) * plane.long_slope;
+  const double v_short = w < plane.high_w ? plane.low_v + (w - plane.low_w) * plane.low_slope
+                                          : plane.high_v + (w - plane.high_w) * plane.high_slope;
+  const double lo = std::min(v_long, v_short), hi = std::max(v_long, v_short);
+  const double margin = plane.section_margin;
+  const double outer_lo = lo - margin, outer_hi = hi + margin, inner_lo = lo + margin, inner_hi = hi - margin;
+  const double w_term = plane.n_w * (w - plane.a[2]);  // the part of the crossing's formula fixed by the row
+  const double av = plane.a[1], aw = plane.a[2], bv = plane.b[1], bw = plane.b[2], cv = plane.c[1], cw = plane.c[2];
+  auto crossedExactly = [&](double v) {
+    return edgeSide(av, aw, bv, bw, v, w) == plane.sign && edgeSide(bv, bw, cv, cw, v, w) == plane.sign &&
+           edgeSide(cv, cw, av, aw, v, w) == plane.sign;
+  };
+  const int32_t nv = raysPerRow();
+  // The first ray at or above outer_lo, and the first at or above inner_hi: estimated from the grid formula
+  // (truncation is never high and at most one ray low), then settled by comparing with the stored centres.
+  const double v0 = cv_[0];
+  int32_t j = clampedIndex((outer_lo - v0) * inv_h_, 0, nv);
+  while (j > 0 && cv_[size_t(j) - 1] >= outer_lo) --j;
+  while (j < nv && cv_[size_t(j)] < outer_lo) ++j;
+  // Rays within the margin of the lower end.
+  for (; j < nv && cv_[size_t(j)] <= inner_lo; ++j) {
+    const double v = cv_[size_t(j)];
+    if (v > outer_hi) return;
+    if (crossedExactly(v)) out.push_back(Crossing{j, firstPast(plane, w_term, v, w), plane.sign});
+  }
+  // Rays strictly inside: every one is crossed, so the output grows by their number at once.
+  int32_t inner_end = std::max(j, clampedIndex((inner_hi - v0) * inv_h_, 0, nv));
+  while (inner_end > j && cv_[size_t(inner_end) - 1] >= inner_hi) --inner_end;
+  while (inner_end < nv && cv_[size_t(inner_end)] < inner_hi) ++inner_end;
+  if (inner_end > j) {
+    Crossing* o = out.append(size_t(inner_end - j));
+    if (plane.fixed_first >= 0) {
+      for (; j < inner_end; ++j) *o++ = Crossing{j, plane.fixed_first, plane.sign};
+    } else if (std::isfinite(plane.margin) && length() >= 2) {
+      // firstPast's usual case as straight-line code: the estimate, the centres either side of it, and a flag
+      // recording whether every crossing had centre i past it and centre i - 1 not, both by more than the margin.
+      // Rarely not so; then the run is done again by firstPast. (A finite margin means n.u is clearly nonzero, so
+      // every estimate is finite.)
+      const double a_u = plane.a[0], a_v = plane.a[1], n_v = plane.n_v, inv_nu = plane.inv_nu;
+      const double umin = plane.umin, umax = plane.umax, pmargin = plane.margin;
+      const double u0 = cu_[0], inv_h = inv_h_;
+      const int32_t last = length() - 1;
+      const double* cu = cu_.data();
+      bool clear = true;
+      for (int32_t k = j; k < inner_end; ++k) {
+        const double x = std::min(std::max(a_u - (n_v * (cv_[size_t(k)] - a_v) + w_term) * inv_nu, umin), umax);
+        const int32_t i = int32_t((x - u0) * inv_h) + 1;  // about ceil((x - u0) / h)
+        const int32_t ic = std::clamp(i, 1, last);
+        clear &= (i == ic) & (cu[ic] - x > pmargin) & (x - cu[ic - 1] > pmargin);
+        o[k - j] = Crossing{k, ic, plane.sign};
+      }
+      if (!clear) {
+        for (int32_t k = j; k < inner_end; ++k) {
+          o[k - j] = Crossing{k, firstPast(plane, w_term, cv_[size_t(k)], w), plane.sign};
+        }
+      }
+      j = inner_end;
+    } else {
+      for (; j < inner_end; ++j) *o++ = Crossing{j, firstPast(plane, w_term, cv_[size_t(j)], w), plane.sign};
+    }
+  }
+  // Rays within the margin of the upper end.
+  for (; j < nv && cv_[size_t(j)] <= outer_hi; ++j) {
+    const double v = cv_[size_t(j)];
+    if (crossedExactly(v)) out.push_back(Crossing{j, firstPast(plane, w_term, v, w), plane.sign});
+  }
+}
+
+RayCaster::Plane::Plane(uint32_t triangle, int32_t end_row, const RayCaster& caster) : row_hi(end_row) {
+  const Triangle& in = caster.mesh_.triangles[triangle];
+  const RayAxes& axes = caster.axes_;
+  double* const p[3] = {a, b, c};  // A, B, C in (u, v, w)
+  for (int k = 0; k < 3; ++k) {
+    const float* xyz = &in.v[k].x;  // x, y, z are contiguous; glm's operator[] would switch on the index
+    p[k][0] = xyz[axes.u];
+    p[k][1] = xyz[axes.v];
+    p[k][2] = xyz[axes.w];
+  }
+  // As classify() found when the caster was built (the same computation): nonzero.
+  sign = orient2d(a[1], a[2], b[1], b[2], c[1], c[2]);
+  // Normal (B - A) x (C - A) in double, with a bound on each component's error: the differences, the products and
+  // the difference of the products each round once (relative error u), so |error| <= (4u + O(u^2)) * (|first
+  // product| + |second product|); 8u leaves room for the higher-order terms.
+  const double d1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double d2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const double prod[6] = {d1[1] * d2[2], d1[2] * d2[1], d1[2] * d2[0], d1[0] * d2[2], d1[0] * d2[1], d1[1] * d2[0]};
+  double n[3], n_error[3];
+  for (int k = 0; k < 3; ++k) {
+    n[k] = prod[2 * k] - prod[2 * k + 1];
+    n_error[k] = 8.0 * kUnitRoundoff * (std::abs(prod[2 * k]) + std::abs(prod[2 * k + 1]));
+  }
+  n_v = n[1];
+  n_w = n[2];
+  inv_nu = 1.0 / n[0];
+  umin = std::min({a[0], b[0], c[0]});
+  umax = std::max({a[0], b[0], c[0]});
+  const double vmin = std::min({a[1], b[1], c[1]}), vmax = std::max({a[1], b[1], c[1]});
+  const double wmin = std::min({a[2], b[2], c[2]}), wmax = std::max({a[2], b[2], c[2]});
+  // The crossing of ray (v, w) lies at u = x_c = a.u - (n.v (v - a.v) + n.w (w - a.w)) / n.u, estimated in double
+  // by firstPast. Its forward error bound: first-order error analysis of the formula, using the normal's error
+  // bounds, with every rounding counted as 8 units (two to four times what the analysis needs) and a final factor
+  // 1.01 for the higher-order terms and the rounding of the bound itself. The bound grows with |v - a.v|,
+  // |w - a.w|, |q| and |x|, so it is taken once for the triangle at their largest over its extent (every crossing
+  // lies in it): one bound for every crossing, larger than each crossing's own, which only sends a few more
+  // centres to the exact test. Infinite (always exact) when n.u is not clearly nonzero.
+  margin = std::numeric_limits<double>::infinity();
+  if (std::isfinite(n[0]) && std::abs(n[0]) > 4.0 * n_error[0]) {
+    const double u8 = 8.0 * kUnitRoundoff;
+    const double rv = std::max(std::abs(vmin - a[1]), std::abs(vmax - a[1]));
+    const double rw = std::max(std::abs(wmin - a[2]), std::abs(wmax - a[2]));
+    const double num_error = (n_error[1] + u8 * std::abs(n[1])) * rv + (n_error[2] + u8 * std::abs(n[2])) * rw;
+    const double q = (std::abs(n[1]) * rv + std::abs(n[2]) * rw) * std::abs(inv_nu);
+    const double x = std::abs(a[0]) + q;
+    const double q_error = (num_error + q * n_error[0]) / (std::abs(n[0]) - n_error[0]) + u8 * q;
+    margin = (q_error + u8 * x) * 1.01;
+    if (!std::isfinite(margin)) margin = std::numeric_limits<double>::infinity();
+  }
+  // Every crossing lies at some u in [umin, umax] (exactly: it is a point of the triangle), and its first centre
+  // past is the first centre u_i >= that u. When no centre lies in [umin, umax) that is the same centre for every
+  // ray: i0, the first centre >= umin (centres below i0 are < umin <= u, and u_i0 >= umax >= u). This covers the
+  // planes u = const of CAD meshes and, at fine resolutions, every triangle narrower than a voxel along u.
+  const int32_t i0 = firstAtOrAbove(caster.cu_, caster.origin_u_, caster.inv_h_, umin);
+  fixed_first = i0 == caster.length() || caster.cu_[size_t(i0)] >= umax ? i0 : -1;
+  // Rows lie in [wmin, wmax), so this bounds every coordinate a row's section involves.
+  section_margin = 1e-12 * std::max({std::abs(vmin), std::abs(vmax), std::abs(wmin), std::abs(wmax)});
+  // The section's edges: vertices sorted by w (P0.w < P2.w, since the triangle spans a row).
+  const double* s[3] = {a, b, c};
+  if (s[1][2] < s[0][2]) std::swap(s[0], s[1]);
+  if (s[2][2] < s[1][2]) std::swap(s[1], s[2]);
+  if (s[1][2] < s[0][2]) std::swap(s[0], s[1]);
+  auto slope = [](const double* from, const double* to) {
+    return to[2] != from[2] ? (to[1] - from[1]) / (to[2] - from[2]) : 0.0;
+  };
+  long_v = s[0][1];
+  long_w = s[0][2];
+  long_slope = slope(s[0], s[2]);
+  low_v = s[0][1];
+  low_w = s[0][2];
+  low_slope = slope(s[0], s[1]);
+  high_v = s[1][1];
+  high_w = s[1][2];
+  high_slope = slope(s[1], s[2]);
 }
 
 bool RayCaster::exactPast(const Plane& pl, int32_t i, double v, double w) const {

@@ -8,6 +8,7 @@
 // SPEC section 1's rule exactly; the Y and Z families used by vote mode apply the same displacement in their own
 // (u, v, w) frame (see RayAxes), which is just as consistent, so every closed mesh stays crack-free along them too.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "vox/core/grid_placement.h"
@@ -43,6 +44,31 @@ class Crossing {
 
  private:
   uint32_t bits_ = 0;
+};
+
+// A row's crossings: a growable array whose growth writes nothing (the caster writes every slot it adds), so
+// adding a triangle's run of crossings costs one capacity check.
+class CrossingList {
+ public:
+  size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  void clear() { size_ = 0; }
+  const Crossing* begin() const { return data_.get(); }
+  const Crossing* end() const { return data_.get() + size_; }
+  const Crossing& operator[](size_t i) const { return data_[i]; }
+  // Adds n slots at the end and returns the first of them; the caller writes all n.
+  Crossing* append(size_t n) {
+    if (size_ + n > capacity_) grow(size_ + n);
+    Crossing* slots = data_.get() + size_;
+    size_ += n;
+    return slots;
+  }
+  void push_back(Crossing c) { *append(1) = c; }
+
+ private:
+  void grow(size_t needed);
+  std::unique_ptr<Crossing[]> data_;
+  size_t size_ = 0, capacity_ = 0;
 };
 
 class RayCaster {
@@ -85,21 +111,27 @@ class RayCaster {
     __builtin_prefetch(p + sizeof(Triangle) - 1);
   }
 
-  // A triangle's vertices in double and its normal with error bounds, set up once per sweep when it becomes active.
+  // A triangle's vertices in double and what its crossings need, set up once per sweep when it becomes active.
   struct Plane {
     Plane() = default;
-    Plane(const Tri& t, const RayCaster& caster);
-    double a[3], b[3], c[3];
-    double n[3], n_error[3];  // (B - A) x (C - A) in double; |n[k] - exact| <= n_error[k]
-    double umin, umax;        // the vertices' u range, which holds every crossing
-    double vw_scale;          // largest |v| or |w| of the vertices (for rounding margins)
-    double slope[3];          // dv/dw of each edge (A->B, B->C, C->A) in the (v, w) projection; 0 when horizontal
-    double inv_nu;            // 1 / n.u
-    double margin;            // bound on the error of firstPast's estimate of any crossing (infinite: always exact)
-    int32_t fixed_first;      // >= 0: no centre lies in [umin, umax); the first voxel past every crossing
-    int32_t sign;             // as Tri::sign
-    int32_t row_lo, row_hi;   // as Tri
-    int32_t ray_lo, ray_hi;
+    // From mesh triangle `triangle`, kept by the caster (so crossable), whose last row is end_row - 1.
+    Plane(uint32_t triangle, int32_t end_row, const RayCaster& caster);
+    // What every row reads comes first, so it shares few cache lines. The section with the row's line: the
+    // vertices sorted by w are P0, P1, P2; the long edge P0->P2 spans every row, the short edges P0->P1 (w < P1.w)
+    // and P1->P2 (w >= P1.w) the rows below and above P1. Each edge as its lower end (v, w) and dv/dw.
+    double long_v, long_w, long_slope;
+    double low_v, low_w, low_slope;
+    double high_v, high_w, high_slope;
+    double section_margin;  // bound on the rounding error of the section's ends (see rowCrossings)
+    int32_t fixed_first;    // >= 0: no centre lies in [umin, umax); the first voxel past every crossing
+    int32_t sign;           // exact sign of the normal's u component (orientation of the projection), never 0
+    int32_t row_hi;         // one past the triangle's last row
+    double a[3];            // vertex A (u, v, w)
+    double n_v, n_w;        // v and w components of the normal (B - A) x (C - A), in double
+    double inv_nu;          // 1 / n.u
+    double umin, umax;      // the vertices' u range, which holds every crossing
+    double margin;          // bound on the error of firstPast's estimate of any crossing (infinite: always exact)
+    double b[3], c[3];      // vertices B and C, for the exact tests
   };
 
  public:
@@ -111,18 +143,16 @@ class RayCaster {
     int32_t row() const { return row_; }
     // Appends the crossings of every ray of the current row (grouped by triangle, not sorted), then moves on to the
     // next row.
-    void next(std::vector<Crossing>& out);
+    void next(CrossingList& out);
 
    private:
-    void activate(size_t entry);
-
     const RayCaster& caster_;
     int32_t row_;
     std::vector<Plane> planes_;  // the triangles with row_lo <= row_ < row_hi, set up once per sweep
   };
 
  private:
-  void rowCrossings(const Plane& plane, int32_t row, std::vector<Crossing>& out) const;
+  void rowCrossings(const Plane& plane, int32_t row, CrossingList& out) const;
   // First centre past the crossing of ray (v, w); w_term = n.w (w - a.w).
   int32_t firstPast(const Plane& plane, double w_term, double v, double w) const;
   // Exact: is centre i of ray (v, w) past the triangle's plane? Out of line: the rare slow path of firstPast.

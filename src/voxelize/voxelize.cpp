@@ -9,10 +9,11 @@
 //    a mesh with holes; voxmod uses the three axis directions and a majority of three.
 //
 // The crossings of each ray come from RayCaster as (first voxel past the crossing, sign) pairs, so filling is
-// integer work: along X, sorted crossings become runs written with word operations (VoxelGrid::fillRun); along
-// Y and Z (vote mode) each crossing toggles one bit and a prefix XOR over the rows or layers turns toggles into
-// parity, again with word operations (along Z the toggles are listed per layer and XORed into a running layer as the
-// layer pass goes up). Rows of rays are independent, so the work is split over rows with std::thread; each thread
+// integer work. In parity and nonzero mode (rays along X), sorted crossings become runs written with word
+// operations (fillRowBits). In vote mode each crossing toggles one bit, and a prefix XOR along the ray turns toggles
+// into parity, again with word operations: within a row's words for rays along X, over the rows for rays along Y,
+// over the layers for rays along Z (whose toggles are listed per layer and XORed into a running layer as the layer
+// pass goes up). Rows of rays are independent, so the work is split over rows with std::thread; each thread
 // writes only the Z layers of its own rows (rays along X and Y) or its own toggle lists (rays along Z), so no two
 // threads ever write the same word.
 #include "vox/voxelize/voxelize.h"
@@ -35,6 +36,7 @@
 namespace vox {
 
 using voxelize_detail::Crossing;
+using voxelize_detail::CrossingList;
 using voxelize_detail::RayCaster;
 
 const char* fillModeName(FillMode m) {
@@ -171,7 +173,7 @@ bool runSlabs(int32_t rows, int threads, ProgressGate& progress, bool& out_of_me
 template <class RowFn>
 bool castRows(const RayCaster& caster, int threads, ProgressGate& progress, bool& out_of_memory, RowFn&& row_fn) {
   return runSlabs(caster.rows(), threads, progress, out_of_memory, [&](int t, int32_t r0, int32_t r1) {
-    std::vector<Crossing> crossings;
+    CrossingList crossings;
     RayCaster::RowSweep sweep(caster, r0);
     for (int32_t r = r0; r < r1 && !progress.cancelled(); ++r) {
       crossings.clear();
@@ -226,7 +228,7 @@ PassStats sumStats(const std::vector<PassScratch>& scratch, const RayCaster& cas
 // Rays along X, row = layer z: sort the crossings of each ray and write the inside runs as write(y, x0, x1) (word
 // operations: VoxelGrid::fillRun, or fillRowBits on a scratch layer).
 template <class RunWriter>
-void fillRowAlongX(int32_t ny, int32_t nx, const std::vector<Crossing>& crossings, Rule rule, PassScratch& s,
+void fillRowAlongX(int32_t ny, int32_t nx, const CrossingList& crossings, Rule rule, PassScratch& s,
                    RunWriter&& write) {
   if (crossings.empty()) return;
   s.crossings += int64_t(crossings.size());
@@ -278,34 +280,101 @@ void fillRowAlongX(int32_t ny, int32_t nx, const std::vector<Crossing>& crossing
   }
 }
 
-// Rays along Y, row = layer z, rays step along x: each crossing toggles bit (x, first) of a zeroed scratch layer
-// (ny + 2 rows of wpr words, the grid's layout); a prefix XOR over the rows then gives the parity of every voxel.
-void toggleRowAlongY(uint64_t* layer, int32_t ny, int32_t nx, int64_t wpr, const std::vector<Crossing>& crossings,
-                     PassScratch& s) {
-  if (crossings.empty()) return;
-  s.crossings += int64_t(crossings.size());
-  s.parity.assign(size_t(nx), 0);
-  int32_t lowest = ny;
+// Rays along X and Y in vote mode, row = layer z: each crossing toggles the bit of the first voxel past it in a
+// zeroed scratch layer (the grid's layout: ny + 2 rows of wpr words, one padding bit or row on either side). The
+// parity of a voxel along the ray is then the XOR of the toggles up to it: a prefix XOR within each row for rays
+// along X, over the rows for rays along Y, which voteLayer computes as it reads the layer. A crossing past every
+// centre toggles the padding bit (X: bit nx + 1 < wpr * 64) or row (Y: row ny + 1) just past the end, so the parity
+// at the end of each ray says whether its count was odd.
+void toggleAlongX(uint64_t* layer, int64_t wpr, const CrossingList& crossings) {
   for (const Crossing& c : crossings) {
-    s.parity[size_t(c.ray())] ^= 1;
-    if (c.first() >= ny) continue;
+    const int64_t xp = int64_t(c.first()) + 1;
+    layer[(int64_t(c.ray()) + 1) * wpr + (xp >> 6)] ^= uint64_t(1) << (xp & 63);
+  }
+}
+
+void toggleAlongY(uint64_t* layer, int64_t wpr, const CrossingList& crossings) {
+  for (const Crossing& c : crossings) {
     const int64_t xp = int64_t(c.ray()) + 1;
     layer[(int64_t(c.first()) + 1) * wpr + (xp >> 6)] ^= uint64_t(1) << (xp & 63);
-    lowest = std::min(lowest, c.first());
   }
-  for (uint8_t p : s.parity) s.odd_rays += p;
-  for (int32_t y = lowest + 1; y < ny; ++y) {
-    uint64_t* row = layer + (int64_t(y) + 1) * wpr;
-    const uint64_t* prev = row - wpr;
-    for (int64_t w = 0; w < wpr; ++w) row[w] ^= prev[w];
+}
+
+// Bit i of the result is the XOR of bits 0..i of x.
+inline uint64_t prefixXor(uint64_t x) {
+  x ^= x << 1;
+  x ^= x << 2;
+  x ^= x << 4;
+  x ^= x << 8;
+  x ^= x << 16;
+  x ^= x << 32;
+  return x;
+}
+
+struct VoteCounts {
+  int64_t disputed = 0, odd_x = 0, odd_y = 0;
+};
+
+// One layer of vote mode, in one pass over its words: tx and ty hold the layer's toggles along X and Y
+// (toggleAlongX/Y), bz the parity along Z. Row by row, the X parity is the prefix XOR of tx's row (carried from
+// word to word), the Y parity a running row that each row of ty is XORed into; the majority of the three goes to
+// layer z of `grid`, the voxels where they differ to layer z of `mask` (each allocated at its first nonzero word).
+// `valid` masks each word of a row to the voxels 0..nx - 1. Leaves tx and ty zeroed for the next layer.
+void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& valid, uint64_t* tx, uint64_t* ty,
+               const uint64_t* bz, std::vector<uint64_t>& y_run, VoxelGrid& grid, VoxelGrid& mask, VoteCounts& counts) {
+  uint64_t* c = nullptr;
+  uint64_t* m = nullptr;
+  std::fill(y_run.begin(), y_run.end(), 0);
+  int64_t disputed = 0, odd_x = 0;
+  for (int64_t yp = 1; yp <= ny; ++yp) {
+    uint64_t* tx_row = tx + yp * wpr;
+    uint64_t* ty_row = ty + yp * wpr;
+    const uint64_t* z_row = bz + yp * wpr;
+    uint64_t carry = 0;  // all ones where the X parity so far is odd
+    for (int64_t w = 0; w < wpr; ++w) {
+      uint64_t a = carry;
+      if (const uint64_t t = tx_row[w]; t != 0) {
+        a ^= prefixXor(t);
+        carry = uint64_t(0) - (a >> 63);
+        tx_row[w] = 0;
+      }
+      if (const uint64_t t = ty_row[w]; t != 0) {
+        y_run[size_t(w)] ^= t;
+        ty_row[w] = 0;
+      }
+      a &= valid[size_t(w)];
+      const uint64_t b = y_run[size_t(w)], zz = z_row[w];
+      const uint64_t r = (a & b) | (zz & (a | b));
+      if (r != 0) {
+        if (!c) c = grid.mutableLayerWords(z);
+        c[yp * wpr + w] = r;
+      }
+      const uint64_t d = (a ^ b) | (a ^ zz);
+      if (d != 0) {
+        if (!m) m = mask.mutableLayerWords(z);
+        m[yp * wpr + w] = d;
+        disputed += popcount64(d);
+      }
+    }
+    odd_x += int64_t(carry & 1);
   }
+  // Row ny + 1: the crossings past every centre along Y. The running row is then each ray's total parity.
+  uint64_t* past = ty + (int64_t(ny) + 1) * wpr;
+  int64_t odd_y = 0;
+  for (int64_t w = 0; w < wpr; ++w) {
+    odd_y += popcount64(y_run[size_t(w)] ^ past[w]);
+    past[w] = 0;
+  }
+  counts.disputed += disputed;
+  counts.odd_x += odd_x;
+  counts.odd_y += odd_y;
 }
 
 // Rays along Z, row = y, rays step along x: each crossing toggles bit (x, y) of the parity of every layer from
 // `first` up. The toggles are kept, not applied: appended to this thread's list for layer `first` as the bit's
 // position in a layer ((y + 1) * wpr * 64 + x + 1, below 2^32 for any grid voxmod accepts), and the layer pass XORs
 // them into a running parity layer as it goes up in z. So the Z parity never needs a grid of its own.
-void collectTogglesAlongZ(int32_t y, int32_t nz, int32_t nx, int64_t wpr, const std::vector<Crossing>& crossings,
+void collectTogglesAlongZ(int32_t y, int32_t nz, int32_t nx, int64_t wpr, const CrossingList& crossings,
                           std::vector<std::vector<uint32_t>>& toggles, PassScratch& s) {
   if (crossings.empty()) return;
   s.crossings += int64_t(crossings.size());
@@ -530,11 +599,12 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       result.grid = std::move(grid);
     } else {
       // Rays along Z first: their crossings become per-layer toggle lists (collectTogglesAlongZ). Then, layer by
-      // layer going up, parity along X and along Y into two cache-sized scratch layers and parity along Z in a running
-      // layer (the toggles of this layer XORed in); the per-word majority of the three is written into the grid
-      // (layers allocated where a word is filled), and the voxels where the axes disagree into a mask allocated where
-      // needed. Each slab of layers starts from a snapshot of the running Z parity at its first layer. Peak: the grid,
-      // the mask, 4 bytes per crossing along Z, and a layer per slab.
+      // layer going up, the toggles along X and along Y into two cache-sized scratch layers and the parity along Z in
+      // a running layer (the toggles of this layer XORed in); one pass over the layer's words (voteLayer) turns the
+      // toggles into parities and writes the per-word majority of the three into the grid (layers allocated where a
+      // word is filled), and the voxels where the axes disagree into a mask allocated where needed. Each slab of layers
+      // starts from a snapshot of the running Z parity at its first layer. Peak: the grid, the mask, 4 bytes per
+      // crossing along Z, and a layer per slab.
       VoxelGrid grid(dims, frame), mask(dims, frame);
       std::vector<int64_t> odd(3, 0);
       const int64_t wpr = grid.wordsPerRow(), wpl = grid.wordsPerLayer();
@@ -565,14 +635,22 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
           }
         }
       }
-      std::vector<int64_t> disputed(static_cast<size_t>(threads), 0);
+      std::vector<VoteCounts> counts(static_cast<size_t>(threads));
       {
         const RayCaster along_x(mesh, plan.placement, voxelize_detail::kRaysAlongX, threads);
         const RayCaster along_y(mesh, plan.placement, voxelize_detail::kRaysAlongY, threads);
-        std::vector<PassScratch> sx(static_cast<size_t>(threads)), sy(static_cast<size_t>(threads));
+        // Bits 0..nx - 1 of a row (padded bits 1..nx) in each of its words.
+        std::vector<uint64_t> valid(static_cast<size_t>(wpr), 0);
+        for (int64_t w = 0; w < wpr; ++w) {
+          for (int b = 0; b < 64; ++b) {
+            const int64_t xp = w * 64 + b;
+            if (xp >= 1 && xp <= dims.nx) valid[size_t(w)] |= uint64_t(1) << b;
+          }
+        }
         const bool ok = runSlabs(dims.nz, threads, gate, out_of_memory, [&](int t, int32_t z0, int32_t z1) {
-          std::vector<Crossing> cx, cy;
-          std::vector<uint64_t> bx(static_cast<size_t>(wpl), 0), by(static_cast<size_t>(wpl), 0);
+          CrossingList cx, cy;
+          std::vector<uint64_t> tx(static_cast<size_t>(wpl), 0), ty(static_cast<size_t>(wpl), 0);
+          std::vector<uint64_t> y_run(static_cast<size_t>(wpr), 0);
           std::vector<uint64_t> bz = std::move(snapshots[size_t(z0 / slab)]);
           RayCaster::RowSweep sweep_x(along_x, z0), sweep_y(along_y, z0);
           for (int32_t z = z0; z < z1 && !gate.cancelled(); ++z) {
@@ -580,39 +658,20 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
             cy.clear();
             sweep_x.next(cx);
             sweep_y.next(cy);
-            fillRowAlongX(dims.ny, dims.nx, cx, Rule::kParity, sx[size_t(t)], [&](int32_t y, int64_t x0, int64_t x1) {
-              fillRowBits(bx.data() + (int64_t(y) + 1) * wpr, dims.nx, x0, x1);
-            });
-            toggleRowAlongY(by.data(), dims.ny, dims.nx, wpr, cy, sy[size_t(t)]);
+            toggleAlongX(tx.data(), wpr, cx);
+            toggleAlongY(ty.data(), wpr, cy);
             applyLayerToggles(z, bz.data());
-            uint64_t* c = nullptr;
-            uint64_t* m = nullptr;
-            int64_t count = 0;
-            for (int64_t w = 0; w < wpl; ++w) {
-              const uint64_t a = bx[size_t(w)], b = by[size_t(w)], zz = bz[size_t(w)];
-              const uint64_t r = (a & b) | (zz & (a | b));
-              if (r != 0) {
-                if (!c) c = grid.mutableLayerWords(z);
-                c[w] = r;
-              }
-              const uint64_t d = (a ^ b) | (a ^ zz);
-              if (d != 0) {
-                if (!m) m = mask.mutableLayerWords(z);
-                m[w] = d;
-                count += popcount64(d);
-              }
-              bx[size_t(w)] = 0;
-              by[size_t(w)] = 0;
-            }
-            disputed[size_t(t)] += count;
+            voteLayer(z, dims.ny, wpr, valid, tx.data(), ty.data(), bz.data(), y_run, grid, mask, counts[size_t(t)]);
             gate.advance(2);  // two rows of rays (X and Y) per layer
           }
         });
         if (!ok) return failure();
-        odd[0] = sumStats(sx, along_x).odd_rays;
-        odd[1] = sumStats(sy, along_y).odd_rays;
       }
-      for (int64_t d : disputed) result.disputed_count += d;
+      for (const VoteCounts& c : counts) {
+        result.disputed_count += c.disputed;
+        odd[0] += c.odd_x;
+        odd[1] += c.odd_y;
+      }
       const char* axes[3] = {"X", "Y", "Z"};
       std::string odd_text;
       for (int a = 0; a < 3; ++a) {
