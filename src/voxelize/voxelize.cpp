@@ -202,11 +202,13 @@ enum class Rule { kParity, kNonzero };
 
 // Per-thread scratch and counters of a pass.
 struct PassScratch {
-  std::vector<int32_t> start;  // counting sort of crossings by ray
-  std::vector<Crossing> sorted;
-  std::vector<uint8_t> parity;  // per-ray crossing parity (rays along Y and Z)
-  int64_t odd_rays = 0;         // rays with an odd number of crossings
-  int64_t unbalanced_rays = 0;  // rays whose signed crossings do not sum to zero
+  std::vector<int32_t> start;     // counting sort of crossings by ray
+  std::vector<int32_t> by_first;  // counting sort of crossings by first voxel
+  std::vector<Crossing> along;    // crossings sorted by first voxel
+  std::vector<Crossing> sorted;   // by ray, then by first voxel
+  std::vector<uint8_t> parity;    // per-ray crossing parity (rays along Y and Z)
+  int64_t odd_rays = 0;           // rays with an odd number of crossings
+  int64_t unbalanced_rays = 0;    // rays whose signed crossings do not sum to zero
   int64_t crossings = 0;
 };
 
@@ -232,32 +234,32 @@ void fillRowAlongX(int32_t ny, int32_t nx, const CrossingList& crossings, Rule r
                    RunWriter&& write) {
   if (crossings.empty()) return;
   s.crossings += int64_t(crossings.size());
-  // Counting sort by ray: O(ny + crossings).
+  // Sorted by ray, then along the ray: two stable counting sorts (by first voxel, then by ray), O(nx + ny +
+  // crossings) without a data-dependent branch. (An insertion sort per ray mispredicts on nearly every step where
+  // rays cross many bodies.) Crossings with the same ray and first voxel may end up in either order: the runs
+  // between them are empty and the winding after them is the same.
+  const size_t count = crossings.size();
+  s.by_first.assign(size_t(nx) + 2, 0);
   s.start.assign(size_t(ny) + 1, 0);
-  for (const Crossing& c : crossings) ++s.start[size_t(c.ray()) + 1];
+  for (const Crossing& c : crossings) {
+    ++s.by_first[size_t(c.first()) + 1];
+    ++s.start[size_t(c.ray()) + 1];
+  }
+  for (int32_t i = 0; i <= nx; ++i) s.by_first[size_t(i) + 1] += s.by_first[size_t(i)];
   for (int32_t j = 0; j < ny; ++j) s.start[size_t(j) + 1] += s.start[size_t(j)];
-  s.sorted.resize(crossings.size());
+  s.along.resize(count);
+  s.sorted.resize(count);
+  for (const Crossing& c : crossings) s.along[size_t(s.by_first[size_t(c.first())]++)] = c;
   {
     std::vector<int32_t>& pos = s.start;  // advanced while scattering, restored below
-    for (const Crossing& c : crossings) s.sorted[size_t(pos[size_t(c.ray())]++)] = c;
+    for (const Crossing& c : s.along) s.sorted[size_t(pos[size_t(c.ray())]++)] = c;
     for (int32_t j = ny; j > 0; --j) pos[size_t(j)] = pos[size_t(j) - 1];
     pos[0] = 0;
   }
   for (int32_t j = 0; j < ny; ++j) {
-    Crossing* b = s.sorted.data() + s.start[size_t(j)];
-    Crossing* e = s.sorted.data() + s.start[size_t(j) + 1];
+    const Crossing* b = s.sorted.data() + s.start[size_t(j)];
+    const Crossing* e = s.sorted.data() + s.start[size_t(j) + 1];
     if (b == e) continue;
-    // A ray crosses few triangles: insertion sort by position (the packed values of one ray's crossings order
-    // them by first voxel).
-    for (Crossing* p = b + 1; p < e; ++p) {
-      const Crossing c = *p;
-      Crossing* q = p;
-      while (q > b && (q - 1)->packed() > c.packed()) {
-        *q = *(q - 1);
-        --q;
-      }
-      *q = c;
-    }
     const int64_t n = e - b;
     if (rule == Rule::kParity) {
       // Voxel i is inside iff an odd number of crossings lie before its centre: runs [first_0, first_1), ...
@@ -280,23 +282,38 @@ void fillRowAlongX(int32_t ny, int32_t nx, const CrossingList& crossings, Rule r
   }
 }
 
+// Per-thread scratch of vote mode's layer pass.
+struct VoteScratch {
+  std::vector<uint64_t> tx, ty;         // toggles along X and along Y, one layer in the grid's layout
+  std::vector<uint8_t> x_rows, y_rows;  // which rows of tx and ty hold a toggle (by padded row)
+  std::vector<uint64_t> y_run;          // the running Y parity, one row
+  VoteScratch(int64_t wpl, int64_t wpr, int32_t ny)
+      : tx(size_t(wpl), 0),
+        ty(size_t(wpl), 0),
+        x_rows(size_t(ny) + 2, 0),
+        y_rows(size_t(ny) + 2, 0),
+        y_run(size_t(wpr), 0) {}
+};
+
 // Rays along X and Y in vote mode, row = layer z: each crossing toggles the bit of the first voxel past it in a
 // zeroed scratch layer (the grid's layout: ny + 2 rows of wpr words, one padding bit or row on either side). The
 // parity of a voxel along the ray is then the XOR of the toggles up to it: a prefix XOR within each row for rays
 // along X, over the rows for rays along Y, which voteLayer computes as it reads the layer. A crossing past every
 // centre toggles the padding bit (X: bit nx + 1 < wpr * 64) or row (Y: row ny + 1) just past the end, so the parity
 // at the end of each ray says whether its count was odd.
-void toggleAlongX(uint64_t* layer, int64_t wpr, const CrossingList& crossings) {
+void toggleAlongX(VoteScratch& s, int64_t wpr, const CrossingList& crossings) {
   for (const Crossing& c : crossings) {
-    const int64_t xp = int64_t(c.first()) + 1;
-    layer[(int64_t(c.ray()) + 1) * wpr + (xp >> 6)] ^= uint64_t(1) << (xp & 63);
+    const int64_t xp = int64_t(c.first()) + 1, yp = int64_t(c.ray()) + 1;
+    s.tx[size_t(yp * wpr + (xp >> 6))] ^= uint64_t(1) << (xp & 63);
+    s.x_rows[size_t(yp)] = 1;
   }
 }
 
-void toggleAlongY(uint64_t* layer, int64_t wpr, const CrossingList& crossings) {
+void toggleAlongY(VoteScratch& s, int64_t wpr, const CrossingList& crossings) {
   for (const Crossing& c : crossings) {
-    const int64_t xp = int64_t(c.ray()) + 1;
-    layer[(int64_t(c.first()) + 1) * wpr + (xp >> 6)] ^= uint64_t(1) << (xp & 63);
+    const int64_t xp = int64_t(c.ray()) + 1, yp = int64_t(c.first()) + 1;
+    s.ty[size_t(yp * wpr + (xp >> 6))] ^= uint64_t(1) << (xp & 63);
+    s.y_rows[size_t(yp)] = 1;
   }
 }
 
@@ -315,21 +332,41 @@ struct VoteCounts {
   int64_t disputed = 0, odd_x = 0, odd_y = 0;
 };
 
-// One layer of vote mode, in one pass over its words: tx and ty hold the layer's toggles along X and Y
+// One layer of vote mode, in one pass over its words: s.tx and s.ty hold the layer's toggles along X and Y
 // (toggleAlongX/Y), bz the parity along Z. Row by row, the X parity is the prefix XOR of tx's row (carried from
 // word to word), the Y parity a running row that each row of ty is XORed into; the majority of the three goes to
 // layer z of `grid`, the voxels where they differ to layer z of `mask` (each allocated at its first nonzero word).
-// `valid` masks each word of a row to the voxels 0..nx - 1. Leaves tx and ty zeroed for the next layer.
-void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& valid, uint64_t* tx, uint64_t* ty,
-               const uint64_t* bz, std::vector<uint64_t>& y_run, VoxelGrid& grid, VoxelGrid& mask, VoteCounts& counts) {
+// Rows where all three parities are zero are skipped. `valid` masks each word of a row to the voxels 0..nx - 1.
+// Leaves the scratch zeroed for the next layer.
+void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& valid, VoteScratch& s,
+               const uint64_t* bz, VoxelGrid& grid, VoxelGrid& mask, VoteCounts& counts) {
   uint64_t* c = nullptr;
   uint64_t* m = nullptr;
-  std::fill(y_run.begin(), y_run.end(), 0);
+  uint64_t* y_run = s.y_run.data();
+  std::fill(s.y_run.begin(), s.y_run.end(), 0);
+  bool y_any = false;  // some word of y_run is nonzero
   int64_t disputed = 0, odd_x = 0;
   for (int64_t yp = 1; yp <= ny; ++yp) {
-    uint64_t* tx_row = tx + yp * wpr;
-    uint64_t* ty_row = ty + yp * wpr;
+    uint64_t* tx_row = s.tx.data() + yp * wpr;
     const uint64_t* z_row = bz + yp * wpr;
+    if (s.y_rows[size_t(yp)] != 0) {
+      s.y_rows[size_t(yp)] = 0;
+      uint64_t* ty_row = s.ty.data() + yp * wpr;
+      uint64_t any = 0;
+      for (int64_t w = 0; w < wpr; ++w) {
+        y_run[w] ^= ty_row[w];
+        ty_row[w] = 0;
+        any |= y_run[w];
+      }
+      y_any = any != 0;
+    }
+    const bool x_any = s.x_rows[size_t(yp)] != 0;
+    if (!x_any && !y_any) {
+      uint64_t z_any = 0;
+      for (int64_t w = 0; w < wpr; ++w) z_any |= z_row[w];
+      if (z_any == 0) continue;  // all three parities are zero on this row
+    }
+    s.x_rows[size_t(yp)] = 0;
     uint64_t carry = 0;  // all ones where the X parity so far is odd
     for (int64_t w = 0; w < wpr; ++w) {
       uint64_t a = carry;
@@ -338,12 +375,8 @@ void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& 
         carry = uint64_t(0) - (a >> 63);
         tx_row[w] = 0;
       }
-      if (const uint64_t t = ty_row[w]; t != 0) {
-        y_run[size_t(w)] ^= t;
-        ty_row[w] = 0;
-      }
       a &= valid[size_t(w)];
-      const uint64_t b = y_run[size_t(w)], zz = z_row[w];
+      const uint64_t b = y_run[w], zz = z_row[w];
       const uint64_t r = (a & b) | (zz & (a | b));
       if (r != 0) {
         if (!c) c = grid.mutableLayerWords(z);
@@ -359,12 +392,14 @@ void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& 
     odd_x += int64_t(carry & 1);
   }
   // Row ny + 1: the crossings past every centre along Y. The running row is then each ray's total parity.
-  uint64_t* past = ty + (int64_t(ny) + 1) * wpr;
+  const int64_t past_row = int64_t(ny) + 1;
+  uint64_t* past = s.ty.data() + past_row * wpr;
   int64_t odd_y = 0;
   for (int64_t w = 0; w < wpr; ++w) {
-    odd_y += popcount64(y_run[size_t(w)] ^ past[w]);
+    odd_y += popcount64(y_run[w] ^ past[w]);
     past[w] = 0;
   }
+  s.y_rows[size_t(past_row)] = 0;
   counts.disputed += disputed;
   counts.odd_x += odd_x;
   counts.odd_y += odd_y;
@@ -649,8 +684,7 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
         }
         const bool ok = runSlabs(dims.nz, threads, gate, out_of_memory, [&](int t, int32_t z0, int32_t z1) {
           CrossingList cx, cy;
-          std::vector<uint64_t> tx(static_cast<size_t>(wpl), 0), ty(static_cast<size_t>(wpl), 0);
-          std::vector<uint64_t> y_run(static_cast<size_t>(wpr), 0);
+          VoteScratch scratch(wpl, wpr, dims.ny);
           std::vector<uint64_t> bz = std::move(snapshots[size_t(z0 / slab)]);
           RayCaster::RowSweep sweep_x(along_x, z0), sweep_y(along_y, z0);
           for (int32_t z = z0; z < z1 && !gate.cancelled(); ++z) {
@@ -658,10 +692,10 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
             cy.clear();
             sweep_x.next(cx);
             sweep_y.next(cy);
-            toggleAlongX(tx.data(), wpr, cx);
-            toggleAlongY(ty.data(), wpr, cy);
+            toggleAlongX(scratch, wpr, cx);
+            toggleAlongY(scratch, wpr, cy);
             applyLayerToggles(z, bz.data());
-            voteLayer(z, dims.ny, wpr, valid, tx.data(), ty.data(), bz.data(), y_run, grid, mask, counts[size_t(t)]);
+            voteLayer(z, dims.ny, wpr, valid, scratch, bz.data(), grid, mask, counts[size_t(t)]);
             gate.advance(2);  // two rows of rays (X and Y) per layer
           }
         });
