@@ -31,7 +31,7 @@ VoxelGrid::VoxelGrid(Dims dims, GridFrame frame) : dims_(dims), frame_(std::move
   assert(dims.nx >= 1 && dims.ny >= 1 && dims.nz >= 1);
   assert(dims.nx <= kMaxDim && dims.ny <= kMaxDim && dims.nz <= kMaxDim);
   words_per_row_ = (int64_t(dims.nx) + 2 + 63) / 64;
-  zero_layer_ = std::make_shared<Layer>(size_t(wordsPerLayer()), 0);
+  zero_layer_ = std::make_shared<Layer>(size_t(wordsPerLayer()));
   layers_.assign(size_t(dims.nz) + 2, zero_layer_);
 }
 
@@ -44,7 +44,7 @@ uint64_t* VoxelGrid::mutableLayerWords(int32_t z) {
   assert(z >= 0 && z < dims_.nz);
   auto& layer = layers_[size_t(z) + 1];
   if (layer == zero_layer_) {
-    layer = std::make_shared<Layer>(size_t(wordsPerLayer()), 0);
+    layer = std::make_shared<Layer>(size_t(wordsPerLayer()));
   } else if (layer.use_count() > 1) {
     layer = std::make_shared<Layer>(*layer);  // copy on write: another snapshot still holds the old data
   }

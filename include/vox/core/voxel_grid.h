@@ -16,6 +16,8 @@
 // one grid from different threads is allowed (the voxelizer does it); mutating the same layer is not.
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <new>
 #include <memory>
 #include <optional>
 #include <string>
@@ -125,7 +127,32 @@ class VoxelGrid {
   bool sharesLayerWith(const VoxelGrid& other, int32_t z) const;
 
  private:
-  using Layer = std::vector<uint64_t>;
+  // Layer storage comes from calloc and is not written when allocated: memory fresh from the system is already
+  // zero, so a layer's pages are only faulted in where something is written (a sparse layer touches few of them).
+  template <class T>
+  struct ZeroedAllocator {
+    using value_type = T;
+    ZeroedAllocator() = default;
+    template <class U>
+    ZeroedAllocator(const ZeroedAllocator<U>&) {}  // NOLINT(google-explicit-constructor): allocator rebinding
+    T* allocate(size_t n) {
+      void* p = std::calloc(n, sizeof(T));
+      if (!p) throw std::bad_alloc();
+      return static_cast<T*>(p);
+    }
+    void deallocate(T* p, size_t) { std::free(p); }
+    // Value-initialising a word writes nothing: calloc's memory is already zero.
+    template <class U>
+    void construct(U* p) noexcept {
+      ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+      ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+    bool operator==(const ZeroedAllocator&) const { return true; }
+  };
+  using Layer = std::vector<uint64_t, ZeroedAllocator<uint64_t>>;
   Dims dims_{};
   GridFrame frame_{};
   int64_t words_per_row_ = 0;

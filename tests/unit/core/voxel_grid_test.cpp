@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "vox/core/grid_placement.h"
 #include "vox/core/neighbour_code.h"
 #include "vox/core/surface.h"
@@ -23,6 +25,30 @@ TEST(VoxelGrid, newGridIsEmptyAndAllocatesNoLayers) {
   EXPECT_FALSE(g.get(0, 0, 0));
   EXPECT_FALSE(g.get(-1, -1, -1));  // padding reads as empty
   EXPECT_FALSE(g.get(10, 20, 30));
+}
+
+// Layers come from calloc without being written (so untouched pages are never faulted in): a new layer must read
+// as zero even where its memory was just used and freed by another grid, at small sizes (reused heap chunks) and
+// large ones (whole layers handed back by the allocator).
+TEST(VoxelGrid, newLayersAreZeroEvenInReusedMemory) {
+  for (const Dims d : {Dims{40, 30, 6}, Dims{1000, 700, 4}}) {
+    for (int round = 0; round < 3; ++round) {
+      {
+        VoxelGrid dirty(d);
+        for (int32_t z = 0; z < d.nz; ++z) {
+          uint64_t* w = dirty.mutableLayerWords(z);
+          std::fill(w, w + dirty.wordsPerLayer(), ~uint64_t(0));
+        }
+      }
+      VoxelGrid fresh(d);
+      for (int32_t z = 0; z < d.nz; ++z) {
+        const uint64_t* w = fresh.mutableLayerWords(z);
+        ASSERT_TRUE(std::all_of(w, w + fresh.wordsPerLayer(), [](uint64_t x) { return x == 0; }))
+            << d.nx << " x " << d.ny << ", layer " << z << ", round " << round;
+      }
+      EXPECT_EQ(fresh.filledCount(), 0);
+    }
+  }
 }
 
 TEST(VoxelGrid, setResetAndReadBackEveryCornerAndWordBoundary) {
