@@ -242,66 +242,72 @@ void RayCaster::rowCrossings(const Plane& plane, int32_t row, CrossingList& out)
   const double lo = std::min(v_long, v_short), hi = std::max(v_long, v_short);
   const double margin = plane.section_margin;
   const double outer_lo = lo - margin, outer_hi = hi + margin, inner_lo = lo + margin, inner_hi = hi - margin;
-  const double w_term = plane.n_w * (w - plane.a[2]);  // the part of the crossing's formula fixed by the row
-  const double av = plane.a[1], aw = plane.a[2], bv = plane.b[1], bw = plane.b[2], cv = plane.c[1], cw = plane.c[2];
-  auto crossedExactly = [&](double v) {
-    return edgeSide(av, aw, bv, bw, v, w) == plane.sign && edgeSide(bv, bw, cv, cw, v, w) == plane.sign &&
-           edgeSide(cv, cw, av, aw, v, w) == plane.sign;
-  };
-  const int32_t nv = raysPerRow();
   // The first ray at or above outer_lo, and the first at or above inner_hi: estimated from the grid formula
   // (truncation is never high and at most one ray low), then settled by comparing with the stored centres.
+  const int32_t nv = raysPerRow();
   const double v0 = cv_[0];
+  const double* cv = cv_.data();
   int32_t j = clampedIndex((outer_lo - v0) * inv_h_, 0, nv);
-  while (j > 0 && cv_[size_t(j) - 1] >= outer_lo) --j;
-  while (j < nv && cv_[size_t(j)] < outer_lo) ++j;
-  // Rays within the margin of the lower end.
-  for (; j < nv && cv_[size_t(j)] <= inner_lo; ++j) {
-    const double v = cv_[size_t(j)];
-    if (v > outer_hi) return;
-    if (crossedExactly(v)) out.push_back(Crossing{j, firstPast(plane, w_term, v, w), plane.sign});
+  while (j > 0 && cv[j - 1] >= outer_lo) --j;
+  while (j < nv && cv[j] < outer_lo) ++j;
+  int32_t j_end = std::max(j, clampedIndex((inner_hi - v0) * inv_h_, 0, nv));
+  while (j_end > j && cv[j_end - 1] >= inner_hi) --j_end;
+  while (j_end < nv && cv[j_end] < inner_hi) ++j_end;
+  // Usually no ray lies within the margin of either end: then rays [j, j_end) are exactly the crossed ones.
+  if ((j < nv && cv[j] <= inner_lo) || (j_end < nv && cv[j_end] <= outer_hi)) {
+    int32_t k_end = j_end;
+    while (k_end < nv && cv[k_end] <= outer_hi) ++k_end;
+    exactCrossings(plane, row, j, k_end, out);
+    return;
   }
-  // Rays strictly inside: every one is crossed, so the output grows by their number at once.
-  int32_t inner_end = std::max(j, clampedIndex((inner_hi - v0) * inv_h_, 0, nv));
-  while (inner_end > j && cv_[size_t(inner_end) - 1] >= inner_hi) --inner_end;
-  while (inner_end < nv && cv_[size_t(inner_end)] < inner_hi) ++inner_end;
-  if (inner_end > j) {
-    Crossing* o = out.append(size_t(inner_end - j));
-    if (plane.fixed_first >= 0) {
-      for (; j < inner_end; ++j) *o++ = Crossing{j, plane.fixed_first, plane.sign};
-    } else if (std::isfinite(plane.margin) && length() >= 2) {
-      // firstPast's usual case as straight-line code: the estimate, the centres either side of it, and a flag
-      // recording whether every crossing had centre i past it and centre i - 1 not, both by more than the margin.
-      // Rarely not so; then the run is done again by firstPast. (A finite margin means n.u is clearly nonzero, so
-      // every estimate is finite.)
-      const double a_u = plane.a[0], a_v = plane.a[1], n_v = plane.n_v, inv_nu = plane.inv_nu;
-      const double umin = plane.umin, umax = plane.umax, pmargin = plane.margin;
-      const double u0 = cu_[0], inv_h = inv_h_;
-      const int32_t last = length() - 1;
-      const double* cu = cu_.data();
-      bool clear = true;
-      for (int32_t k = j; k < inner_end; ++k) {
-        const double x = std::min(std::max(a_u - (n_v * (cv_[size_t(k)] - a_v) + w_term) * inv_nu, umin), umax);
-        const int32_t i = int32_t((x - u0) * inv_h) + 1;  // about ceil((x - u0) / h)
-        const int32_t ic = std::clamp(i, 1, last);
-        clear &= (i == ic) & (cu[ic] - x > pmargin) & (x - cu[ic - 1] > pmargin);
-        o[k - j] = Crossing{k, ic, plane.sign};
-      }
-      if (!clear) {
-        for (int32_t k = j; k < inner_end; ++k) {
-          o[k - j] = Crossing{k, firstPast(plane, w_term, cv_[size_t(k)], w), plane.sign};
-        }
-      }
-      j = inner_end;
-    } else {
-      for (; j < inner_end; ++j) *o++ = Crossing{j, firstPast(plane, w_term, cv_[size_t(j)], w), plane.sign};
+  if (j_end <= j) return;
+  Crossing* o = out.append(size_t(j_end - j));
+  if (plane.fixed_first >= 0) {
+    for (int32_t k = j; k < j_end; ++k) o[k - j] = Crossing{k, plane.fixed_first, plane.sign};
+    return;
+  }
+  if (!std::isfinite(plane.margin) || length() < 2) {
+    placeCrossings(plane, row, j, j_end, o);
+    return;
+  }
+  // firstPast's usual case as straight-line code: the estimate, the centres either side of it, and a flag recording
+  // whether every crossing had centre i past it and centre i - 1 not, both by more than the margin. Rarely not so;
+  // then the run is placed again by firstPast. (A finite margin means n.u is clearly nonzero, so every estimate is
+  // finite.)
+  const double w_term = plane.n_w * (w - plane.a[2]);  // the part of the crossing's formula fixed by the row
+  const double a_u = plane.a[0], a_v = plane.a[1], n_v = plane.n_v, inv_nu = plane.inv_nu;
+  const double umin = plane.umin, umax = plane.umax, pmargin = plane.margin;
+  const double u0 = cu_[0], inv_h = inv_h_;
+  const int32_t last = length() - 1;
+  const double* cu = cu_.data();
+  bool clear = true;
+  for (int32_t k = j; k < j_end; ++k) {
+    const double x = std::min(std::max(a_u - (n_v * (cv[k] - a_v) + w_term) * inv_nu, umin), umax);
+    const int32_t i = int32_t((x - u0) * inv_h) + 1;  // about ceil((x - u0) / h)
+    const int32_t ic = std::clamp(i, 1, last);
+    clear &= (i == ic) & (cu[ic] - x > pmargin) & (x - cu[ic - 1] > pmargin);
+    o[k - j] = Crossing{k, ic, plane.sign};
+  }
+  if (!clear) placeCrossings(plane, row, j, j_end, o);
+}
+
+void RayCaster::exactCrossings(const Plane& plane, int32_t row, int32_t j, int32_t j_end, CrossingList& out) const {
+  const double w = cw_[size_t(row)];
+  const double w_term = plane.n_w * (w - plane.a[2]);
+  const double av = plane.a[1], aw = plane.a[2], bv = plane.b[1], bw = plane.b[2], cv = plane.c[1], cw = plane.c[2];
+  for (; j < j_end; ++j) {
+    const double v = cv_[size_t(j)];
+    if (edgeSide(av, aw, bv, bw, v, w) == plane.sign && edgeSide(bv, bw, cv, cw, v, w) == plane.sign &&
+        edgeSide(cv, cw, av, aw, v, w) == plane.sign) {
+      out.push_back(Crossing{j, firstPast(plane, w_term, v, w), plane.sign});
     }
   }
-  // Rays within the margin of the upper end.
-  for (; j < nv && cv_[size_t(j)] <= outer_hi; ++j) {
-    const double v = cv_[size_t(j)];
-    if (crossedExactly(v)) out.push_back(Crossing{j, firstPast(plane, w_term, v, w), plane.sign});
-  }
+}
+
+void RayCaster::placeCrossings(const Plane& plane, int32_t row, int32_t j, int32_t j_end, Crossing* out) const {
+  const double w = cw_[size_t(row)];
+  const double w_term = plane.n_w * (w - plane.a[2]);
+  for (int32_t k = j; k < j_end; ++k) out[k - j] = Crossing{k, firstPast(plane, w_term, cv_[size_t(k)], w), plane.sign};
 }
 
 RayCaster::Plane::Plane(uint32_t triangle, int32_t end_row, const RayCaster& caster) : row_hi(end_row) {

@@ -153,6 +153,13 @@ class RayCaster {
 
  private:
   void rowCrossings(const Plane& plane, int32_t row, CrossingList& out) const;
+  // The crossed rays of `row` among [j, j_end), each decided by the exact edge tests. Out of line: needed only where
+  // a ray passes within rounding distance of an end of the triangle's section.
+  [[gnu::noinline]] void exactCrossings(const Plane& plane, int32_t row, int32_t j, int32_t j_end,
+                                        CrossingList& out) const;
+  // Writes the crossings of rays [j, j_end) (all crossed) to out[0..j_end - j), each placed by firstPast. Out of
+  // line: the fallback of rowCrossings' straight-line placement.
+  [[gnu::noinline]] void placeCrossings(const Plane& plane, int32_t row, int32_t j, int32_t j_end, Crossing* out) const;
   // First centre past the crossing of ray (v, w); w_term = n.w (w - a.w).
   int32_t firstPast(const Plane& plane, double w_term, double v, double w) const;
   // Exact: is centre i of ray (v, w) past the triangle's plane? Out of line: the rare slow path of firstPast.

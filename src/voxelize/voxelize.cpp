@@ -611,13 +611,32 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongX, threads);
       std::vector<PassScratch> scratch(static_cast<size_t>(threads));
       const int64_t wpr = grid.wordsPerRow();
+      // Runs are filled into a per-thread scratch layer (cache-resident, and filling a run reads its end words),
+      // then each row that got any is stored into the grid: the grid's memory is only ever written, and only where
+      // a row holds voxels, so a page no row of it touches is never faulted in (VoxelGrid's layers start as
+      // untouched zero memory).
+      struct FillScratch {
+        std::vector<uint64_t> layer;
+        std::vector<int32_t> rows;  // rows of `layer` holding a run
+      };
+      std::vector<FillScratch> fill(static_cast<size_t>(threads));
       const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t z, const auto& crossings) {
-        uint64_t* layer = nullptr;  // layer z, allocated at its first run (only this thread writes it)
+        FillScratch& f = fill[size_t(t)];
+        if (f.layer.empty()) f.layer.assign(size_t(grid.wordsPerLayer()), 0);
         fillRowAlongX(dims.ny, dims.nx, crossings, rule, scratch[size_t(t)], [&](int32_t y, int64_t x0, int64_t x1) {
-          if (std::max<int64_t>(x0, 0) >= std::min<int64_t>(x1, dims.nx)) return;  // empty: allocate nothing
-          if (!layer) layer = grid.mutableLayerWords(z);
-          fillRowBits(layer + (int64_t(y) + 1) * wpr, dims.nx, x0, x1);
+          if (std::max<int64_t>(x0, 0) >= std::min<int64_t>(x1, dims.nx)) return;  // empty: write nothing
+          uint64_t* row = f.layer.data() + (int64_t(y) + 1) * wpr;
+          if (f.rows.empty() || f.rows.back() != y) f.rows.push_back(y);  // runs come row by row, rows ascending
+          fillRowBits(row, dims.nx, x0, x1);
         });
+        if (f.rows.empty()) return;
+        uint64_t* layer = grid.mutableLayerWords(z);  // only this thread writes layer z
+        for (const int32_t y : f.rows) {
+          const int64_t at = (int64_t(y) + 1) * wpr;
+          std::copy_n(f.layer.data() + at, wpr, layer + at);
+          std::fill_n(f.layer.data() + at, wpr, 0);
+        }
+        f.rows.clear();
       });
       if (!ok) return failure();
       const PassStats stats = sumStats(scratch, caster);
