@@ -206,7 +206,6 @@ struct PassScratch {
   std::vector<int32_t> by_first;  // counting sort of crossings by first voxel
   std::vector<Crossing> along;    // crossings sorted by first voxel
   std::vector<Crossing> sorted;   // by ray, then by first voxel
-  std::vector<uint8_t> parity;    // per-ray crossing parity (rays along Y and Z)
   int64_t odd_rays = 0;           // rays with an odd number of crossings
   int64_t unbalanced_rays = 0;    // rays whose signed crossings do not sum to zero
   int64_t crossings = 0;
@@ -408,18 +407,14 @@ void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& 
 // Rays along Z, row = y, rays step along x: each crossing toggles bit (x, y) of the parity of every layer from
 // `first` up. The toggles are kept, not applied: appended to this thread's list for layer `first` as the bit's
 // position in a layer ((y + 1) * wpr * 64 + x + 1, below 2^32 for any grid voxmod accepts), and the layer pass XORs
-// them into a running parity layer as it goes up in z. So the Z parity never needs a grid of its own.
-void collectTogglesAlongZ(int32_t y, int32_t nz, int32_t nx, int64_t wpr, const CrossingList& crossings,
+// them into a running parity layer as it goes up in z. So the Z parity never needs a grid of its own. Crossings
+// past every centre go to list nz: no layer uses them, but with them the running layer ends as each ray's total
+// parity.
+void collectTogglesAlongZ(int32_t y, int64_t wpr, const CrossingList& crossings,
                           std::vector<std::vector<uint32_t>>& toggles, PassScratch& s) {
-  if (crossings.empty()) return;
   s.crossings += int64_t(crossings.size());
-  s.parity.assign(size_t(nx), 0);
   const int64_t row_bit = (int64_t(y) + 1) * wpr * 64 + 1;
-  for (const Crossing& c : crossings) {
-    s.parity[size_t(c.ray())] ^= 1;
-    if (c.first() < nz) toggles[size_t(c.first())].push_back(uint32_t(row_bit + c.ray()));
-  }
-  for (uint8_t p : s.parity) s.odd_rays += p;
+  for (const Crossing& c : crossings) toggles[size_t(c.first())].push_back(uint32_t(row_bit + c.ray()));
 }
 
 void applyToggles(const std::vector<uint32_t>& toggles, uint64_t* layer) {
@@ -665,14 +660,13 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       // toggles[t][z]: thread t's toggles of layer z.
       std::vector<std::vector<std::vector<uint32_t>>> toggles(static_cast<size_t>(threads));
       {
-        for (auto& per_layer : toggles) per_layer.resize(size_t(dims.nz));
+        for (auto& per_layer : toggles) per_layer.resize(size_t(dims.nz) + 1);
         const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongZ, threads);
         std::vector<PassScratch> scratch(static_cast<size_t>(threads));
         const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t y, const auto& crossings) {
-          collectTogglesAlongZ(y, dims.nz, dims.nx, wpr, crossings, toggles[size_t(t)], scratch[size_t(t)]);
+          collectTogglesAlongZ(y, wpr, crossings, toggles[size_t(t)], scratch[size_t(t)]);
         });
         if (!ok) return failure();
-        odd[2] = sumStats(scratch, caster).odd_rays;
       }
       auto applyLayerToggles = [&](int32_t z, uint64_t* layer) {
         for (const auto& per_layer : toggles) applyToggles(per_layer[size_t(z)], layer);
@@ -688,6 +682,9 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
             applyLayerToggles(z, running.data());
           }
         }
+        // With the crossings past every centre, the running layer holds each ray's total parity.
+        applyLayerToggles(dims.nz, running.data());
+        for (const uint64_t w : running) odd[2] += popcount64(w);
       }
       std::vector<VoteCounts> counts(static_cast<size_t>(threads));
       {
