@@ -247,12 +247,18 @@ void RayCaster::rowCrossings(const Plane& plane, int32_t row, CrossingList& out)
   const int32_t nv = raysPerRow();
   const double v0 = cv_[0];
   const double* cv = cv_.data();
-  int32_t j = clampedIndex((outer_lo - v0) * inv_h_, 0, nv);
-  while (j > 0 && cv[j - 1] >= outer_lo) --j;
-  while (j < nv && cv[j] < outer_lo) ++j;
-  int32_t j_end = std::max(j, clampedIndex((inner_hi - v0) * inv_h_, 0, nv));
-  while (j_end > j && cv[j_end - 1] >= inner_hi) --j_end;
-  while (j_end < nv && cv[j_end] < inner_hi) ++j_end;
+  // Usually ceil((value - v0) / h), confirmed by the centres either side with one predictable branch; otherwise
+  // (an exact hit on a centre, or outside the grid) the general search.
+  auto firstRayAtOrAbove = [&](double value) {
+    const double t = (value - v0) * inv_h_;
+    if (t > 0.0 && t < double(nv - 1)) {
+      const int32_t k = int32_t(t) + 1;
+      if (cv[k - 1] < value && cv[k] >= value) return k;
+    }
+    return firstAtOrAbove(cv_, origin_v_, inv_h_, value);
+  };
+  const int32_t j = firstRayAtOrAbove(outer_lo);
+  const int32_t j_end = std::max(j, firstRayAtOrAbove(inner_hi));
   // Usually no ray lies within the margin of either end: then rays [j, j_end) are exactly the crossed ones.
   if ((j < nv && cv[j] <= inner_lo) || (j_end < nv && cv[j_end] <= outer_hi)) {
     int32_t k_end = j_end;

@@ -152,7 +152,7 @@ class RayCaster {
   };
 
  private:
-  void rowCrossings(const Plane& plane, int32_t row, CrossingList& out) const;
+  [[gnu::always_inline]] inline void rowCrossings(const Plane& plane, int32_t row, CrossingList& out) const;
   // The crossed rays of `row` among [j, j_end), each decided by the exact edge tests. Out of line: needed only where
   // a ray passes within rounding distance of an end of the triangle's section.
   [[gnu::noinline]] void exactCrossings(const Plane& plane, int32_t row, int32_t j, int32_t j_end,
