@@ -242,13 +242,12 @@ void RayCaster::rowCrossings(const Plane& plane, int32_t row, CrossingList& out)
   const double lo = std::min(v_long, v_short), hi = std::max(v_long, v_short);
   const double margin = plane.section_margin;
   const double outer_lo = lo - margin, outer_hi = hi + margin, inner_lo = lo + margin, inner_hi = hi - margin;
-  // The first ray at or above outer_lo, and the first at or above inner_hi: estimated from the grid formula
-  // (truncation is never high and at most one ray low), then settled by comparing with the stored centres.
+  // The first ray at or above outer_lo, and the first at or above inner_hi. Usually ceil((value - v0) / h),
+  // confirmed by the centres either side with one predictable branch; otherwise (a value exactly on a centre, or
+  // outside the grid) the general search, which compares with the stored centres.
   const int32_t nv = raysPerRow();
   const double v0 = cv_[0];
   const double* cv = cv_.data();
-  // Usually ceil((value - v0) / h), confirmed by the centres either side with one predictable branch; otherwise
-  // (an exact hit on a centre, or outside the grid) the general search.
   auto firstRayAtOrAbove = [&](double value) {
     const double t = (value - v0) * inv_h_;
     if (t > 0.0 && t < double(nv - 1)) {
