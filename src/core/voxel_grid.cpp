@@ -94,9 +94,7 @@ int64_t VoxelGrid::filledCount() const {
   int64_t n = 0;
   for (int32_t z = 0; z < dims_.nz; ++z) {
     if (!layerAllocated(z)) continue;
-    const uint64_t* w = layerWords(z);
-    const int64_t count = wordsPerLayer();
-    for (int64_t i = 0; i < count; ++i) n += popcount64(w[i]);
+    n += popcountWords(layerWords(z), wordsPerLayer());
   }
   return n;
 }

@@ -152,6 +152,8 @@ class RayCaster {
   };
 
  private:
+  // Appends the crossings of `plane` with the rays of `row` (the triangle spans the row). Inlined into the sweep:
+  // called once per active triangle and row.
   [[gnu::always_inline]] inline void rowCrossings(const Plane& plane, int32_t row, CrossingList& out) const;
   // The crossed rays of `row` among [j, j_end), each decided by the exact edge tests. Out of line: needed only where
   // a ray passes within rounding distance of an end of the triangle's section.

@@ -22,7 +22,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <mutex>
@@ -133,16 +132,16 @@ class ProgressGate {
   double last_fraction_ = 0.0;
 };
 
-// Runs slab_fn(thread, row_begin, row_end) over slabs of consecutive rows on `threads` threads, handed out
-// dynamically so uneven rows balance; about eight slabs per thread, enough to balance and few enough that setting up
-// each slab's sweep stays cheap. slab_fn checks progress.cancelled() per row. Returns false when cancelled or out of
-// memory (`out_of_memory` set).
 // Rows per slab of runSlabs: slabs start at multiples of it.
 int32_t slabRows(int32_t rows, int threads) {
   threads = std::clamp(threads, 1, std::max(1, int(rows)));
   return std::max<int32_t>(1, rows / (threads * 8));
 }
 
+// Runs slab_fn(thread, row_begin, row_end) over slabs of consecutive rows on `threads` threads, handed out
+// dynamically so uneven rows balance; about eight slabs per thread, enough to balance and few enough that setting up
+// each slab's sweep stays cheap. slab_fn checks progress.cancelled() per row. Returns false when cancelled or out of
+// memory (`out_of_memory` set).
 template <class SlabFn>
 bool runSlabs(int32_t rows, int threads, ProgressGate& progress, bool& out_of_memory, SlabFn&& slab_fn) {
   const int32_t slab = slabRows(rows, threads);
@@ -208,11 +207,10 @@ struct PassScratch {
   std::vector<Crossing> sorted;   // by ray, then by first voxel
   int64_t odd_rays = 0;           // rays with an odd number of crossings
   int64_t unbalanced_rays = 0;    // rays whose signed crossings do not sum to zero
-  int64_t crossings = 0;
 };
 
 struct PassStats {
-  int64_t odd_rays = 0, unbalanced_rays = 0, crossings = 0, rays = 0;
+  int64_t odd_rays = 0, unbalanced_rays = 0, rays = 0;
 };
 
 PassStats sumStats(const std::vector<PassScratch>& scratch, const RayCaster& caster) {
@@ -220,19 +218,17 @@ PassStats sumStats(const std::vector<PassScratch>& scratch, const RayCaster& cas
   for (const auto& p : scratch) {
     s.odd_rays += p.odd_rays;
     s.unbalanced_rays += p.unbalanced_rays;
-    s.crossings += p.crossings;
   }
   s.rays = int64_t(caster.rows()) * caster.raysPerRow();
   return s;
 }
 
-// Rays along X, row = layer z: sort the crossings of each ray and write the inside runs as write(y, x0, x1) (word
-// operations: VoxelGrid::fillRun, or fillRowBits on a scratch layer).
+// Rays along X, row = layer z (parity and nonzero mode): sort the crossings of each ray and write the inside runs as
+// write(y, x0, x1), ray by ray in increasing y.
 template <class RunWriter>
 void fillRowAlongX(int32_t ny, int32_t nx, const CrossingList& crossings, Rule rule, PassScratch& s,
                    RunWriter&& write) {
   if (crossings.empty()) return;
-  s.crossings += int64_t(crossings.size());
   // Sorted by ray, then along the ray: two stable counting sorts (by first voxel, then by ray), O(nx + ny +
   // crossings) without a data-dependent branch. (An insertion sort per ray mispredicts on nearly every step where
   // rays cross many bodies.) Crossings with the same ray and first voxel may end up in either order: the runs
@@ -411,8 +407,7 @@ void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& 
 // past every centre go to list nz: no layer uses them, but with them the running layer ends as each ray's total
 // parity.
 void collectTogglesAlongZ(int32_t y, int64_t wpr, const CrossingList& crossings,
-                          std::vector<std::vector<uint32_t>>& toggles, PassScratch& s) {
-  s.crossings += int64_t(crossings.size());
+                          std::vector<std::vector<uint32_t>>& toggles) {
   const int64_t row_bit = (int64_t(y) + 1) * wpr * 64 + 1;
   for (const Crossing& c : crossings) toggles[size_t(c.first())].push_back(uint32_t(row_bit + c.ray()));
 }
@@ -662,9 +657,8 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       {
         for (auto& per_layer : toggles) per_layer.resize(size_t(dims.nz) + 1);
         const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongZ, threads);
-        std::vector<PassScratch> scratch(static_cast<size_t>(threads));
         const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t y, const auto& crossings) {
-          collectTogglesAlongZ(y, wpr, crossings, toggles[size_t(t)], scratch[size_t(t)]);
+          collectTogglesAlongZ(y, wpr, crossings, toggles[size_t(t)]);
         });
         if (!ok) return failure();
       }
