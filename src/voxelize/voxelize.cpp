@@ -9,13 +9,14 @@
 //    a mesh with holes; voxmod uses the three axis directions and a majority of three.
 //
 // The crossings of each ray come from RayCaster as (first voxel past the crossing, sign) pairs, so filling is
-// integer work. In parity and nonzero mode (rays along X), sorted crossings become runs written with word
-// operations (fillRowBits). In vote mode each crossing toggles one bit, and a prefix XOR along the ray turns toggles
-// into parity, again with word operations: within a row's words for rays along X, over the rows for rays along Y,
-// over the layers for rays along Z (whose toggles are listed per layer and XORed into a running layer as the layer
-// pass goes up). Rows of rays are independent, so the work is split over rows with std::thread; each thread
-// writes only the Z layers of its own rows (rays along X and Y) or its own toggle lists (rays along Z), so no two
-// threads ever write the same word.
+// integer work, and it is done by toggles: a crossing toggles the bit of the first voxel past it, and a prefix XOR
+// along the ray turns toggles into "inside", with word operations. Parity mode (rays along X) toggles at every
+// crossing, in any order. Nonzero mode sorts each ray's crossings along it and toggles only where the winding
+// number changes between zero and nonzero. Vote mode takes the parity along each axis: the prefix XOR runs within
+// a row's words for rays along X, over the rows for rays along Y, over the layers for rays along Z (whose toggles
+// are listed by layer and XORed into a running layer as the layer pass goes up). Rows of rays are independent, so
+// the work is split over slabs of rows with std::thread; each thread writes only the Z layers of its own rows (rays
+// along X and Y) or its own slab's toggle lists (rays along Z), so no two threads ever write the same word.
 #include "vox/voxelize/voxelize.h"
 
 #include <unistd.h>
@@ -223,16 +224,42 @@ PassStats sumStats(const std::vector<PassScratch>& scratch, const RayCaster& cas
   return s;
 }
 
-// Rays along X, row = layer z (parity and nonzero mode): sort the crossings of each ray and write the inside runs as
-// write(y, x0, x1), ray by ray in increasing y.
-template <class RunWriter>
-void fillRowAlongX(int32_t ny, int32_t nx, const CrossingList& crossings, Rule rule, PassScratch& s,
-                   RunWriter&& write) {
+// Bit i of the result is the XOR of bits 0..i of x.
+inline uint64_t prefixXor(uint64_t x) {
+  x ^= x << 1;
+  x ^= x << 2;
+  x ^= x << 4;
+  x ^= x << 8;
+  x ^= x << 16;
+  x ^= x << 32;
+  return x;
+}
+
+// Rays along X, row = layer z (parity and nonzero mode): marks, for each ray y, the voxels x where being inside
+// changes, as toggled bits in `layer` (the grid's layout: bit x + 1 of row y + 1, x = the first voxel past the
+// crossing, 0..nx), and flags the row in `marked`; the voxels inside a ray are then those with an odd number of
+// toggles up to them, a prefix XOR along the row (fillToggledRows). Parity toggles at
+// every crossing, in any order. Nonzero needs each ray's crossings in order along it: the winding number from
+// -infinity changes at each, and a toggle goes where it changes between zero and nonzero. Toggles at the same
+// voxel cancel, so crossings with the same ray and first voxel may come in either order.
+void markRowAlongX(int32_t ny, int32_t nx, const CrossingList& crossings, Rule rule, PassScratch& s, uint64_t* layer,
+                   uint8_t* marked, int64_t wpr) {
   if (crossings.empty()) return;
+  // Toggles bit x + 1 of padded row y + 1 when `on`.
+  auto toggle = [layer, wpr](int32_t y, int32_t x, bool on) {
+    const int64_t xp = int64_t(x) + 1;
+    layer[(int64_t(y) + 1) * wpr + (xp >> 6)] ^= uint64_t(on) << (xp & 63);
+  };
+  if (rule == Rule::kParity) {
+    for (const Crossing& c : crossings) {
+      toggle(c.ray(), c.first(), true);
+      marked[c.ray() + 1] = 1;
+    }
+    return;  // odd rays: the parity past the row's last voxel (fillToggledRows)
+  }
   // Sorted by ray, then along the ray: two stable counting sorts (by first voxel, then by ray), O(nx + ny +
   // crossings) without a data-dependent branch. (An insertion sort per ray mispredicts on nearly every step where
-  // rays cross many bodies.) Crossings with the same ray and first voxel may end up in either order: the runs
-  // between them are empty and the winding after them is the same.
+  // rays cross many bodies.)
   const size_t count = crossings.size();
   s.by_first.assign(size_t(nx) + 2, 0);
   s.start.assign(size_t(ny) + 1, 0);
@@ -255,26 +282,66 @@ void fillRowAlongX(int32_t ny, int32_t nx, const CrossingList& crossings, Rule r
     const Crossing* b = s.sorted.data() + s.start[size_t(j)];
     const Crossing* e = s.sorted.data() + s.start[size_t(j) + 1];
     if (b == e) continue;
-    const int64_t n = e - b;
-    if (rule == Rule::kParity) {
-      // Voxel i is inside iff an odd number of crossings lie before its centre: runs [first_0, first_1), ...
-      for (int64_t m = 0; m + 1 < n; m += 2) write(j, b[m].first(), b[m + 1].first());
-      if (n % 2 != 0) {
-        write(j, b[n - 1].first(), nx);  // the ray ends inside: the mesh is open on this line
-        ++s.odd_rays;
-      }
-    } else {
-      // Winding number from -infinity: entering a solid (normal pointing to -u, sign -1) adds one.
-      int64_t winding = 0;
-      for (int64_t m = 0; m < n; ++m) {
-        winding -= b[m].sign();
-        const int32_t end = m + 1 < n ? b[m + 1].first() : nx;
-        if (winding != 0 && b[m].first() < end) write(j, b[m].first(), end);
-      }
-      if (winding != 0) ++s.unbalanced_rays;
-      if (n % 2 != 0) ++s.odd_rays;
+    marked[j + 1] = 1;
+    // Winding number from -infinity: entering a solid (normal pointing to -u, sign -1) adds one. Branch-free: where
+    // rays cross many bodies, whether the winding is zero changes unpredictably.
+    int32_t winding = 0;
+    bool inside = false;
+    for (const Crossing* c = b; c != e; ++c) {
+      winding -= c->sign();
+      const bool now_inside = winding != 0;
+      toggle(j, c->first(), now_inside != inside);
+      inside = now_inside;
+    }
+    s.unbalanced_rays += winding != 0 ? 1 : 0;
+    s.odd_rays += (e - b) % 2;
+  }
+}
+
+// Bits 0..nx - 1 of a padded row (bits 1..nx) in each of its wpr words.
+std::vector<uint64_t> validRowBits(int64_t wpr, int64_t nx) {
+  std::vector<uint64_t> valid(static_cast<size_t>(wpr), 0);
+  for (int64_t w = 0; w < wpr; ++w) {
+    for (int b = 0; b < 64; ++b) {
+      const int64_t xp = w * 64 + b;
+      if (xp >= 1 && xp <= nx) valid[size_t(w)] |= uint64_t(1) << b;
     }
   }
+  return valid;
+}
+
+// Turns the toggles of each marked row of `layer` (grid layout, rows 1..ny of wpr words) into the voxels with an odd
+// number of toggles up to them (a prefix XOR along the row, carried from word to word), masked to the row's voxels,
+// and copies each row that holds any into the layer that `target()` returns (called once, at the first such row).
+// Leaves `layer` and `marked` zeroed. Returns how many marked rows had an odd number of toggles in all.
+template <class Target>
+int64_t fillToggledRows(uint64_t* layer, uint8_t* marked, int32_t ny, int64_t wpr, const std::vector<uint64_t>& valid,
+                        Target&& target) {
+  const uint64_t* const valid_bits = valid.data();
+  uint64_t* out = nullptr;
+  int64_t odd = 0;
+  for (int64_t yp = 1; yp <= ny; ++yp) {
+    if (marked[yp] == 0) continue;
+    marked[yp] = 0;
+    uint64_t* const row = layer + yp * wpr;
+    uint64_t carry = 0, any = 0;  // carry: all ones where the parity so far is odd
+    for (int64_t w = 0; w < wpr; ++w) {
+      uint64_t a = carry;
+      if (const uint64_t t = row[w]; t != 0) {
+        a ^= prefixXor(t);
+        carry = uint64_t(0) - (a >> 63);
+      }
+      row[w] = a & valid_bits[w];
+      any |= row[w];
+    }
+    odd += int64_t(carry & 1);
+    if (any != 0) {
+      if (!out) out = target();
+      std::copy_n(row, wpr, out + yp * wpr);
+    }
+    std::fill_n(row, wpr, 0);
+  }
+  return odd;
 }
 
 // Per-thread scratch of vote mode's layer pass.
@@ -312,17 +379,6 @@ void toggleAlongY(VoteScratch& s, int64_t wpr, const CrossingList& crossings) {
   }
 }
 
-// Bit i of the result is the XOR of bits 0..i of x.
-inline uint64_t prefixXor(uint64_t x) {
-  x ^= x << 1;
-  x ^= x << 2;
-  x ^= x << 4;
-  x ^= x << 8;
-  x ^= x << 16;
-  x ^= x << 32;
-  return x;
-}
-
 struct VoteCounts {
   int64_t disputed = 0, odd_x = 0, odd_y = 0;
 };
@@ -337,16 +393,21 @@ void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& 
                const uint64_t* bz, VoxelGrid& grid, VoxelGrid& mask, VoteCounts& counts) {
   uint64_t* c = nullptr;
   uint64_t* m = nullptr;
-  uint64_t* y_run = s.y_run.data();
+  uint64_t* const y_run = s.y_run.data();
+  const uint64_t* const valid_bits = valid.data();
+  uint8_t* const x_rows = s.x_rows.data();
+  uint8_t* const y_rows = s.y_rows.data();
+  uint64_t* const tx = s.tx.data();
+  uint64_t* const ty = s.ty.data();
   std::fill(s.y_run.begin(), s.y_run.end(), 0);
   bool y_any = false;  // some word of y_run is nonzero
   int64_t disputed = 0, odd_x = 0;
   for (int64_t yp = 1; yp <= ny; ++yp) {
-    uint64_t* tx_row = s.tx.data() + yp * wpr;
+    uint64_t* const tx_row = tx + yp * wpr;
     const uint64_t* z_row = bz + yp * wpr;
-    if (s.y_rows[size_t(yp)] != 0) {
-      s.y_rows[size_t(yp)] = 0;
-      uint64_t* ty_row = s.ty.data() + yp * wpr;
+    if (y_rows[yp] != 0) {
+      y_rows[yp] = 0;
+      uint64_t* const ty_row = ty + yp * wpr;
       uint64_t any = 0;
       for (int64_t w = 0; w < wpr; ++w) {
         y_run[w] ^= ty_row[w];
@@ -355,13 +416,13 @@ void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& 
       }
       y_any = any != 0;
     }
-    const bool x_any = s.x_rows[size_t(yp)] != 0;
+    const bool x_any = x_rows[yp] != 0;
     if (!x_any && !y_any) {
       uint64_t z_any = 0;
       for (int64_t w = 0; w < wpr; ++w) z_any |= z_row[w];
       if (z_any == 0) continue;  // all three parities are zero on this row
     }
-    s.x_rows[size_t(yp)] = 0;
+    x_rows[yp] = 0;
     uint64_t carry = 0;  // all ones where the X parity so far is odd
     for (int64_t w = 0; w < wpr; ++w) {
       uint64_t a = carry;
@@ -370,7 +431,7 @@ void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& 
         carry = uint64_t(0) - (a >> 63);
         tx_row[w] = 0;
       }
-      a &= valid[size_t(w)];
+      a &= valid_bits[w];
       const uint64_t b = y_run[w], zz = z_row[w];
       const uint64_t r = (a & b) | (zz & (a | b));
       if (r != 0) {
@@ -401,19 +462,42 @@ void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& 
 }
 
 // Rays along Z, row = y, rays step along x: each crossing toggles bit (x, y) of the parity of every layer from
-// `first` up. The toggles are kept, not applied: appended to this thread's list for layer `first` as the bit's
-// position in a layer ((y + 1) * wpr * 64 + x + 1, below 2^32 for any grid voxmod accepts), and the layer pass XORs
-// them into a running parity layer as it goes up in z. So the Z parity never needs a grid of its own. Crossings
-// past every centre go to list nz: no layer uses them, but with them the running layer ends as each ray's total
-// parity.
-void collectTogglesAlongZ(int32_t y, int64_t wpr, const CrossingList& crossings,
-                          std::vector<std::vector<uint32_t>>& toggles) {
-  const int64_t row_bit = (int64_t(y) + 1) * wpr * 64 + 1;
-  for (const Crossing& c : crossings) toggles[size_t(c.first())].push_back(uint32_t(row_bit + c.ray()));
+// `first` up. The toggles are kept, not applied: each slab of rows of the Z pass lists them by layer `first`, as the
+// bit's position in a layer ((y + 1) * wpr * 64 + x + 1, below 2^32 for any grid voxmod accepts), and the layer pass
+// XORs them into a running parity layer as it goes up in z. So the Z parity never needs a grid of its own.
+// Crossings past every centre go to layer nz: no layer uses them, but with them the running layer ends as each
+// ray's total parity.
+struct ZToggles {
+  std::vector<uint32_t> bits;  // by layer: layer z's are bits[start[z]] .. bits[start[z + 1] - 1]
+  std::vector<size_t> start;   // nz + 2 entries
+};
+
+// Lists the crossings of rows r0.. of the Z pass (all of them in `crossings`, row r's from row_start[r - r0]) by
+// layer: a counting sort on the layer.
+void listTogglesAlongZ(int32_t r0, const CrossingList& crossings, const std::vector<size_t>& row_start, int32_t nz,
+                       int64_t wpr, ZToggles& out) {
+  out.start.assign(size_t(nz) + 2, 0);
+  for (const Crossing& c : crossings) ++out.start[size_t(c.first()) + 1];
+  for (int32_t z = 0; z <= nz; ++z) out.start[size_t(z) + 1] += out.start[size_t(z)];
+  out.bits.resize(crossings.size());
+  std::vector<size_t> pos(out.start.begin(), out.start.end() - 1);
+  for (size_t r = 0; r + 1 < row_start.size(); ++r) {
+    const int64_t row_bit = (int64_t(r0) + int64_t(r) + 1) * wpr * 64 + 1;
+    for (size_t i = row_start[r]; i < row_start[r + 1]; ++i) {
+      const Crossing c = crossings[i];
+      out.bits[pos[size_t(c.first())]++] = uint32_t(row_bit + c.ray());
+    }
+  }
 }
 
-void applyToggles(const std::vector<uint32_t>& toggles, uint64_t* layer) {
-  for (const uint32_t bit : toggles) layer[bit >> 6] ^= uint64_t(1) << (bit & 63);
+// XORs layer z's toggles of every slab into `layer`.
+void applyTogglesAlongZ(const std::vector<ZToggles>& toggles, int32_t z, uint64_t* layer) {
+  for (const ZToggles& t : toggles) {
+    for (size_t i = t.start[size_t(z)]; i < t.start[size_t(z) + 1]; ++i) {
+      const uint32_t bit = t.bits[i];
+      layer[bit >> 6] ^= uint64_t(1) << (bit & 63);
+    }
+  }
 }
 
 // Thesis 4.3.3: one simultaneous pass removing every filled voxel with at most two filled face neighbours (four or
@@ -601,32 +685,28 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongX, threads);
       std::vector<PassScratch> scratch(static_cast<size_t>(threads));
       const int64_t wpr = grid.wordsPerRow();
-      // Runs are filled into a per-thread scratch layer (cache-resident, and filling a run reads its end words),
-      // then each row that got any is stored into the grid: the grid's memory is only ever written, and only where
-      // a row holds voxels, so a page no row of it touches is never faulted in (VoxelGrid's layers start as
-      // untouched zero memory).
+      // Each ray's toggles go into a per-thread scratch layer (cache-resident); then each marked row becomes its
+      // inside voxels by a prefix XOR, stored into the grid if it holds any. The grid's memory is only ever written,
+      // and only where a row holds voxels, so a page no row of it touches is never faulted in (VoxelGrid's layers
+      // start as untouched zero memory).
       struct FillScratch {
         std::vector<uint64_t> layer;
-        std::vector<int32_t> rows;  // rows of `layer` holding a run
+        std::vector<uint8_t> marked;  // rows of `layer` holding a toggle (by padded row)
       };
       std::vector<FillScratch> fill(static_cast<size_t>(threads));
+      const std::vector<uint64_t> valid = validRowBits(wpr, dims.nx);
       const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t z, const auto& crossings) {
         FillScratch& f = fill[size_t(t)];
-        if (f.layer.empty()) f.layer.assign(size_t(grid.wordsPerLayer()), 0);
-        fillRowAlongX(dims.ny, dims.nx, crossings, rule, scratch[size_t(t)], [&](int32_t y, int64_t x0, int64_t x1) {
-          if (std::max<int64_t>(x0, 0) >= std::min<int64_t>(x1, dims.nx)) return;  // empty: write nothing
-          uint64_t* row = f.layer.data() + (int64_t(y) + 1) * wpr;
-          if (f.rows.empty() || f.rows.back() != y) f.rows.push_back(y);  // runs come row by row, rows ascending
-          fillRowBits(row, dims.nx, x0, x1);
-        });
-        if (f.rows.empty()) return;
-        uint64_t* layer = grid.mutableLayerWords(z);  // only this thread writes layer z
-        for (const int32_t y : f.rows) {
-          const int64_t at = (int64_t(y) + 1) * wpr;
-          std::copy_n(f.layer.data() + at, wpr, layer + at);
-          std::fill_n(f.layer.data() + at, wpr, 0);
+        if (f.layer.empty()) {
+          f.layer.assign(size_t(grid.wordsPerLayer()), 0);
+          f.marked.assign(size_t(dims.ny) + 2, 0);
         }
-        f.rows.clear();
+        PassScratch& ps = scratch[size_t(t)];
+        markRowAlongX(dims.ny, dims.nx, crossings, rule, ps, f.layer.data(), f.marked.data(), wpr);
+        const int64_t odd = fillToggledRows(f.layer.data(), f.marked.data(), dims.ny, wpr, valid, [&] {
+          return grid.mutableLayerWords(z);  // only this thread writes layer z
+        });
+        if (rule == Rule::kParity) ps.odd_rays += odd;
       });
       if (!ok) return failure();
       const PassStats stats = sumStats(scratch, caster);
@@ -642,56 +722,62 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       }
       result.grid = std::move(grid);
     } else {
-      // Rays along Z first: their crossings become per-layer toggle lists (collectTogglesAlongZ). Then, layer by
+      // Rays along Z first: their crossings become per-layer toggle lists (listTogglesAlongZ). Then, layer by
       // layer going up, the toggles along X and along Y into two cache-sized scratch layers and the parity along Z in
       // a running layer (the toggles of this layer XORed in); one pass over the layer's words (voteLayer) turns the
       // toggles into parities and writes the per-word majority of the three into the grid (layers allocated where a
       // word is filled), and the voxels where the axes disagree into a mask allocated where needed. Each slab of layers
       // starts from a snapshot of the running Z parity at its first layer. Peak: the grid, the mask, 4 bytes per
-      // crossing along Z, and a layer per slab.
+      // crossing along Z (8 while a slab's are being listed), and a layer per slab.
       VoxelGrid grid(dims, frame), mask(dims, frame);
       std::vector<int64_t> odd(3, 0);
       const int64_t wpr = grid.wordsPerRow(), wpl = grid.wordsPerLayer();
-      // toggles[t][z]: thread t's toggles of layer z.
-      std::vector<std::vector<std::vector<uint32_t>>> toggles(static_cast<size_t>(threads));
+      std::vector<ZToggles> toggles;  // per slab of rows of the Z pass
       {
-        for (auto& per_layer : toggles) per_layer.resize(size_t(dims.nz) + 1);
         const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongZ, threads);
-        const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t y, const auto& crossings) {
-          collectTogglesAlongZ(y, wpr, crossings, toggles[size_t(t)]);
+        const int32_t rows = caster.rows(), row_slab = slabRows(rows, threads);
+        toggles.resize(size_t((rows + row_slab - 1) / row_slab));
+        const bool ok = runSlabs(rows, threads, gate, out_of_memory, [&](int, int32_t r0, int32_t r1) {
+          CrossingList crossings;
+          std::vector<size_t> row_start{0};
+          RayCaster::RowSweep sweep(caster, r0);
+          for (int32_t r = r0; r < r1 && !gate.cancelled(); ++r) {
+            sweep.next(crossings);  // appends
+            row_start.push_back(crossings.size());
+            gate.advance(1);
+          }
+          listTogglesAlongZ(r0, crossings, row_start, dims.nz, wpr, toggles[size_t(r0 / row_slab)]);
         });
         if (!ok) return failure();
       }
-      auto applyLayerToggles = [&](int32_t z, uint64_t* layer) {
-        for (const auto& per_layer : toggles) applyToggles(per_layer[size_t(z)], layer);
-      };
-      // The running Z parity at the first layer of every slab of the layer pass.
+      // The running Z parity at the first layer of every slab of the layer pass: each slab's toggles XORed
+      // together (in parallel), then accumulated over the slabs.
       const int32_t slab = slabRows(dims.nz, threads);
-      std::vector<std::vector<uint64_t>> snapshots(size_t((dims.nz + slab - 1) / slab));
+      const int32_t slabs = (dims.nz + slab - 1) / slab;
+      std::vector<std::vector<uint64_t>> snapshots(static_cast<size_t>(slabs));
       {
-        std::vector<uint64_t> running(static_cast<size_t>(wpl), 0);
-        for (size_t k = 0; k < snapshots.size(); ++k) {
-          snapshots[k] = running;
-          for (int32_t z = int32_t(k) * slab; z < std::min(dims.nz, int32_t(k + 1) * slab); ++z) {
-            applyLayerToggles(z, running.data());
+        std::vector<uint64_t> last(static_cast<size_t>(wpl), 0);  // the last slab's toggles and those past it
+        forLayers(slabs, threads, [&](int, int32_t k) {
+          std::vector<uint64_t>& sum = k + 1 < slabs ? snapshots[size_t(k) + 1] : last;
+          sum.assign(size_t(wpl), 0);
+          for (int32_t z = k * slab; z < std::min(dims.nz, (k + 1) * slab); ++z) {
+            applyTogglesAlongZ(toggles, z, sum.data());
           }
+          if (k + 1 == slabs) applyTogglesAlongZ(toggles, dims.nz, sum.data());
+        });
+        snapshots[0].assign(size_t(wpl), 0);
+        for (int32_t k = 2; k < slabs; ++k) {
+          for (int64_t w = 0; w < wpl; ++w) snapshots[size_t(k)][size_t(w)] ^= snapshots[size_t(k) - 1][size_t(w)];
         }
-        // With the crossings past every centre, the running layer holds each ray's total parity.
-        applyLayerToggles(dims.nz, running.data());
-        for (const uint64_t w : running) odd[2] += popcount64(w);
+        // The running layer past the last crossings holds each ray's total parity.
+        for (int64_t w = 0; w < wpl; ++w)
+          odd[2] += popcount64(snapshots[size_t(slabs) - 1][size_t(w)] ^ last[size_t(w)]);
       }
       std::vector<VoteCounts> counts(static_cast<size_t>(threads));
       {
         const RayCaster along_x(mesh, plan.placement, voxelize_detail::kRaysAlongX, threads);
         const RayCaster along_y(mesh, plan.placement, voxelize_detail::kRaysAlongY, threads);
-        // Bits 0..nx - 1 of a row (padded bits 1..nx) in each of its words.
-        std::vector<uint64_t> valid(static_cast<size_t>(wpr), 0);
-        for (int64_t w = 0; w < wpr; ++w) {
-          for (int b = 0; b < 64; ++b) {
-            const int64_t xp = w * 64 + b;
-            if (xp >= 1 && xp <= dims.nx) valid[size_t(w)] |= uint64_t(1) << b;
-          }
-        }
+        const std::vector<uint64_t> valid = validRowBits(wpr, dims.nx);
         const bool ok = runSlabs(dims.nz, threads, gate, out_of_memory, [&](int t, int32_t z0, int32_t z1) {
           CrossingList cx, cy;
           VoteScratch scratch(wpl, wpr, dims.ny);
@@ -704,7 +790,7 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
             sweep_y.next(cy);
             toggleAlongX(scratch, wpr, cx);
             toggleAlongY(scratch, wpr, cy);
-            applyLayerToggles(z, bz.data());
+            applyTogglesAlongZ(toggles, z, bz.data());
             voteLayer(z, dims.ny, wpr, valid, scratch, bz.data(), grid, mask, counts[size_t(t)]);
             gate.advance(2);  // two rows of rays (X and Y) per layer
           }
