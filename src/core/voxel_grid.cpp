@@ -69,6 +69,29 @@ void VoxelGrid::set(int64_t x, int64_t y, int64_t z, bool filled) {
   }
 }
 
+namespace {
+
+// Sets voxels x0 <= x < x1 (clamped to [0, nx)) of one padded row laid out as in VoxelGrid (bit x + 1), with word
+// operations.
+void fillRowBits(uint64_t* row, int64_t nx, int64_t x0, int64_t x1) {
+  x0 = std::max<int64_t>(x0, 0);
+  x1 = std::min<int64_t>(x1, nx);
+  if (x0 >= x1) return;
+  const int64_t b0 = x0 + 1, b1 = x1 + 1;  // padded bits [b0, b1)
+  const int64_t w0 = b0 >> 6, w1 = (b1 - 1) >> 6;
+  const uint64_t first = ~uint64_t(0) << (b0 & 63);
+  const uint64_t last = ~uint64_t(0) >> (63 - ((b1 - 1) & 63));
+  if (w0 == w1) {
+    row[w0] |= first & last;
+    return;
+  }
+  row[w0] |= first;
+  for (int64_t w = w0 + 1; w < w1; ++w) row[w] = ~uint64_t(0);
+  row[w1] |= last;
+}
+
+}  // namespace
+
 void VoxelGrid::fillRun(int32_t y, int32_t z, int64_t x0, int64_t x1) {
   if (std::max<int64_t>(x0, 0) >= std::min<int64_t>(x1, dims_.nx)) return;  // nothing to fill: do not allocate
   fillRowBits(mutableRowWords(y, z), dims_.nx, x0, x1);

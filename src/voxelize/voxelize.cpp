@@ -184,13 +184,13 @@ bool castRows(const RayCaster& caster, int threads, ProgressGate& progress, bool
   });
 }
 
-// Calls f(thread, z) for every layer on `threads` threads.
+// Calls f(thread, i) for every i in [0, n) (layers, or slabs of them) on `threads` threads.
 template <class F>
-void forLayers(int32_t nz, int threads, F&& f) {
-  threads = std::clamp(threads, 1, std::max(1, int(nz)));
+void forLayers(int32_t n, int threads, F&& f) {
+  threads = std::clamp(threads, 1, std::max(1, int(n)));
   std::atomic<int32_t> next{0};
   auto worker = [&](int t) {
-    for (int32_t z; (z = next.fetch_add(1, std::memory_order_relaxed)) < nz;) f(t, z);
+    for (int32_t i; (i = next.fetch_add(1, std::memory_order_relaxed)) < n;) f(t, i);
   };
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t) pool.emplace_back(worker, t);
@@ -233,6 +233,15 @@ inline uint64_t prefixXor(uint64_t x) {
   x ^= x << 16;
   x ^= x << 32;
   return x;
+}
+
+// One word of a parity along a row of toggles: bit i is the parity of the toggles up to bit i of this word, given
+// `carry` (all ones where the parity before the word is odd), which it updates. Most words hold no toggle.
+inline uint64_t parityWord(uint64_t toggles, uint64_t& carry) {
+  if (toggles == 0) return carry;
+  const uint64_t a = carry ^ prefixXor(toggles);
+  carry = uint64_t(0) - (a >> 63);
+  return a;
 }
 
 // Rays along X, row = layer z (parity and nonzero mode): marks, for each ray y, the voxels x where being inside
@@ -324,14 +333,9 @@ int64_t fillToggledRows(uint64_t* layer, uint8_t* marked, int32_t ny, int64_t wp
     if (marked[yp] == 0) continue;
     marked[yp] = 0;
     uint64_t* const row = layer + yp * wpr;
-    uint64_t carry = 0, any = 0;  // carry: all ones where the parity so far is odd
+    uint64_t carry = 0, any = 0;
     for (int64_t w = 0; w < wpr; ++w) {
-      uint64_t a = carry;
-      if (const uint64_t t = row[w]; t != 0) {
-        a ^= prefixXor(t);
-        carry = uint64_t(0) - (a >> 63);
-      }
-      row[w] = a & valid_bits[w];
+      row[w] = parityWord(row[w], carry) & valid_bits[w];
       any |= row[w];
     }
     odd += int64_t(carry & 1);
@@ -423,15 +427,11 @@ void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& 
       if (z_any == 0) continue;  // all three parities are zero on this row
     }
     x_rows[yp] = 0;
-    uint64_t carry = 0;  // all ones where the X parity so far is odd
+    uint64_t carry = 0;  // the X parity
     for (int64_t w = 0; w < wpr; ++w) {
-      uint64_t a = carry;
-      if (const uint64_t t = tx_row[w]; t != 0) {
-        a ^= prefixXor(t);
-        carry = uint64_t(0) - (a >> 63);
-        tx_row[w] = 0;
-      }
-      a &= valid_bits[w];
+      const uint64_t t = tx_row[w];
+      if (t != 0) tx_row[w] = 0;  // leave the scratch zeroed, storing only where there was a toggle
+      const uint64_t a = parityWord(t, carry) & valid_bits[w];
       const uint64_t b = y_run[w], zz = z_row[w];
       const uint64_t r = (a & b) | (zz & (a | b));
       if (r != 0) {

@@ -14,7 +14,6 @@
 //
 // Thread safety: const member functions may be called concurrently. Mutating different layers (different z) of
 // one grid from different threads is allowed (the voxelizer does it); mutating the same layer is not.
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -161,25 +160,6 @@ class VoxelGrid {
   std::shared_ptr<Layer> zero_layer_;
   std::vector<std::shared_ptr<Layer>> layers_;  // nz + 2 entries, padding layers first and last
 };
-
-// Sets voxels x0 <= x < x1 (clamped to [0, nx)) of one padded row laid out as in VoxelGrid (bit x + 1), with word
-// operations. For callers that fill scratch rows of the same layout; VoxelGrid::fillRun uses it.
-inline void fillRowBits(uint64_t* row, int64_t nx, int64_t x0, int64_t x1) {
-  x0 = std::max<int64_t>(x0, 0);
-  x1 = std::min<int64_t>(x1, nx);
-  if (x0 >= x1) return;
-  const int64_t b0 = x0 + 1, b1 = x1 + 1;  // padded bits [b0, b1)
-  const int64_t w0 = b0 >> 6, w1 = (b1 - 1) >> 6;
-  const uint64_t first = ~uint64_t(0) << (b0 & 63);
-  const uint64_t last = ~uint64_t(0) >> (63 - ((b1 - 1) & 63));
-  if (w0 == w1) {
-    row[w0] |= first & last;
-    return;
-  }
-  row[w0] |= first;
-  for (int64_t w = w0 + 1; w < w1; ++w) row[w] = ~uint64_t(0);
-  row[w1] |= last;
-}
 
 // Memory a grid of these dims needs with every layer allocated, in bytes (for refusing before allocating).
 uint64_t estimateGridBytes(const Dims& dims);
