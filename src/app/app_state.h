@@ -250,7 +250,12 @@ struct AppState {
 
   // Background work.
   Job<LoadedFile> load_job;
-  Job<VoxelizeResult> voxelize_job;
+  // The result, and its disputed voxels expanded into a grid for the overlay renderer (on the job's thread).
+  struct Voxelized {
+    VoxelizeResult result;
+    std::shared_ptr<const VoxelGrid> disputed;
+  };
+  Job<Voxelized> voxelize_job;
   VoxelizeParams voxelize_job_params;  // the params of the running voxelization
   double job_started = 0.0;
   AsyncValue<uint64_t, std::shared_ptr<const DepthMap>> depth;  // keyed by base_id

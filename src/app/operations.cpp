@@ -120,7 +120,8 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
   state.voxelize_after_load = false;
 }
 
-void applyVoxelized(AppState& state, VoxelizeResult result, const VoxelizeParams& params, double seconds) {
+void applyVoxelized(AppState& state, AppState::Voxelized voxelized, const VoxelizeParams& params, double seconds) {
+  VoxelizeResult& result = voxelized.result;
   auto origin = std::make_shared<ModelOrigin>();
   origin->mode_used = fillModeName(result.mode_used);
   origin->mode_reason = result.mode_reason;
@@ -129,7 +130,7 @@ void applyVoxelized(AppState& state, VoxelizeResult result, const VoxelizeParams
   origin->load_s = state.doc.mesh ? state.doc.mesh->load_s : 0.0;
   origin->warnings = result.warnings;
   origin->disputed_count = result.disputed_count;
-  if (result.disputed) origin->disputed = std::make_shared<const VoxelGrid>(std::move(*result.disputed));
+  origin->disputed = std::move(voxelized.disputed);
   const std::string res_text =
       params.voxel_size > 0 ? "h=" + std::to_string(params.voxel_size) : "R=" + std::to_string(params.resolution);
   origin->what = "voxelized at " + res_text + " (" + origin->mode_used + ")";
@@ -459,8 +460,15 @@ void startVoxelize(AppState& state, const VoxelizeParams& params) {
   state.job_started = nowSeconds();
   auto mesh = state.doc.mesh;
   state.voxelize_job.start("Voxelizing " + mesh->path.filename().string(),
-                           [mesh, params](const ProgressFn& progress) -> Result<VoxelizeResult> {
-                             return voxelizeSolid(mesh->mesh, params, progress, &mesh->topology);
+                           [mesh, params](const ProgressFn& progress) -> Result<AppState::Voxelized> {
+                             auto r = voxelizeSolid(mesh->mesh, params, progress, &mesh->topology);
+                             if (!r) return r.error();
+                             std::shared_ptr<const VoxelGrid> disputed;
+                             if (r->disputed) {
+                               disputed = std::make_shared<const VoxelGrid>(r->disputed->toGrid());
+                               r->disputed.reset();
+                             }
+                             return AppState::Voxelized{std::move(r).value(), std::move(disputed)};
                            });
 }
 

@@ -52,7 +52,7 @@ int runVoxelize(const VoxelizeOptions& o) {
   if (!o.disputed_out.empty()) {
     if (!result->disputed) {
       out.warn("no disputed-voxel mask: only --mode vote (or auto on a broken mesh) produces one");
-    } else if (auto s = io::saveVoxelFile(*result->disputed, o.disputed_out); !s) {
+    } else if (auto s = io::saveVoxelFile(result->disputed->toGrid(), o.disputed_out); !s) {
       return out.fail(s.error());
     }
   }

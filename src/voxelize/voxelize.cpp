@@ -86,9 +86,12 @@ std::string dimsText(const Dims& d) {
   return std::to_string(d.nx) + " x " + std::to_string(d.ny) + " x " + std::to_string(d.nz);
 }
 
-// Grids alive at the peak: vote mode holds the Z parity grid (which becomes the result) and the disputed-voxel mask
-// (as large as a grid in the worst case); the X and Y parities only ever exist one layer at a time.
-int gridsFor(FillMode m) { return m == FillMode::kVote || m == FillMode::kAuto ? 2 : 1; }
+// Bytes of the results alive at the peak: the grid, and in vote mode the disputed voxels, at most a grid's words and a
+// word per row (the parities along X and Y only ever exist one layer at a time, along Z as toggle lists).
+bool mayVote(FillMode m) { return m == FillMode::kVote || m == FillMode::kAuto; }
+uint64_t estimateResultBytes(const Dims& dims, FillMode m) {
+  return estimateGridBytes(dims) + (mayVote(m) ? SparseVoxels::maxBytes(dims) : 0);
+}
 
 // Serialises progress callbacks from the workers and rate-limits them to about kSteps calls in total.
 class ProgressGate {
@@ -353,12 +356,14 @@ struct VoteScratch {
   std::vector<uint64_t> tx, ty;         // toggles along X and along Y, one layer in the grid's layout
   std::vector<uint8_t> x_rows, y_rows;  // which rows of tx and ty hold a toggle (by padded row)
   std::vector<uint64_t> y_run;          // the running Y parity, one row
+  std::vector<uint64_t> d_row;          // the disputed voxels of the current row
   VoteScratch(int64_t wpl, int64_t wpr, int32_t ny)
       : tx(size_t(wpl), 0),
         ty(size_t(wpl), 0),
         x_rows(size_t(ny) + 2, 0),
         y_rows(size_t(ny) + 2, 0),
-        y_run(size_t(wpr), 0) {}
+        y_run(size_t(wpr), 0),
+        d_row(size_t(wpr), 0) {}
 };
 
 // Rays along X and Y in vote mode, row = layer z: each crossing toggles the bit of the first voxel past it in a
@@ -390,13 +395,14 @@ struct VoteCounts {
 // One layer of vote mode, in one pass over its words: s.tx and s.ty hold the layer's toggles along X and Y
 // (toggleAlongX/Y), bz the parity along Z. Row by row, the X parity is the prefix XOR of tx's row (carried from
 // word to word), the Y parity a running row that each row of ty is XORed into; the majority of the three goes to
-// layer z of `grid`, the voxels where they differ to layer z of `mask` (each allocated at its first nonzero word).
+// layer z of `grid` (allocated at its first nonzero word), the voxels where they differ to `disputed`, a row at a
+// time.
 // Rows where all three parities are zero are skipped. `valid` masks each word of a row to the voxels 0..nx - 1.
 // Leaves the scratch zeroed for the next layer.
 void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& valid, VoteScratch& s,
-               const uint64_t* bz, VoxelGrid& grid, VoxelGrid& mask, VoteCounts& counts) {
+               const uint64_t* bz, VoxelGrid& grid, SparseVoxels::Chunk& disputed_rows, VoteCounts& counts) {
   uint64_t* c = nullptr;
-  uint64_t* m = nullptr;
+  uint64_t* const d_row = s.d_row.data();
   uint64_t* const y_run = s.y_run.data();
   const uint64_t* const valid_bits = valid.data();
   uint8_t* const x_rows = s.x_rows.data();
@@ -427,7 +433,8 @@ void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& 
       if (z_any == 0) continue;  // all three parities are zero on this row
     }
     x_rows[yp] = 0;
-    uint64_t carry = 0;  // the X parity
+    uint64_t carry = 0;                  // the X parity
+    int64_t d_first = wpr, d_last = -1;  // words of the row holding a disputed voxel
     for (int64_t w = 0; w < wpr; ++w) {
       const uint64_t t = tx_row[w];
       if (t != 0) tx_row[w] = 0;  // leave the scratch zeroed, storing only where there was a toggle
@@ -439,12 +446,14 @@ void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& 
         c[yp * wpr + w] = r;
       }
       const uint64_t d = (a ^ b) | (a ^ zz);
+      d_row[w] = d;
       if (d != 0) {
-        if (!m) m = mask.mutableLayerWords(z);
-        m[yp * wpr + w] = d;
+        d_first = std::min(d_first, w);
+        d_last = w;
         disputed += popcount64(d);
       }
     }
+    if (d_last >= 0) disputed_rows.addRow(int32_t(yp - 1), z, d_first, d_last - d_first + 1, d_row + d_first);
     odd_x += int64_t(carry & 1);
   }
   // Row ny + 1: the crossings past every centre along Y. The running row is then each ray's total parity.
@@ -554,7 +563,7 @@ Result<VoxelizePlan> planVoxelization(const Box3d& bounds, const VoxelizeParams&
   if (!placement) return placement.error();
   VoxelizePlan plan;
   plan.placement = std::move(placement).value();
-  plan.bytes = estimateGridBytes(plan.placement.dims) * uint64_t(gridsFor(params.mode));
+  plan.bytes = estimateResultBytes(plan.placement.dims, params.mode);
   if (params.memory_limit_bytes > 0) {
     plan.limit_bytes = params.memory_limit_bytes;
   } else {
@@ -639,12 +648,14 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
   const bool vote = result.mode_used == FillMode::kVote;
 
   // Refuse before allocating anything large.
-  const uint64_t grid_bytes = estimateGridBytes(dims);
-  const uint64_t need = grid_bytes * uint64_t(gridsFor(result.mode_used));
+  const uint64_t need = estimateResultBytes(dims, result.mode_used);
   if (need > plan.limit_bytes) {
     std::string msg = "a " + dimsText(dims) + " grid (resolution " + std::to_string(plan.placement.resolution) +
                       ") needs about " + formatBytes(need);
-    if (vote) msg += " (two grids of " + formatBytes(grid_bytes) + " in vote mode: the voxels and the disputed mask)";
+    if (vote) {
+      msg += " in vote mode (" + formatBytes(estimateGridBytes(dims)) + " for the voxels, up to " +
+             formatBytes(SparseVoxels::maxBytes(dims)) + " for the disputed voxels)";
+    }
     msg += ", more than the memory limit of " + formatBytes(plan.limit_bytes);
     msg += params.memory_limit_bytes > 0 ? " (as set)" : " (80% of physical memory)";
     msg += "; use a lower resolution";
@@ -726,10 +737,11 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       // layer going up, the toggles along X and along Y into two cache-sized scratch layers and the parity along Z in
       // a running layer (the toggles of this layer XORed in); one pass over the layer's words (voteLayer) turns the
       // toggles into parities and writes the per-word majority of the three into the grid (layers allocated where a
-      // word is filled), and the voxels where the axes disagree into a mask allocated where needed. Each slab of layers
-      // starts from a snapshot of the running Z parity at its first layer. Peak: the grid, the mask, 4 bytes per
-      // crossing along Z (8 while a slab's are being listed), and a layer per slab.
-      VoxelGrid grid(dims, frame), mask(dims, frame);
+      // word is filled), and the rows of voxels where the axes disagree into the slab's chunk of the disputed set (a
+      // SparseVoxels: they are usually few words of many rows, which as a grid would fault in a page every few words).
+      // Each slab of layers starts from a snapshot of the running Z parity at its first layer. Peak: the grid, the
+      // disputed rows, 4 bytes per crossing along Z (8 while a slab's are being listed), and a layer per slab.
+      VoxelGrid grid(dims, frame);
       std::vector<int64_t> odd(3, 0);
       const int64_t wpr = grid.wordsPerRow(), wpl = grid.wordsPerLayer();
       std::vector<ZToggles> toggles;  // per slab of rows of the Z pass
@@ -774,6 +786,7 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
           odd[2] += popcount64(snapshots[size_t(slabs) - 1][size_t(w)] ^ last[size_t(w)]);
       }
       std::vector<VoteCounts> counts(static_cast<size_t>(threads));
+      std::vector<SparseVoxels::Chunk> disputed(static_cast<size_t>(slabs));  // per slab of the layer pass
       {
         const RayCaster along_x(mesh, plan.placement, voxelize_detail::kRaysAlongX, threads);
         const RayCaster along_y(mesh, plan.placement, voxelize_detail::kRaysAlongY, threads);
@@ -791,7 +804,7 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
             toggleAlongX(scratch, wpr, cx);
             toggleAlongY(scratch, wpr, cy);
             applyTogglesAlongZ(toggles, z, bz.data());
-            voteLayer(z, dims.ny, wpr, valid, scratch, bz.data(), grid, mask, counts[size_t(t)]);
+            voteLayer(z, dims.ny, wpr, valid, scratch, bz.data(), grid, disputed[size_t(z0 / slab)], counts[size_t(t)]);
             gate.advance(2);  // two rows of rays (X and Y) per layer
           }
         });
@@ -818,7 +831,7 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
                                   " (filled by majority; see the disputed mask)");
       }
       result.grid = std::move(grid);
-      result.disputed = std::move(mask);
+      result.disputed = SparseVoxels(dims, frame, std::move(disputed));
     }
     if (params.remove_strays) result.strays_removed = removeStrayVoxels(result.grid, threads);
   } catch (const std::bad_alloc&) {

@@ -62,6 +62,26 @@ TEST_F(Cli, voxelizeReportsSpecKeysAndInfoAgrees) {
   EXPECT_EQ(i["dims"], json::array({10, 10, 10}));
 }
 
+// The box without its two triangles at x = 0: rays along X now cross only the face at x = 1, so every voxel is
+// outside along X and inside along Y and Z. The vote fills all 1000 voxels, each disputed, and --disputed writes
+// them as a grid of the same dims.
+TEST_F(Cli, voteOnAnOpenBoxWritesEveryDisputedVoxel) {
+  TriangleMesh open = test::unitCubeMesh();
+  std::erase_if(open.triangles, [](const Triangle& t) { return t.v[0].x == 0 && t.v[1].x == 0 && t.v[2].x == 0; });
+  ASSERT_EQ(open.triangles.size(), 10u);
+  ASSERT_TRUE(io::saveStlBinary(open, path("open.stl")).ok());
+  auto r = runVoxmod({"voxelize", path("open.stl"), "--res", "10", "-o", path("open.vxm"), "--disputed",
+                      path("disputed.vxm"), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = parse(r);
+  EXPECT_EQ(j["mode"], "vote");  // auto on an open mesh
+  EXPECT_EQ(j["filled"], 1000);
+  EXPECT_EQ(j["disputed_voxels"], 1000);
+  const json d = parse(runVoxmod({"info", path("disputed.vxm"), "--json"}));
+  EXPECT_EQ(d["dims"], json::array({10, 10, 10}));
+  EXPECT_EQ(d["filled"], 1000);
+}
+
 TEST_F(Cli, convertRoundTripsThroughBinvox) {
   ASSERT_EQ(runVoxmod({"voxelize", box_stl(), "--res", "12", "-o", path("a.vxm")}).exit_code, 0);
   ASSERT_EQ(runVoxmod({"convert", path("a.vxm"), path("b.binvox")}).exit_code, 0);

@@ -6,8 +6,9 @@
 //
 // Cost: O(T + R^2 + crossings) time for the rays plus writing the grid (word operations); vote mode casts three
 // ray families. Memory: the grid (estimateGridBytes, layers allocated only where the model is); in vote mode also
-// the disputed mask (up to a second grid) and 4 bytes per crossing along Z; plus 8 bytes per triangle for the ray
-// caster's row index (it reads vertices from the mesh, which must stay alive) and a few scratch layers per thread.
+// the disputed voxels (for each row holding any, its words from the first such voxel to the last and one more word)
+// and 4 bytes per crossing along Z; plus 8 bytes per triangle for the ray caster's row index (it reads vertices from
+// the mesh, which must stay alive) and a few scratch layers per thread.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -17,6 +18,7 @@
 #include "vox/core/mesh.h"
 #include "vox/core/progress.h"
 #include "vox/core/result.h"
+#include "vox/core/sparse_voxels.h"
 #include "vox/core/voxel_grid.h"
 
 namespace vox {
@@ -52,7 +54,9 @@ struct VoxelizeResult {
   // e.g. "mesh is closed (0 boundary edges, 0 non-manifold edges): using nonzero",
   // "mesh is not watertight (223 boundary edges, 0 non-manifold edges): using vote", "requested: parity"
   std::string mode_reason;
-  std::optional<VoxelGrid> disputed;  // vote mode: voxels on which the three axes did not all agree
+  // Vote mode: the voxels on which the three axes did not all agree (sparse: usually few words of a grid's rows;
+  // toGrid() for a grid of the result's dims).
+  std::optional<SparseVoxels> disputed;
   int64_t disputed_count = 0;
   int64_t strays_removed = 0;
   // E.g. a mesh that is not watertight used with parity/nonzero, degenerate triangles ignored, rays with an odd
@@ -63,8 +67,9 @@ struct VoxelizeResult {
 // Grid placement and memory estimate for these parameters, without voxelizing (the GUI shows it before starting).
 struct VoxelizePlan {
   GridPlacement placement;
-  // Estimated peak bytes for the grid(s): two grids in vote mode (the voxels and the disputed mask), and for kAuto
-  // too (its worst case: the plan does not see the mesh's topology; voxelizeSolid checks the mode it resolves to).
+  // Estimated peak bytes for the results: the grid, and in vote mode the disputed voxels at their largest
+  // (SparseVoxels::maxBytes), counted for kAuto too (its worst case: the plan does not see the mesh's topology;
+  // voxelizeSolid checks the mode it resolves to).
   uint64_t bytes = 0;
   uint64_t limit_bytes = 0;  // the limit in force
 };

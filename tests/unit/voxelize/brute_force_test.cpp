@@ -135,17 +135,23 @@ TEST(VoxelizeBruteForce, randomSoupsWithTiesMatchTheSpecEvaluatedNaively) {
       const VoxelGrid gx = bruteForce(mesh, r->grid, 0, 1, 2, false);
       const VoxelGrid gy = bruteForce(mesh, r->grid, 1, 0, 2, false);
       const VoxelGrid gz = bruteForce(mesh, r->grid, 2, 0, 1, false);
-      VoxelGrid expected(r->grid.dims(), r->grid.frame());
+      VoxelGrid expected(r->grid.dims(), r->grid.frame()), expected_disputed(r->grid.dims(), r->grid.frame());
       int64_t disputed = 0;
       for (int32_t z = 0; z < expected.nz(); ++z)
         for (int32_t y = 0; y < expected.ny(); ++y)
           for (int32_t x = 0; x < expected.nx(); ++x) {
             const int votes = gx.get(x, y, z) + gy.get(x, y, z) + gz.get(x, y, z);
             if (votes >= 2) expected.set(x, y, z);
-            disputed += votes == 1 || votes == 2;
+            if (votes == 1 || votes == 2) {
+              expected_disputed.set(x, y, z);
+              ++disputed;
+            }
           }
       ASSERT_EQ(test::mismatches(r->grid, expected), 0) << "round " << round << " vote";
       ASSERT_EQ(r->disputed_count, disputed) << "round " << round;
+      ASSERT_TRUE(r->disputed.has_value());
+      ASSERT_EQ(r->disputed->count(), disputed) << "round " << round;
+      ASSERT_EQ(test::mismatches(r->disputed->toGrid(), expected_disputed), 0) << "round " << round;
     }
   }
 }

@@ -91,10 +91,15 @@ TEST(VoxelizeTies, octahedronWithVerticesOnRaysFollowsTheSosRuleExactly) {
     disputed += votes == 1 || votes == 2;
     return votes >= 2;
   });
+  const VoxelGrid expected_disputed = test::gridFromPredicate(vote.grid, [&](const glm::dvec3& p) {
+    const int votes = (p.x < c.x) + (p.y < c.y) + (p.z < c.z);
+    return l1(p) == 4.0 && (votes == 1 || votes == 2);
+  });
   EXPECT_EQ(mismatches(vote.grid, expected), 0);
   EXPECT_EQ(vote.disputed_count, disputed);
   ASSERT_TRUE(vote.disputed.has_value());
-  EXPECT_EQ(vote.disputed->filledCount(), disputed);
+  EXPECT_EQ(vote.disputed->count(), disputed);
+  EXPECT_EQ(mismatches(vote.disputed->toGrid(), expected_disputed), 0);
 }
 
 // A prism along X over a diamond |y - 8.5| + |z - 8.5| <= 4: its slanted faces have normals with x = 0, and 16 rows
@@ -238,7 +243,8 @@ TEST(VoxelizeModes, meshWithHoleVotesAndReportsDisputedVoxels) {
       << vote.mode_reason;
   EXPECT_GT(vote.disputed_count, 0);
   ASSERT_TRUE(vote.disputed.has_value());
-  EXPECT_EQ(vote.disputed->filledCount(), vote.disputed_count);
+  EXPECT_EQ(vote.disputed->count(), vote.disputed_count);
+  EXPECT_EQ(vote.disputed->toGrid().filledCount(), vote.disputed_count);
   EXPECT_TRUE(hasWarning(vote, "odd number of crossings"));
   const VoxelizeResult parity = voxelize(sphere, 40, FillMode::kParity);
   EXPECT_TRUE(hasWarning(parity, "odd number of crossings"));
@@ -328,6 +334,10 @@ TEST(VoxelizeInput, resultIsIdenticalForAnyNumberOfThreads) {
       const VoxelizeResult many = voxelize(mesh, 57, mode, threads);
       EXPECT_EQ(mismatches(one.grid, many.grid), 0) << fillModeName(mode) << " threads " << threads;
       EXPECT_EQ(one.disputed_count, many.disputed_count);
+      if (mode == FillMode::kVote) {
+        ASSERT_TRUE(one.disputed && many.disputed);
+        EXPECT_EQ(mismatches(one.disputed->toGrid(), many.disputed->toGrid()), 0) << "threads " << threads;
+      }
       EXPECT_EQ(one.warnings, many.warnings);
     }
   }
@@ -404,11 +414,11 @@ TEST(VoxelizeControl, refusesGridsAboveTheMemoryLimitBeforeAllocating) {
   p.memory_limit_bytes = uint64_t(3) << 29;  // one 2048^3 grid (1 GiB) fits in 1.5 GiB, two do not
   auto vote = voxelizeSolid(mesh, p);
   ASSERT_FALSE(vote.ok());
-  EXPECT_NE(vote.error().message.find("two grids"), std::string::npos) << vote.error().message;
+  EXPECT_NE(vote.error().message.find("for the disputed voxels"), std::string::npos) << vote.error().message;
   // The plan says the same without voxelizing.
   auto plan = planVoxelization(mesh.bounds(), p);
   ASSERT_TRUE(plan.ok());
-  EXPECT_EQ(plan->bytes, 2 * estimateGridBytes(plan->placement.dims));
+  EXPECT_EQ(plan->bytes, estimateGridBytes(plan->placement.dims) + SparseVoxels::maxBytes(plan->placement.dims));
   EXPECT_EQ(plan->limit_bytes, p.memory_limit_bytes);
   p.memory_limit_bytes = 0;
   auto default_plan = planVoxelization(mesh.bounds(), p);
