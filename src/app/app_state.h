@@ -52,7 +52,8 @@ struct ModelOrigin {
   double voxelize_s = 0.0;
   double load_s = 0.0;
   std::vector<std::string> warnings;
-  std::shared_ptr<const VoxelGrid> disputed;  // vote mode: voxels on which the three axes disagreed
+  // Vote mode: voxels on which the three axes disagreed (sparse; expanded into a grid only while shown).
+  std::shared_ptr<const SparseVoxels> disputed;
   int64_t disputed_count = 0;
 };
 
@@ -250,12 +251,7 @@ struct AppState {
 
   // Background work.
   Job<LoadedFile> load_job;
-  // The result, and its disputed voxels expanded into a grid for the overlay renderer (on the job's thread).
-  struct Voxelized {
-    VoxelizeResult result;
-    std::shared_ptr<const VoxelGrid> disputed;
-  };
-  Job<Voxelized> voxelize_job;
+  Job<VoxelizeResult> voxelize_job;
   VoxelizeParams voxelize_job_params;  // the params of the running voxelization
   double job_started = 0.0;
   AsyncValue<uint64_t, std::shared_ptr<const DepthMap>> depth;  // keyed by base_id

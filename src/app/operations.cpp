@@ -120,8 +120,7 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
   state.voxelize_after_load = false;
 }
 
-void applyVoxelized(AppState& state, AppState::Voxelized voxelized, const VoxelizeParams& params, double seconds) {
-  VoxelizeResult& result = voxelized.result;
+void applyVoxelized(AppState& state, VoxelizeResult result, const VoxelizeParams& params, double seconds) {
   auto origin = std::make_shared<ModelOrigin>();
   origin->mode_used = fillModeName(result.mode_used);
   origin->mode_reason = result.mode_reason;
@@ -130,7 +129,7 @@ void applyVoxelized(AppState& state, AppState::Voxelized voxelized, const Voxeli
   origin->load_s = state.doc.mesh ? state.doc.mesh->load_s : 0.0;
   origin->warnings = result.warnings;
   origin->disputed_count = result.disputed_count;
-  origin->disputed = std::move(voxelized.disputed);
+  if (result.disputed) origin->disputed = std::make_shared<const SparseVoxels>(std::move(*result.disputed));
   const std::string res_text =
       params.voxel_size > 0 ? "h=" + std::to_string(params.voxel_size) : "R=" + std::to_string(params.resolution);
   origin->what = "voxelized at " + res_text + " (" + origin->mode_used + ")";
@@ -460,15 +459,8 @@ void startVoxelize(AppState& state, const VoxelizeParams& params) {
   state.job_started = nowSeconds();
   auto mesh = state.doc.mesh;
   state.voxelize_job.start("Voxelizing " + mesh->path.filename().string(),
-                           [mesh, params](const ProgressFn& progress) -> Result<AppState::Voxelized> {
-                             auto r = voxelizeSolid(mesh->mesh, params, progress, &mesh->topology);
-                             if (!r) return r.error();
-                             std::shared_ptr<const VoxelGrid> disputed;
-                             if (r->disputed) {
-                               disputed = std::make_shared<const VoxelGrid>(r->disputed->toGrid());
-                               r->disputed.reset();
-                             }
-                             return AppState::Voxelized{std::move(r).value(), std::move(disputed)};
+                           [mesh, params](const ProgressFn& progress) -> Result<VoxelizeResult> {
+                             return voxelizeSolid(mesh->mesh, params, progress, &mesh->topology);
                            });
 }
 

@@ -35,7 +35,8 @@ render::SectionAxis toRenderAxis(Axis a) {
 }
 
 // What the overlay renderer should hold: the core while the Skin panel is open, else the disputed voxels when asked
-// for. Returns 0 for nothing; otherwise a key that changes with the content.
+// for (both expanded into `scratch` when the key changes). Returns 0 for nothing; otherwise a key that changes with
+// the content.
 uint64_t overlayKey(const AppState& state, const VoxelGrid** grid_out, VoxelGrid& scratch) {
   *grid_out = nullptr;
   if (!state.doc.model) return 0;
@@ -49,8 +50,10 @@ uint64_t overlayKey(const AppState& state, const VoxelGrid** grid_out, VoxelGrid
     }
   }
   if (state.view.show_disputed && m.origin && m.origin->disputed && m.origin->disputed_count > 0) {
-    *grid_out = m.origin->disputed.get();
-    return m.base_id * 4 + 2;
+    const uint64_t key = m.base_id * 4 + 2;
+    if (key != state.viewport.overlay_key) scratch = m.origin->disputed->toGrid();
+    *grid_out = &scratch;
+    return key;
   }
   return 0;
 }

@@ -3,6 +3,9 @@
 // also mode, mode_reason, disputed_voxels, strays_removed, grid_bytes and peak_rss_bytes.
 #include <sys/resource.h>
 
+#include <new>
+#include <optional>
+
 #include <CLI/CLI.hpp>
 
 #include "cli/cmd_list.h"
@@ -52,8 +55,15 @@ int runVoxelize(const VoxelizeOptions& o) {
   if (!o.disputed_out.empty()) {
     if (!result->disputed) {
       out.warn("no disputed-voxel mask: only --mode vote (or auto on a broken mesh) produces one");
-    } else if (auto s = io::saveVoxelFile(result->disputed->toGrid(), o.disputed_out); !s) {
-      return out.fail(s.error());
+    } else {
+      std::optional<VoxelGrid> disputed;
+      try {
+        disputed = result->disputed->toGrid();
+      } catch (const std::bad_alloc&) {
+        return out.fail(Error{ErrorCode::kLimit, o.disputed_out + ": not enough memory for the grid of " +
+                                                     std::to_string(result->disputed_count) + " disputed voxels"});
+      }
+      if (auto s = io::saveVoxelFile(*disputed, o.disputed_out); !s) return out.fail(s.error());
     }
   }
   const double t_written = nowSeconds();

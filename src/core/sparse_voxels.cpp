@@ -60,6 +60,7 @@ size_t SparseVoxels::memoryBytes() const {
 }
 
 VoxelGrid SparseVoxels::toGrid() const {
+  if (dims_.count() == 0) return VoxelGrid();
   VoxelGrid grid(dims_, frame_);
   forEachRow([&](int32_t y, int32_t z, int64_t first, int64_t n, const uint64_t* words) {
     std::copy_n(words, n, grid.mutableRowWords(y, z) + first);

@@ -142,6 +142,11 @@ void VoxelGrid::releaseEmptyLayers() {
   }
 }
 
+void VoxelGrid::releaseLayer(int32_t z) {
+  assert(z >= 0 && z < dims_.nz);
+  layers_[size_t(z) + 1] = zero_layer_;
+}
+
 bool VoxelGrid::sharesLayerWith(const VoxelGrid& other, int32_t z) const {
   return layers_[size_t(z) + 1] == other.layers_[size_t(z) + 1];
 }

@@ -324,19 +324,29 @@ std::vector<uint64_t> validRowBits(int64_t wpr, int64_t nx) {
 
 // Turns the toggles of each marked row of `layer` (grid layout, rows 1..ny of wpr words), in place, into the voxels
 // with an odd number of toggles up to them (a prefix XOR along the row, carried from word to word), masked to the
-// row's voxels. Leaves `marked` zeroed. Returns how many marked rows had an odd number of toggles in all.
-int64_t fillToggledRows(uint64_t* layer, uint8_t* marked, int32_t ny, int64_t wpr, const std::vector<uint64_t>& valid) {
+// row's voxels. Leaves `marked` zeroed.
+struct FilledRows {
+  int64_t odd = 0;   // marked rows with an odd number of toggles in all
+  bool any = false;  // some voxel is inside
+};
+FilledRows fillToggledRows(uint64_t* layer, uint8_t* marked, int32_t ny, int64_t wpr,
+                           const std::vector<uint64_t>& valid) {
   const uint64_t* const valid_bits = valid.data();
-  int64_t odd = 0;
+  FilledRows f;
+  uint64_t any = 0;
   for (int64_t yp = 1; yp <= ny; ++yp) {
     if (marked[yp] == 0) continue;
     marked[yp] = 0;
     uint64_t* const row = layer + yp * wpr;
     uint64_t carry = 0;
-    for (int64_t w = 0; w < wpr; ++w) row[w] = parityWord(row[w], carry) & valid_bits[w];
-    odd += int64_t(carry & 1);
+    for (int64_t w = 0; w < wpr; ++w) {
+      row[w] = parityWord(row[w], carry) & valid_bits[w];
+      any |= row[w];
+    }
+    f.odd += int64_t(carry & 1);
   }
-  return odd;
+  f.any = any != 0;
+  return f;
 }
 
 // Per-thread scratch of vote mode's layer pass.
@@ -684,11 +694,12 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
       const RayCaster caster(mesh, plan.placement, voxelize_detail::kRaysAlongX, threads);
       std::vector<PassScratch> scratch(static_cast<size_t>(threads));
       const int64_t wpr = grid.wordsPerRow();
-      // Each ray's toggles go straight into the grid's layer (allocated for a row of rays with any crossing); then
-      // each marked row becomes its inside voxels by a prefix XOR in place. Only rows with a toggle are touched, so a
-      // page no such row lies in is never faulted in (VoxelGrid's layers start as untouched zero memory), and
-      // nothing is copied. (A toggle is a read-modify-write of the word: on cycloidal_assembly at R = 1000 it takes
-      // as many page faults as storing finished rows did, so a fresh page is not faulted twice.)
+      // Each ray's toggles go straight into the grid's layer (allocated for a row of rays with any crossing, given
+      // back if no voxel ends up inside); then each marked row becomes its inside voxels by a prefix XOR in place. Only
+      // rows with a toggle are touched, so a page no such row lies in is never faulted in (VoxelGrid's layers start as
+      // untouched zero memory), and nothing is copied. (A toggle is a read-modify-write of the word: on
+      // cycloidal_assembly at R = 1000 it takes as many page faults as storing finished rows did, so a fresh page is
+      // not faulted twice.)
       std::vector<std::vector<uint8_t>> marked(static_cast<size_t>(threads));  // rows holding a toggle (by padded row)
       const std::vector<uint64_t> valid = validRowBits(wpr, dims.nx);
       const bool ok = castRows(caster, threads, gate, out_of_memory, [&](int t, int32_t z, const auto& crossings) {
@@ -698,8 +709,11 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
         uint64_t* const layer = grid.mutableLayerWords(z);  // only this thread writes layer z
         PassScratch& ps = scratch[size_t(t)];
         markRowAlongX(dims.ny, dims.nx, crossings, rule, ps, layer, m.data(), wpr);
-        const int64_t odd = fillToggledRows(layer, m.data(), dims.ny, wpr, valid);
-        if (rule == Rule::kParity) ps.odd_rays += odd;
+        const FilledRows filled = fillToggledRows(layer, m.data(), dims.ny, wpr, valid);
+        // Crossings that leave no voxel inside (all past every centre, or a wall between two centres): the layer goes
+        // back to the shared zero layer, as if never allocated.
+        if (!filled.any) grid.releaseLayer(z);
+        if (rule == Rule::kParity) ps.odd_rays += filled.odd;
       });
       if (!ok) return failure();
       const PassStats stats = sumStats(scratch, caster);

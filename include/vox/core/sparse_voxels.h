@@ -19,8 +19,8 @@ namespace vox {
 
 class SparseVoxels {
  public:
-  // Rows appended by one thread.
-  class Chunk {
+  // Rows appended by one thread. Aligned to a cache line: the chunks of a vector are written by different threads.
+  class alignas(64) Chunk {
    public:
     // Adds row (y, z) (0 <= y < ny, 0 <= z < nz): `n` words starting at word `first` of the padded row, in the
     // grid's row layout, padding bits zero. Zero words at either end are trimmed; an all-zero row adds nothing.
@@ -61,7 +61,7 @@ class SparseVoxels {
   int64_t rows() const;
   // Bytes held (the chunks' storage and bookkeeping).
   size_t memoryBytes() const;
-  // A grid of the same dims and frame holding exactly these voxels.
+  // A grid of the same dims and frame holding exactly these voxels (an empty VoxelGrid for a default-constructed set).
   VoxelGrid toGrid() const;
   // Calls f(y, z, first, n, words) for every stored row: n words of the padded row from word `first`.
   template <class F>
@@ -79,9 +79,10 @@ class SparseVoxels {
       }
     }
   }
-  // The most bytes a set on a grid of these dims can take (every row stored whole: its header word and the words of
-  // a padded row, plus the ends of blocks a row did not fit; each chunk's small first blocks add up to less than one
-  // full block more), for refusing before allocating.
+  // About the most bytes a set on a grid of these dims takes, for refusing before allocating: every row stored whole
+  // (its header word and the words of a padded row) and the ends of full blocks a row did not fit. Each chunk's
+  // blocks smaller than a full one, and the unused end of its last block, add at most 128 KiB per chunk, which is
+  // not counted: those ends are never written, so never faulted in.
   static uint64_t maxBytes(const Dims& dims);
 
  private:

@@ -109,6 +109,8 @@ class VoxelGrid {
   int64_t allocatedLayers() const;
   // Return all-zero layers to the shared zero layer (after removal operations). O(allocated words).
   void releaseEmptyLayers();
+  // Return layer z (0 <= z < nz) to the shared zero layer, emptying it; its storage is freed unless a copy shares it.
+  void releaseLayer(int32_t z);
 
   // ---- Word-level access for bulk algorithms (surface extraction, voxelizer, I/O). ----
   int64_t wordsPerRow() const { return words_per_row_; }

@@ -8,7 +8,7 @@
 // ray families. Memory: the grid (estimateGridBytes, layers allocated only where the model is); in vote mode also
 // the disputed voxels (for each row holding any, its words from the first such voxel to the last and one more word)
 // and 4 bytes per crossing along Z; plus 8 bytes per triangle for the ray caster's row index (it reads vertices from
-// the mesh, which must stay alive) and a few scratch layers per thread.
+// the mesh, which must stay alive) and, in vote mode, a few scratch layers per thread.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -27,7 +27,7 @@ enum class FillMode {
   kAuto,     // nonzero for closed meshes, vote otherwise (the result says which and why)
   kParity,   // odd number of crossings along +X (the thesis)
   kNonzero,  // winding number along +X not zero: overlapping closed bodies become their union
-  kVote,     // for broken meshes: parity along X, Y and Z, majority per voxel; disagreements kept as a mask
+  kVote,     // for broken meshes: parity along X, Y and Z, majority per voxel; disagreements kept (the disputed set)
 };
 // Ties (a centre on the surface, a ray through an edge or vertex) follow SPEC section 1: the centre is displaced by
 // (eps, eps^3, eps^2) in (x, y, z). Vote mode's rays along Y and Z displace the centre the same way in their own

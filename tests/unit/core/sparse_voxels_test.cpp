@@ -88,6 +88,45 @@ TEST(SparseVoxels, emptyRowsAndSetsAddNothing) {
   EXPECT_EQ(grid.allocatedLayers(), 0);
 }
 
+// The header's 16-bit fields at their largest (y, z up to VoxelGrid::kMaxDim - 1, a 257-word row), rows longer than
+// the first small blocks, and many full blocks across several chunks.
+TEST(SparseVoxels, largestRowsAndManyBlocksDecodeExactly) {
+  const int32_t top = VoxelGrid::kMaxDim - 1;
+  const int64_t wpr = (int64_t(VoxelGrid::kMaxDim) + 2 + 63) / 64;  // 257
+  std::vector<uint64_t> row(static_cast<size_t>(wpr));
+  for (int64_t w = 0; w < wpr; ++w) row[size_t(w)] = 0x9E3779B97F4A7C15ull * uint64_t(w + 1);
+  row[0] &= ~uint64_t(1);                                                        // padding bit x = -1
+  row[size_t(wpr) - 1] &= (uint64_t(1) << ((VoxelGrid::kMaxDim + 1) & 63)) - 1;  // bits past x = kMaxDim - 1
+  int64_t expected_count = 0;
+  for (uint64_t w : row) expected_count += popcount64(w);
+  std::vector<SparseVoxels::Chunk> chunks(3);
+  int64_t rows_added = 0;
+  for (int32_t i = 0; i < 100; ++i) {  // 100 rows of 258 words: over three full blocks in each chunk
+    for (size_t c = 0; c < chunks.size(); ++c) {
+      chunks[c].addRow(top - i, top - int32_t(c), 0, wpr, row.data());
+      ++rows_added;
+    }
+  }
+  const Dims d{VoxelGrid::kMaxDim, VoxelGrid::kMaxDim, VoxelGrid::kMaxDim};
+  const SparseVoxels set(d, {}, std::move(chunks));
+  EXPECT_EQ(set.count(), expected_count * rows_added);
+  int64_t rows = 0;
+  set.forEachRow([&](int32_t y, int32_t z, int64_t first, int64_t n, const uint64_t* words) {
+    EXPECT_GE(y, top - 99);
+    EXPECT_LE(y, top);
+    EXPECT_GE(z, top - 2);
+    EXPECT_LE(z, top);
+    ASSERT_EQ(first, 0);
+    ASSERT_EQ(n, wpr);
+    for (int64_t w = 0; w < n; ++w) ASSERT_EQ(words[w], row[size_t(w)]) << "word " << w;
+    ++rows;
+  });
+  EXPECT_EQ(rows, rows_added);
+  // Written words plus what the blocks leave unused: under maxBytes for the rows stored, plus 128 KiB per chunk.
+  EXPECT_GE(set.memoryBytes(), size_t(rows_added * (wpr + 1)) * sizeof(uint64_t));
+  EXPECT_LE(set.memoryBytes(), size_t(rows_added * (wpr + 1)) * sizeof(uint64_t) * 33 / 31 + 3 * (size_t(128) << 10));
+}
+
 TEST(SparseVoxels, maxBytesBoundsAFullSet) {
   const Dims d{200, 9, 4};  // 4 words per row
   VoxelGrid full(d);

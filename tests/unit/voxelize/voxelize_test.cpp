@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "test_meshes.h"
+#include "vox/core/bits.h"
 
 namespace vox {
 namespace {
@@ -325,6 +326,37 @@ TEST(VoxelizeInput, degenerateTrianglesAreIgnoredWithAWarning) {
   EXPECT_EQ(mismatches(r.grid, clean.grid), 0);
 }
 
+// A plate thinner than a voxel, between two planes of centres, crosses rays without holding a centre: the layers it
+// alone spans get toggles but no voxel, and must not stay allocated (a layer without voxels is the shared zero
+// layer, which analyses, renderer and writers skip). The plate is in the upper half, the cube in the lower.
+TEST(VoxelizeInput, layersWithCrossingsButNoVoxelsAreNotAllocated) {
+  // A cube below, a one-voxel box in the top corner (so the grid spans z up to 3 at R = 30: h = 0.1), and between
+  // them a plate across x between the centres of columns 4 and 5.
+  const TriangleMesh solids = combined(test::boxMesh({0, 0, 0}, {1, 1, 1}), test::boxMesh({0.9, 0.9, 2.9}, {1, 1, 3}));
+  VoxelizeParams p;
+  p.resolution = 30;
+  const auto placement = planVoxelization(solids.bounds(), p);
+  ASSERT_TRUE(placement.ok());
+  const GridFrame& f = placement->placement.frame;
+  const double x4 = f.voxelCentre(4, 0, 0).x, x5 = f.voxelCentre(5, 0, 0).x;
+  const TriangleMesh scene =
+      combined(solids, test::boxMesh({x4 + 0.25 * (x5 - x4), 0.2, 2.2}, {x4 + 0.75 * (x5 - x4), 0.8, 2.8}));
+  ASSERT_EQ(scene.bounds().min, solids.bounds().min);  // the same grid
+  ASSERT_EQ(scene.bounds().max, solids.bounds().max);
+  for (FillMode mode : {FillMode::kParity, FillMode::kNonzero}) {
+    const VoxelizeResult r = voxelize(scene, 30, mode);
+    int64_t empty_but_crossed = 0;
+    for (int32_t z = 0; z < r.grid.nz(); ++z) {
+      int64_t filled = 0;
+      for (int32_t y = 0; y < r.grid.ny(); ++y) filled += popcountWords(r.grid.rowWords(y, z), r.grid.wordsPerRow());
+      EXPECT_EQ(r.grid.layerAllocated(z), filled > 0) << fillModeName(mode) << " layer " << z;
+      const double zc = f.voxelCentre(0, 0, z).z;
+      empty_but_crossed += filled == 0 && zc > 2.2 && zc < 2.8;
+    }
+    EXPECT_GT(empty_but_crossed, 0) << fillModeName(mode);  // the plate's layers hold no voxel
+  }
+}
+
 TEST(VoxelizeInput, resultIsIdenticalForAnyNumberOfThreads) {
   const TriangleMesh mesh =
       combined(test::icosphere({0, 0, 0}, 1.0, 3), test::torus({0.5, 0.2, 0.1}, 0.8, 0.3, 32, 16));
@@ -411,7 +443,8 @@ TEST(VoxelizeControl, refusesGridsAboveTheMemoryLimitBeforeAllocating) {
   EXPECT_NE(r.error().message.find("4096 x 4096 x 4096"), std::string::npos) << r.error().message;
   p.mode = FillMode::kVote;
   p.resolution = 2048;
-  p.memory_limit_bytes = uint64_t(3) << 29;  // one 2048^3 grid (1 GiB) fits in 1.5 GiB, two do not
+  // One 2048^3 grid (1 GiB) fits in 1.5 GiB; with the disputed set at its largest (about another GiB) it does not.
+  p.memory_limit_bytes = uint64_t(3) << 29;
   auto vote = voxelizeSolid(mesh, p);
   ASSERT_FALSE(vote.ok());
   EXPECT_NE(vote.error().message.find("for the disputed voxels"), std::string::npos) << vote.error().message;
