@@ -4,7 +4,6 @@
 #include <sys/resource.h>
 
 #include <new>
-#include <optional>
 
 #include <CLI/CLI.hpp>
 
@@ -56,14 +55,14 @@ int runVoxelize(const VoxelizeOptions& o) {
     if (!result->disputed) {
       out.warn("no disputed-voxel mask: only --mode vote (or auto on a broken mesh) produces one");
     } else {
-      std::optional<VoxelGrid> disputed;
+      VoxelGrid disputed;
       try {
         disputed = result->disputed->toGrid();
       } catch (const std::bad_alloc&) {
         return out.fail(Error{ErrorCode::kLimit, o.disputed_out + ": not enough memory for the grid of " +
                                                      std::to_string(result->disputed_count) + " disputed voxels"});
       }
-      if (auto s = io::saveVoxelFile(*disputed, o.disputed_out); !s) return out.fail(s.error());
+      if (auto s = io::saveVoxelFile(disputed, o.disputed_out); !s) return out.fail(s.error());
     }
   }
   const double t_written = nowSeconds();

@@ -387,7 +387,7 @@ void toggleAlongY(VoteScratch& s, int64_t wpr, const CrossingList& crossings) {
 }
 
 struct VoteCounts {
-  int64_t disputed = 0, odd_x = 0, odd_y = 0;
+  int64_t odd_x = 0, odd_y = 0;
 };
 
 // One layer of vote mode, in one pass over its words: s.tx and s.ty hold the layer's toggles along X and Y
@@ -409,7 +409,7 @@ void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& 
   uint64_t* const ty = s.ty.data();
   std::fill(s.y_run.begin(), s.y_run.end(), 0);
   bool y_any = false;  // some word of y_run is nonzero
-  int64_t disputed = 0, odd_x = 0;
+  int64_t odd_x = 0;
   for (int64_t yp = 1; yp <= ny; ++yp) {
     uint64_t* const tx_row = tx + yp * wpr;
     const uint64_t* z_row = bz + yp * wpr;
@@ -448,7 +448,6 @@ void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& 
       if (d != 0) {
         d_first = std::min(d_first, w);
         d_last = w;
-        disputed += popcount64(d);
       }
     }
     if (d_last >= 0) disputed_rows.addRow(int32_t(yp - 1), z, d_first, d_last - d_first + 1, d_row + d_first);
@@ -463,7 +462,6 @@ void voteLayer(int32_t z, int32_t ny, int64_t wpr, const std::vector<uint64_t>& 
     past[w] = 0;
   }
   s.y_rows[size_t(past_row)] = 0;
-  counts.disputed += disputed;
   counts.odd_x += odd_x;
   counts.odd_y += odd_y;
 }
@@ -806,8 +804,9 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
         });
         if (!ok) return failure();
       }
+      result.disputed = SparseVoxels(dims, frame, std::move(disputed));
+      result.disputed_count = result.disputed->count();
       for (const VoteCounts& c : counts) {
-        result.disputed_count += c.disputed;
         odd[0] += c.odd_x;
         odd[1] += c.odd_y;
       }
@@ -827,7 +826,6 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
                                   " (filled by majority; see the disputed mask)");
       }
       result.grid = std::move(grid);
-      result.disputed = SparseVoxels(dims, frame, std::move(disputed));
     }
     if (params.remove_strays) result.strays_removed = removeStrayVoxels(result.grid, threads);
   } catch (const std::bad_alloc&) {

@@ -1,9 +1,9 @@
 #pragma once
 // A sparse set of voxels on a grid's dims and frame, kept as the rows that hold any: for each such row, its words
 // from the first nonzero one to the last, in VoxelGrid's padded row layout (bit xp & 63 of word xp >> 6, xp = x + 1).
-// For sets that touch few words of few rows, such as vote mode's disputed voxels: a VoxelGrid holding them would
-// fault in a page (4 KiB, 32 rows of a 1000-voxel grid) for every few words, and the voxelizer would pay for pages
-// it barely uses. Here a row costs one header word plus its span, written one after another.
+// For sets that touch a few words of each of many rows, such as vote mode's disputed voxels: a VoxelGrid holding them
+// would fault in a page (4 KiB, 32 rows of a 1000-voxel grid) for every few words, and the voxelizer would pay for
+// pages it barely uses. Here a row costs one header word plus its span, written one after another.
 //
 // Built in chunks, each appended to by one thread (one per slab of layers, say) and then handed over; chunks may hold
 // rows in any order, and a set's rows must be distinct. toGrid() expands the set into a VoxelGrid for the renderer
