@@ -104,24 +104,31 @@ RayCaster::RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, R
   threads = int(std::clamp<int64_t>(threads, 1, std::max<int64_t>(1, nt / 16384)));
   std::vector<Rows> tri_rows(static_cast<size_t>(nt));
   std::vector<std::vector<size_t>> count(size_t(threads), std::vector<size_t>(rows, 0));
+  std::vector<std::vector<size_t>> ends(size_t(threads), std::vector<size_t>(rows + 1, 0));  // by one past last row
   forChunks(nt, threads, [&](int c, int64_t begin, int64_t end) {
     auto& mine = count[size_t(c)];
+    auto& mine_end = ends[size_t(c)];
     for (int64_t i = begin; i < end; ++i) {
       Tri t;
       if (!classify(size_t(i), t)) continue;
       tri_rows[size_t(i)] = Rows{t.row_lo, t.row_hi};
       ++mine[size_t(t.row_lo)];
+      ++mine_end[size_t(t.row_hi)];
     }
   });
   row_start_.assign(rows + 1, 0);
-  size_t total = 0;
+  active_.assign(rows, 0);
+  size_t total = 0, active = 0;
   for (size_t r = 0; r < rows; ++r) {
     row_start_[r] = total;
-    for (auto& mine : count) {
-      const size_t n = mine[r];
-      mine[r] = total;  // becomes the chunk's next slot in row r
+    for (size_t c = 0; c < count.size(); ++c) {
+      const size_t n = count[c][r];
+      count[c][r] = total;  // becomes the chunk's next slot in row r
       total += n;
+      active += n;
+      active -= ends[c][r];
     }
+    active_[r] = int32_t(active);
   }
   row_start_[rows] = total;
   entries_.resize(total);
@@ -156,8 +163,15 @@ bool RayCaster::classify(size_t i, Tri& t) const {
   return t.ray_lo < t.ray_hi;
 }
 
-RayCaster::RowSweep::RowSweep(const RayCaster& caster, int32_t row_begin) : caster_(caster), row_(row_begin) {
-  const size_t begin = caster.row_start_[size_t(std::clamp(row_begin, 0, caster.rows()))];
+RayCaster::RowSweep::RowSweep(const RayCaster& caster, int32_t row_begin, int32_t row_end)
+    : caster_(caster), row_(row_begin) {
+  // Exactly the most planes any of these rows holds: the vector never grows, so nothing is copied and no smaller
+  // blocks are left behind in the heap between the grid's layers.
+  const int32_t lo = std::clamp(row_begin, 0, caster.rows()), hi = std::clamp(row_end, lo, caster.rows());
+  int32_t most = 0;
+  for (int32_t r = lo; r < hi; ++r) most = std::max(most, caster.active_[size_t(r)]);
+  planes_.reserve(size_t(most));
+  const size_t begin = caster.row_start_[size_t(lo)];
   for (size_t e = 0; e < begin; ++e) {
     if (caster.entries_[e].row_hi > row_begin)
       planes_.emplace_back(caster.entries_[e].triangle, caster.entries_[e].row_hi, caster);

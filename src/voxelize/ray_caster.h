@@ -139,7 +139,9 @@ class RayCaster {
   // Setting up costs O(triangles starting below row_begin); each row then costs O(active triangles + crossings).
   class RowSweep {
    public:
-    RowSweep(const RayCaster& caster, int32_t row_begin);
+    // A sweep of rows [row_begin, row_end): its storage is sized for them (next() may go on past row_end, growing
+    // it).
+    RowSweep(const RayCaster& caster, int32_t row_begin, int32_t row_end);
     int32_t row() const { return row_; }
     // Appends the crossings of every ray of the current row (grouped by triangle, not sorted), then moves on to the
     // next row.
@@ -174,6 +176,7 @@ class RayCaster {
   std::vector<double> cu_, cv_, cw_;  // voxel centre coordinates along u, v, w (SPEC section 1, exactly so)
   std::vector<Entry> entries_;        // kept triangles, sorted by first row (then mesh order)
   std::vector<size_t> row_start_;     // entries_ of first row r: [row_start_[r], row_start_[r + 1])
+  std::vector<int32_t> active_;       // by row: the triangles whose rows include it (a sweep's planes there)
 };
 
 }  // namespace vox::voxelize_detail

@@ -177,7 +177,7 @@ template <class RowFn>
 bool castRows(const RayCaster& caster, int threads, ProgressGate& progress, bool& out_of_memory, RowFn&& row_fn) {
   return runSlabs(caster.rows(), threads, progress, out_of_memory, [&](int t, int32_t r0, int32_t r1) {
     CrossingList crossings;
-    RayCaster::RowSweep sweep(caster, r0);
+    RayCaster::RowSweep sweep(caster, r0, r1);
     for (int32_t r = r0; r < r1 && !progress.cancelled(); ++r) {
       crossings.clear();
       sweep.next(crossings);
@@ -746,7 +746,7 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
         const bool ok = runSlabs(rows, threads, gate, out_of_memory, [&](int, int32_t r0, int32_t r1) {
           CrossingList crossings;
           std::vector<size_t> row_start{0};
-          RayCaster::RowSweep sweep(caster, r0);
+          RayCaster::RowSweep sweep(caster, r0, r1);
           for (int32_t r = r0; r < r1 && !gate.cancelled(); ++r) {
             sweep.next(crossings);  // appends
             row_start.push_back(crossings.size());
@@ -789,7 +789,7 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
           CrossingList cx, cy;
           VoteScratch scratch(wpl, wpr, dims.ny);
           std::vector<uint64_t> bz = std::move(snapshots[size_t(z0 / slab)]);
-          RayCaster::RowSweep sweep_x(along_x, z0), sweep_y(along_y, z0);
+          RayCaster::RowSweep sweep_x(along_x, z0, z1), sweep_y(along_y, z0, z1);
           for (int32_t z = z0; z < z1 && !gate.cancelled(); ++z) {
             cx.clear();
             cy.clear();
