@@ -4,11 +4,12 @@
 // does (it calls the same operations), and the next command runs only when the previous one has finished: a
 // voxelization, a load or a peel waits for its worker; `screenshot` waits for the frame to be drawn.
 //
+// clang-format off
 //   open PATH                        open a mesh (.stl) or voxel file (.vxm, .binvox)
 //   voxelize R [MODE]                voxelize the open mesh, R voxels on the longest axis, MODE
-//   auto|parity|nonzero|vote section AXIS INDEX | section off show the section at voxel INDEX along x|y|z (and the
-//   Section panel) sweep AXIS [STEP]                move the section through every STEP-th index along AXIS, one per
-//   frame, and
+//                                    auto|parity|nonzero|vote
+//   section AXIS INDEX | section off show the section at voxel INDEX along x|y|z (and the Section panel)
+//   sweep AXIS [STEP]                move the section through every STEP-th index along AXIS, one per frame, and
 //                                    print the frame rate (the section-slider benchmark)
 //   peel N | peel core | peel back | peel reset
 //   xray AXIS MODE                   X-ray along x|y|z, MODE min|max|total (and the X-ray panel)
@@ -31,6 +32,7 @@
 //                                    stays up); any other outcome fails the script
 //   echo TEXT                        print TEXT to stdout
 //   quit                             close the window, discarding unsaved changes
+// clang-format on
 #include <filesystem>
 #include <string>
 #include <vector>
