@@ -139,8 +139,8 @@ class RayCaster {
   // Setting up costs O(triangles starting below row_begin); each row then costs O(active triangles + crossings).
   class RowSweep {
    public:
-    // A sweep of rows [row_begin, row_end): its storage is sized for them (next() may go on past row_end, growing
-    // it).
+    // A sweep meant for rows [row_begin, row_end): its storage is reserved for the most triangles any of them
+    // crosses, so it never grows there (next() past row_end still works, growing it as needed).
     RowSweep(const RayCaster& caster, int32_t row_begin, int32_t row_end);
     int32_t row() const { return row_; }
     // Appends the crossings of every ray of the current row (grouped by triangle, not sorted), then moves on to the

@@ -250,10 +250,10 @@ inline uint64_t parityWord(uint64_t toggles, uint64_t& carry) {
 // Rays along X, row = layer z (parity and nonzero mode): marks, for each ray y, the voxels x where being inside
 // changes, as toggled bits in `layer` (the grid's layout: bit x + 1 of row y + 1, x = the first voxel past the
 // crossing, 0..nx), and flags the row in `marked`; the voxels inside a ray are then those with an odd number of
-// toggles up to them, a prefix XOR along the row (fillToggledRows). Parity toggles at
-// every crossing, in any order. Nonzero needs each ray's crossings in order along it: the winding number from
-// -infinity changes at each, and a toggle goes where it changes between zero and nonzero. Toggles at the same
-// voxel cancel, so crossings with the same ray and first voxel may come in either order.
+// toggles up to them, a prefix XOR along the row (fillToggledRows). Parity toggles at every crossing, in any order.
+// Nonzero needs each ray's crossings in order along it: the winding number from -infinity changes at each, and a
+// toggle goes where it changes between zero and nonzero. Toggles at the same voxel cancel, so crossings with the
+// same ray and first voxel may come in either order.
 void markRowAlongX(int32_t ny, int32_t nx, const CrossingList& crossings, Rule rule, PassScratch& s, uint64_t* layer,
                    uint8_t* marked, int64_t wpr) {
   if (crossings.empty()) return;
