@@ -23,6 +23,9 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "voxelize/exact_predicates.h"
 #include "voxelize/parallel.h"
@@ -70,6 +73,17 @@ std::vector<double> centresAlong(const GridPlacement& placement, int axis) {
   return c;
 }
 
+// How far from an integer t = (value - c[0]) / h, in voxels, must lie for c[floor(t)] < value < c[floor(t) + 1] to
+// hold with room to spare for an error of the value (RayCaster::slack_u_). Each centre c[i] = fl(origin +
+// fl((i + 0.5) h)) lies within 2.01 u (|origin| + n h) of its exact value, so c[i] - (c[0] + i h) within twice that;
+// t computed as fl(fl(value - c[0]) * fl(1 / h)) is within 3.01 u |t| of (value - c[0]) / h, and the values asked
+// about lie within the grid, |t| < n. Doubled: the roundings of the slack itself are far inside that.
+double gridSlack(const std::vector<double>& c, double origin, double h, double inv_h) {
+  const double n = double(c.size());
+  const double centre_error = 4.02 * kUnitRoundoff * (std::abs(origin) + n * h);
+  return 2.0 * (centre_error * inv_h + 3.01 * kUnitRoundoff * n);
+}
+
 }  // namespace
 
 void CrossingList::grow(size_t needed) {
@@ -90,6 +104,8 @@ RayCaster::RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, R
   cu_ = centresAlong(placement, axes.u);
   cv_ = centresAlong(placement, axes.v);
   cw_ = centresAlong(placement, axes.w);
+  slack_u_ = gridSlack(cu_, origin_u_, placement.frame.voxel_size, inv_h_);
+  slack_v_ = gridSlack(cv_, origin_v_, placement.frame.voxel_size, inv_h_);
   static_assert(kMaxResolution < Crossing::kMaxRays && kMaxResolution < Crossing::kMaxLength);
   assert(cv_.size() < size_t(Crossing::kMaxRays) && cu_.size() < size_t(Crossing::kMaxLength));
   // Counting sort by first row, so a sweep activates triangles in order. Chunks of the input are contiguous and
@@ -255,29 +271,45 @@ void RayCaster::rowCrossings(const Plane& plane, int32_t row, CrossingList& out)
                                           : plane.high_v + (w - plane.high_w) * plane.high_slope;
   const double lo = std::min(v_long, v_short), hi = std::max(v_long, v_short);
   const double margin = plane.section_margin;
-  const double outer_lo = lo - margin, outer_hi = hi + margin, inner_lo = lo + margin, inner_hi = hi - margin;
-  // The first ray at or above outer_lo, and the first at or above inner_hi. Usually ceil((value - v0) / h),
-  // confirmed by the centres either side with one predictable branch; otherwise (a value exactly on a centre, or
-  // outside the grid) the general search, which compares with the stored centres.
   const int32_t nv = raysPerRow();
   const double v0 = cv_[0];
   const double* cv = cv_.data();
-  auto firstRayAtOrAbove = [&](double value) {
-    const double t = (value - v0) * inv_h_;
-    if (t > 0.0 && t < double(nv - 1)) {
-      const int32_t k = int32_t(t) + 1;
-      if (cv[k - 1] < value && cv[k] >= value) return k;
+  int32_t j = 0, j_end = 0;
+  // Usually both ends lie inside the grid's rays, each farther than the margin from every centre: in t = (v - v0) /
+  // h, farther than delta from an integer (see gridSlack). Then the crossed rays are those from the first centre
+  // above lo to the last below hi, counted from the integer parts.
+  const double t_lo = (lo - v0) * inv_h_, t_hi = (hi - v0) * inv_h_;
+  bool ends_clear = false;
+  if (t_lo > 0.0 && t_hi < double(nv - 1)) {  // false for NaN; with lo <= hi, both in (0, nv - 1)
+    const double delta = slack_v_ + 2.0 * margin * inv_h_;
+    const int32_t f_lo = int32_t(t_lo), f_hi = int32_t(t_hi);
+    const double fr_lo = t_lo - double(f_lo), fr_hi = t_hi - double(f_hi);
+    ends_clear = (fr_lo > delta) & (fr_lo < 1.0 - delta) & (fr_hi > delta) & (fr_hi < 1.0 - delta);
+    j = f_lo + 1;
+    j_end = std::max(j, f_hi + 1);
+  }
+  if (!ends_clear) {
+    // The first ray at or above outer_lo, and the first at or above inner_hi, by comparisons with the stored
+    // centres: usually ceil((value - v0) / h), confirmed by the centres either side with one predictable branch;
+    // otherwise (a value exactly on a centre, or outside the grid) the general search.
+    const double outer_lo = lo - margin, outer_hi = hi + margin, inner_lo = lo + margin, inner_hi = hi - margin;
+    auto firstRayAtOrAbove = [&](double value) {
+      const double t = (value - v0) * inv_h_;
+      if (t > 0.0 && t < double(nv - 1)) {
+        const int32_t k = int32_t(t) + 1;
+        if (cv[k - 1] < value && cv[k] >= value) return k;
+      }
+      return firstAtOrAbove(cv_, origin_v_, inv_h_, value);
+    };
+    j = firstRayAtOrAbove(outer_lo);
+    j_end = std::max(j, firstRayAtOrAbove(inner_hi));
+    // Usually no ray lies within the margin of either end: then rays [j, j_end) are exactly the crossed ones.
+    if ((j < nv && cv[j] <= inner_lo) || (j_end < nv && cv[j_end] <= outer_hi)) {
+      int32_t k_end = j_end;
+      while (k_end < nv && cv[k_end] <= outer_hi) ++k_end;
+      exactCrossings(plane, row, j, k_end, out);
+      return;
     }
-    return firstAtOrAbove(cv_, origin_v_, inv_h_, value);
-  };
-  const int32_t j = firstRayAtOrAbove(outer_lo);
-  const int32_t j_end = std::max(j, firstRayAtOrAbove(inner_hi));
-  // Usually no ray lies within the margin of either end: then rays [j, j_end) are exactly the crossed ones.
-  if ((j < nv && cv[j] <= inner_lo) || (j_end < nv && cv[j_end] <= outer_hi)) {
-    int32_t k_end = j_end;
-    while (k_end < nv && cv[k_end] <= outer_hi) ++k_end;
-    exactCrossings(plane, row, j, k_end, out);
-    return;
   }
   if (j_end <= j) return;
   Crossing* o = out.append(size_t(j_end - j));
@@ -289,24 +321,63 @@ void RayCaster::rowCrossings(const Plane& plane, int32_t row, CrossingList& out)
     placeCrossings(plane, row, j, j_end, o);
     return;
   }
-  // firstPast's usual case as straight-line code: the estimate, the centres either side of it, and a flag recording
-  // whether every crossing had centre i past it and centre i - 1 not, both by more than the margin. Rarely not so;
-  // then the run is placed again by firstPast. (A finite margin means n.u is clearly nonzero, so every estimate is
-  // finite.)
+  // firstPast's usual case as straight-line code, two rays at a time where SSE2 is there: the estimate x of each
+  // crossing and t = (x - u0) / h, so that centre floor(t) + 1 is the first past it whenever t's fractional part is
+  // farther than delta from 0 and from 1 (x is within the plane's margin of the crossing; see gridSlack); a flag
+  // records whether every crossing of the run was so. Rarely not; then the run is placed again by firstPast. (A finite
+  // margin means n.u is clearly nonzero, so every estimate is finite; it lies in [umin, umax], so t is far inside
+  // int32_t's range.)
   const double w_term = plane.n_w * (w - plane.a[2]);  // the part of the crossing's formula fixed by the row
   const double a_u = plane.a[0], a_v = plane.a[1], n_v = plane.n_v, inv_nu = plane.inv_nu;
-  const double umin = plane.umin, umax = plane.umax, pmargin = plane.margin;
+  const double umin = plane.umin, umax = plane.umax;
   const double u0 = cu_[0], inv_h = inv_h_;
+  const double delta = slack_u_ + 2.0 * plane.margin * inv_h, below_one = 1.0 - delta;
   const int32_t last = length() - 1;
-  const double* cu = cu_.data();
   bool clear = true;
+#if defined(__SSE2__)
+  const __m128d va_u = _mm_set1_pd(a_u), va_v = _mm_set1_pd(a_v), vn_v = _mm_set1_pd(n_v);
+  const __m128d vw_term = _mm_set1_pd(w_term), vinv_nu = _mm_set1_pd(inv_nu);
+  const __m128d vumin = _mm_set1_pd(umin), vumax = _mm_set1_pd(umax), vu0 = _mm_set1_pd(u0);
+  const __m128d vinv_h = _mm_set1_pd(inv_h), vdelta = _mm_set1_pd(delta), vbelow = _mm_set1_pd(below_one);
+  const __m128d vlast = _mm_set1_pd(double(last));
+  const __m128i one = _mm_set1_epi32(1);
+  // The crossings of the rays whose centres are the two lanes of v: their packed values in the two low lanes
+  // (`rays`: the rays' bits and the sign bit), and in `ok`, all ones in each lane whose placement is clear.
+  auto place = [&](__m128d v, __m128i rays, __m128d& ok) {
+    const __m128d q = _mm_mul_pd(_mm_add_pd(_mm_mul_pd(vn_v, _mm_sub_pd(v, va_v)), vw_term), vinv_nu);
+    const __m128d x = _mm_min_pd(_mm_max_pd(_mm_sub_pd(va_u, q), vumin), vumax);
+    const __m128d t = _mm_mul_pd(_mm_sub_pd(x, vu0), vinv_h);
+    const __m128i f = _mm_cvttpd_epi32(t);  // floor(t) where t >= 0; where not, fr < 0 and the test fails
+    const __m128d fr = _mm_sub_pd(t, _mm_cvtepi32_pd(f));
+    ok = _mm_and_pd(_mm_and_pd(_mm_cmpgt_pd(fr, vdelta), _mm_cmplt_pd(fr, vbelow)), _mm_cmplt_pd(t, vlast));
+    return _mm_or_si128(rays, _mm_slli_epi32(_mm_add_epi32(f, one), 1));
+  };
+  const uint32_t sign_bit = Crossing{0, 0, plane.sign}.packed();
+  __m128i rays = _mm_set_epi32(0, 0, int32_t(uint32_t(j + 1) << 17 | sign_bit), int32_t(uint32_t(j) << 17 | sign_bit));
+  const __m128i step = _mm_set1_epi32(2 << 17);
+  __m128d all_ok = _mm_castsi128_pd(_mm_set1_epi32(-1)), ok;
+  int32_t k = j;
+  for (; k + 2 <= j_end; k += 2) {
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(o + (k - j)), place(_mm_loadu_pd(cv + k), rays, ok));
+    all_ok = _mm_and_pd(all_ok, ok);
+    rays = _mm_add_epi32(rays, step);
+  }
+  clear = _mm_movemask_pd(all_ok) == 3;
+  if (k < j_end) {  // the last ray of an odd run, in lane 0 alone
+    const uint32_t packed = uint32_t(_mm_cvtsi128_si32(place(_mm_load_sd(cv + k), rays, ok)));
+    o[k - j] = Crossing::fromPacked(packed);
+    clear &= (_mm_movemask_pd(ok) & 1) != 0;
+  }
+#else
   for (int32_t k = j; k < j_end; ++k) {
     const double x = std::min(std::max(a_u - (n_v * (cv[k] - a_v) + w_term) * inv_nu, umin), umax);
-    const int32_t i = int32_t((x - u0) * inv_h) + 1;  // about ceil((x - u0) / h)
-    const int32_t ic = std::clamp(i, 1, last);
-    clear &= (i == ic) & (cu[ic] - x > pmargin) & (x - cu[ic - 1] > pmargin);
-    o[k - j] = Crossing{k, ic, plane.sign};
+    const double t = (x - u0) * inv_h;
+    const int32_t f = int32_t(t);  // floor(t) where t >= 0; where not, fr < 0 and the test fails
+    const double fr = t - double(f);
+    o[k - j] = Crossing{k, f + 1, plane.sign};
+    clear &= (fr > delta) & (fr < below_one) & (f < last);
   }
+#endif
   if (!clear) placeCrossings(plane, row, j, j_end, o);
 }
 

@@ -41,6 +41,11 @@ class Crossing {
   // Sign of the triangle normal's u component: -1 where an outward-oriented solid is entered.
   int32_t sign() const { return (bits_ & 1) != 0 ? 1 : -1; }
   uint32_t packed() const { return bits_; }
+  static Crossing fromPacked(uint32_t bits) {
+    Crossing c;
+    c.bits_ = bits;
+    return c;
+  }
 
  private:
   uint32_t bits_ = 0;
@@ -172,6 +177,9 @@ class RayCaster {
   const TriangleMesh& mesh_;
   RayAxes axes_;
   double inv_h_ = 1.0;
+  // In voxels, along u and v: how far from an integer t = (x - c[0]) / h must lie, beyond an estimate's error / h,
+  // for the centres c[floor(t)] and c[floor(t) + 1] to lie on either side of x (gridSlack in ray_caster.cpp).
+  double slack_u_ = 0.0, slack_v_ = 0.0;
   double origin_u_ = 0.0, origin_v_ = 0.0, origin_w_ = 0.0;
   std::vector<double> cu_, cv_, cw_;  // voxel centre coordinates along u, v, w (SPEC section 1, exactly so)
   std::vector<Entry> entries_;        // kept triangles, sorted by first row (then mesh order)

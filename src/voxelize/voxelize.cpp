@@ -205,10 +205,10 @@ enum class Rule { kParity, kNonzero };
 
 // Per-thread scratch and counters of a pass.
 struct PassScratch {
-  std::vector<int32_t> start;     // counting sort of crossings by ray
   std::vector<int32_t> by_first;  // counting sort of crossings by first voxel
   std::vector<Crossing> along;    // crossings sorted by first voxel
-  std::vector<Crossing> sorted;   // by ray, then by first voxel
+  std::vector<int32_t> winding;   // by ray: the winding number so far (zero between rows)
+  std::vector<int32_t> count;     // by ray: crossings so far (zero between rows)
   int64_t odd_rays = 0;           // rays with an odd number of crossings
   int64_t unbalanced_rays = 0;    // rays whose signed crossings do not sum to zero
 };
@@ -269,45 +269,67 @@ void markRowAlongX(int32_t ny, int32_t nx, const CrossingList& crossings, Rule r
     }
     return;  // odd rays: the parity past the row's last voxel (fillToggledRows)
   }
-  // Sorted by ray, then along the ray: two stable counting sorts (by first voxel, then by ray), O(nx + ny +
-  // crossings) without a data-dependent branch. (An insertion sort per ray mispredicts on nearly every step where
-  // rays cross many bodies.)
+  // All rays at once, in order along them: one counting sort by first voxel, O(nx + crossings) without a
+  // data-dependent branch, then each crossing updates its ray's winding number, kept per ray. The order across rays
+  // does not matter, and within a ray it is the order along it. (An insertion sort per ray mispredicts on nearly
+  // every step where rays cross many bodies; the state per ray saves the second counting sort, by ray, that
+  // walking each ray in turn would need.)
   const size_t count = crossings.size();
-  s.by_first.assign(size_t(nx) + 2, 0);
-  s.start.assign(size_t(ny) + 1, 0);
-  for (const Crossing& c : crossings) {
-    ++s.by_first[size_t(c.first()) + 1];
-    ++s.start[size_t(c.ray()) + 1];
+  if (s.winding.size() != size_t(ny)) {
+    s.winding.assign(size_t(ny), 0);
+    s.count.assign(size_t(ny), 0);
   }
-  for (int32_t i = 0; i <= nx; ++i) s.by_first[size_t(i) + 1] += s.by_first[size_t(i)];
-  for (int32_t j = 0; j < ny; ++j) s.start[size_t(j) + 1] += s.start[size_t(j)];
+  // Two halves counted and scattered side by side, each with its own counts: consecutive crossings often share a
+  // first voxel, and one array of counts would make each increment wait for the one before.
+  const size_t bins = size_t(nx) + 1, half = count / 2;
+  s.by_first.assign(2 * bins, 0);
+  int32_t* const h0 = s.by_first.data();
+  int32_t* const h1 = h0 + bins;
+  const Crossing* const c0 = crossings.begin();
+  const Crossing* const c1 = c0 + half;
+  for (size_t i = 0; i < half; ++i) {
+    ++h0[c0[i].first()];
+    ++h1[c1[i].first()];
+  }
+  if (count % 2 != 0) ++h1[c1[half].first()];
+  // h0: where the first half's crossings of each voxel go, h1 the second half's (after the first half's).
+  int32_t at = 0;
+  for (size_t i = 0; i < bins; ++i) {
+    const int32_t n0 = h0[i], n1 = h1[i];
+    h0[i] = at;
+    h1[i] = at + n0;
+    at += n0 + n1;
+  }
   s.along.resize(count);
-  s.sorted.resize(count);
-  for (const Crossing& c : crossings) s.along[size_t(s.by_first[size_t(c.first())]++)] = c;
-  {
-    std::vector<int32_t>& pos = s.start;  // advanced while scattering, restored below
-    for (const Crossing& c : s.along) s.sorted[size_t(pos[size_t(c.ray())]++)] = c;
-    for (int32_t j = ny; j > 0; --j) pos[size_t(j)] = pos[size_t(j) - 1];
-    pos[0] = 0;
+  Crossing* const along = s.along.data();
+  for (size_t i = 0; i < half; ++i) {
+    along[h0[c0[i].first()]++] = c0[i];
+    along[h1[c1[i].first()]++] = c1[i];
   }
+  if (count % 2 != 0) along[h1[c1[half].first()]++] = c1[half];
+  // Winding number from -infinity: entering a solid (normal pointing to -u, sign -1) adds one. Branch-free: where
+  // rays cross many bodies, whether the winding is zero changes unpredictably.
+  int32_t* const winding = s.winding.data();
+  int32_t* const seen = s.count.data();
+  for (const Crossing& c : s.along) {
+    const int32_t j = c.ray();
+    const int32_t before = winding[j], after = before - c.sign();
+    winding[j] = after;
+    ++seen[j];
+    toggle(j, c.first(), (before != 0) != (after != 0));
+  }
+  // Each ray's totals, and its state set back to zero for the next row (branch-free: a ray without crossings adds
+  // nothing, and its row stays unmarked).
+  int64_t unbalanced = 0, odd = 0;
   for (int32_t j = 0; j < ny; ++j) {
-    const Crossing* b = s.sorted.data() + s.start[size_t(j)];
-    const Crossing* e = s.sorted.data() + s.start[size_t(j) + 1];
-    if (b == e) continue;
-    marked[j + 1] = 1;
-    // Winding number from -infinity: entering a solid (normal pointing to -u, sign -1) adds one. Branch-free: where
-    // rays cross many bodies, whether the winding is zero changes unpredictably.
-    int32_t winding = 0;
-    bool inside = false;
-    for (const Crossing* c = b; c != e; ++c) {
-      winding -= c->sign();
-      const bool now_inside = winding != 0;
-      toggle(j, c->first(), now_inside != inside);
-      inside = now_inside;
-    }
-    s.unbalanced_rays += winding != 0 ? 1 : 0;
-    s.odd_rays += (e - b) % 2;
+    marked[j + 1] = seen[j] != 0 ? 1 : 0;
+    unbalanced += winding[j] != 0 ? 1 : 0;
+    odd += seen[j] & 1;
+    winding[j] = 0;
+    seen[j] = 0;
   }
+  s.unbalanced_rays += unbalanced;
+  s.odd_rays += odd;
 }
 
 // Bits 0..nx - 1 of a padded row (bits 1..nx) in each of its wpr words.
