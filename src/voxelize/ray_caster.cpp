@@ -76,8 +76,8 @@ std::vector<double> centresAlong(const GridPlacement& placement, int axis) {
 // How far from an integer t = (value - c[0]) / h, in voxels, must lie for c[floor(t)] < value < c[floor(t) + 1] to
 // hold with room to spare for an error of the value (RayCaster::slack_u_). Each centre c[i] = fl(origin +
 // fl((i + 0.5) h)) lies within 2.01 u (|origin| + n h) of its exact value, so c[i] - (c[0] + i h) within twice that;
-// t computed as fl(fl(value - c[0]) * fl(1 / h)) is within 3.01 u |t| of (value - c[0]) / h, and the values asked
-// about lie within the grid, |t| < n. Doubled: the roundings of the slack itself are far inside that.
+// t computed as fl(fl(value - c[0]) * fl(1 / h)) is within 3.01 u |t| of (value - c[0]) / h, and the callers accept
+// only 0 < t < n - 1, so within 3.01 u n. Doubled: the roundings of the slack itself are far inside that.
 double gridSlack(const std::vector<double>& c, double origin, double h, double inv_h) {
   const double n = double(c.size());
   const double centre_error = 4.02 * kUnitRoundoff * (std::abs(origin) + n * h);
@@ -347,7 +347,9 @@ void RayCaster::rowCrossings(const Plane& plane, int32_t row, CrossingList& out)
     const __m128d q = _mm_mul_pd(_mm_add_pd(_mm_mul_pd(vn_v, _mm_sub_pd(v, va_v)), vw_term), vinv_nu);
     const __m128d x = _mm_min_pd(_mm_max_pd(_mm_sub_pd(va_u, q), vumin), vumax);
     const __m128d t = _mm_mul_pd(_mm_sub_pd(x, vu0), vinv_h);
-    const __m128i f = _mm_cvttpd_epi32(t);  // floor(t) where t >= 0; where not, fr < 0 and the test fails
+    // floor(t) where t >= 0; where t < 0, fr <= 0, and where t is NaN or beyond int32_t (INT32_MIN), fr and t fail
+    // the tests too
+    const __m128i f = _mm_cvttpd_epi32(t);
     const __m128d fr = _mm_sub_pd(t, _mm_cvtepi32_pd(f));
     ok = _mm_and_pd(_mm_and_pd(_mm_cmpgt_pd(fr, vdelta), _mm_cmplt_pd(fr, vbelow)), _mm_cmplt_pd(t, vlast));
     return _mm_or_si128(rays, _mm_slli_epi32(_mm_add_epi32(f, one), 1));
@@ -372,7 +374,7 @@ void RayCaster::rowCrossings(const Plane& plane, int32_t row, CrossingList& out)
   for (int32_t k = j; k < j_end; ++k) {
     const double x = std::min(std::max(a_u - (n_v * (cv[k] - a_v) + w_term) * inv_nu, umin), umax);
     const double t = (x - u0) * inv_h;
-    const int32_t f = int32_t(t);  // floor(t) where t >= 0; where not, fr < 0 and the test fails
+    const int32_t f = int32_t(t);  // floor(t) where t >= 0; where t < 0, fr <= 0 and the test fails
     const double fr = t - double(f);
     o[k - j] = Crossing{k, f + 1, plane.sign};
     clear &= (fr > delta) & (fr < below_one) & (f < last);

@@ -269,7 +269,7 @@ void markRowAlongX(int32_t ny, int32_t nx, const CrossingList& crossings, Rule r
     }
     return;  // odd rays: the parity past the row's last voxel (fillToggledRows)
   }
-  // All rays at once, in order along them: one counting sort by first voxel, O(nx + crossings) without a
+  // All rays at once, in order along them: one counting sort by first voxel, O(nx + ny + crossings) without a
   // data-dependent branch, then each crossing updates its ray's winding number, kept per ray. The order across rays
   // does not matter, and within a ray it is the order along it. (An insertion sort per ray mispredicts on nearly
   // every step where rays cross many bodies; the state per ray saves the second counting sort, by ray, that
@@ -322,7 +322,7 @@ void markRowAlongX(int32_t ny, int32_t nx, const CrossingList& crossings, Rule r
   // nothing, and its row stays unmarked).
   int64_t unbalanced = 0, odd = 0;
   for (int32_t j = 0; j < ny; ++j) {
-    marked[j + 1] = seen[j] != 0 ? 1 : 0;
+    marked[j + 1] |= seen[j] != 0 ? 1 : 0;
     unbalanced += winding[j] != 0 ? 1 : 0;
     odd += seen[j] & 1;
     winding[j] = 0;
