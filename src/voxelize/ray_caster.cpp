@@ -84,6 +84,15 @@ double gridSlack(const std::vector<double>& c, double origin, double h, double i
   return 2.0 * (centre_error * inv_h + 3.01 * kUnitRoundoff * n);
 }
 
+// Sets f = floor(t) (for t >= 0, within int32_t) and says whether t's fractional part lies farther than delta from 0
+// and from 1, so that centres f and f + 1 lie on either side of the value t stands for (gridSlack). False for t < 0,
+// where t - f <= 0.
+inline bool clearOfCentres(double t, double delta, int32_t& f) {
+  f = int32_t(t);
+  const double fr = t - double(f);
+  return (fr > delta) & (fr < 1.0 - delta);
+}
+
 }  // namespace
 
 void CrossingList::grow(size_t needed) {
@@ -282,11 +291,10 @@ void RayCaster::rowCrossings(const Plane& plane, int32_t row, CrossingList& out)
   bool ends_clear = false;
   if (t_lo > 0.0 && t_hi < double(nv - 1)) {  // false for NaN; with lo <= hi, both in (0, nv - 1)
     const double delta = slack_v_ + 2.0 * margin * inv_h_;
-    const int32_t f_lo = int32_t(t_lo), f_hi = int32_t(t_hi);
-    const double fr_lo = t_lo - double(f_lo), fr_hi = t_hi - double(f_hi);
-    ends_clear = (fr_lo > delta) & (fr_lo < 1.0 - delta) & (fr_hi > delta) & (fr_hi < 1.0 - delta);
+    int32_t f_lo, f_hi;
+    ends_clear = clearOfCentres(t_lo, delta, f_lo) & clearOfCentres(t_hi, delta, f_hi);
     j = f_lo + 1;
-    j_end = std::max(j, f_hi + 1);
+    j_end = f_hi + 1;  // >= j: t_lo <= t_hi
   }
   if (!ends_clear) {
     // The first ray at or above outer_lo, and the first at or above inner_hi, by comparisons with the stored
@@ -331,14 +339,14 @@ void RayCaster::rowCrossings(const Plane& plane, int32_t row, CrossingList& out)
   const double a_u = plane.a[0], a_v = plane.a[1], n_v = plane.n_v, inv_nu = plane.inv_nu;
   const double umin = plane.umin, umax = plane.umax;
   const double u0 = cu_[0], inv_h = inv_h_;
-  const double delta = slack_u_ + 2.0 * plane.margin * inv_h, below_one = 1.0 - delta;
+  const double delta = slack_u_ + 2.0 * plane.margin * inv_h;
   const int32_t last = length() - 1;
   bool clear = true;
 #if defined(__SSE2__)
   const __m128d va_u = _mm_set1_pd(a_u), va_v = _mm_set1_pd(a_v), vn_v = _mm_set1_pd(n_v);
   const __m128d vw_term = _mm_set1_pd(w_term), vinv_nu = _mm_set1_pd(inv_nu);
   const __m128d vumin = _mm_set1_pd(umin), vumax = _mm_set1_pd(umax), vu0 = _mm_set1_pd(u0);
-  const __m128d vinv_h = _mm_set1_pd(inv_h), vdelta = _mm_set1_pd(delta), vbelow = _mm_set1_pd(below_one);
+  const __m128d vinv_h = _mm_set1_pd(inv_h), vdelta = _mm_set1_pd(delta), vbelow = _mm_set1_pd(1.0 - delta);
   const __m128d vlast = _mm_set1_pd(double(last));
   const __m128i one = _mm_set1_epi32(1);
   // The crossings of the rays whose centres are the two lanes of v: their packed values in the two low lanes
@@ -373,11 +381,9 @@ void RayCaster::rowCrossings(const Plane& plane, int32_t row, CrossingList& out)
 #else
   for (int32_t k = j; k < j_end; ++k) {
     const double x = std::min(std::max(a_u - (n_v * (cv[k] - a_v) + w_term) * inv_nu, umin), umax);
-    const double t = (x - u0) * inv_h;
-    const int32_t f = int32_t(t);  // floor(t) where t >= 0; where t < 0, fr <= 0 and the test fails
-    const double fr = t - double(f);
+    int32_t f;
+    clear &= clearOfCentres((x - u0) * inv_h, delta, f) & (f < last);
     o[k - j] = Crossing{k, f + 1, plane.sign};
-    clear &= (fr > delta) & (fr < below_one) & (f < last);
   }
 #endif
   if (!clear) placeCrossings(plane, row, j, j_end, o);

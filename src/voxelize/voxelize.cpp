@@ -208,7 +208,7 @@ struct PassScratch {
   std::vector<int32_t> by_first;  // counting sort of crossings by first voxel
   std::vector<Crossing> along;    // crossings sorted by first voxel
   std::vector<int32_t> winding;   // by ray: the winding number so far (zero between rows)
-  std::vector<int32_t> count;     // by ray: crossings so far (zero between rows)
+  std::vector<int32_t> seen;      // by ray: crossings so far (zero between rows)
   int64_t odd_rays = 0;           // rays with an odd number of crossings
   int64_t unbalanced_rays = 0;    // rays whose signed crossings do not sum to zero
 };
@@ -277,7 +277,7 @@ void markRowAlongX(int32_t ny, int32_t nx, const CrossingList& crossings, Rule r
   const size_t count = crossings.size();
   if (s.winding.size() != size_t(ny)) {
     s.winding.assign(size_t(ny), 0);
-    s.count.assign(size_t(ny), 0);
+    s.seen.assign(size_t(ny), 0);
   }
   // Two halves counted and scattered side by side, each with its own counts: consecutive crossings often share a
   // first voxel, and one array of counts would make each increment wait for the one before.
@@ -310,7 +310,7 @@ void markRowAlongX(int32_t ny, int32_t nx, const CrossingList& crossings, Rule r
   // Winding number from -infinity: entering a solid (normal pointing to -u, sign -1) adds one. Branch-free: where
   // rays cross many bodies, whether the winding is zero changes unpredictably.
   int32_t* const winding = s.winding.data();
-  int32_t* const seen = s.count.data();
+  int32_t* const seen = s.seen.data();
   for (const Crossing& c : s.along) {
     const int32_t j = c.ray();
     const int32_t before = winding[j], after = before - c.sign();
