@@ -23,14 +23,14 @@ Result<GridPlacement> place(const Box3d& bounds, double h, int64_t resolution) {
 }
 
 Status checkBounds(const Box3d& bounds) {
-  if (bounds.empty()) return makeError(ErrorCode::kInvalidArgument, "the mesh has no vertices");
+  if (bounds.empty()) return makeError(ErrorCode::kParse, "the mesh has no vertices");
   const glm::dvec3 e = bounds.extent();
   for (int a = 0; a < 3; ++a) {
     if (!std::isfinite(bounds.min[a]) || !std::isfinite(bounds.max[a]))
-      return makeError(ErrorCode::kInvalidArgument, "the bounding box is not finite");
+      return makeError(ErrorCode::kParse, "the bounding box is not finite");
   }
   if (std::max({e.x, e.y, e.z}) <= 0.0)
-    return makeError(ErrorCode::kInvalidArgument, "the mesh has zero extent (all vertices coincide)");
+    return makeError(ErrorCode::kParse, "the mesh has zero extent (all vertices coincide)");
   return Ok{};
 }
 

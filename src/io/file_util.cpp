@@ -16,6 +16,13 @@
 
 namespace vox::io {
 
+std::string quoteBytes(std::string_view bytes, size_t max_chars) {
+  std::string s = "'";
+  for (char c : bytes.substr(0, max_chars)) s += (c >= 32 && c < 127) ? c : '?';
+  if (bytes.size() > max_chars) s += "...";
+  return s + "'";
+}
+
 namespace {
 
 std::string reason(int err) { return std::strerror(err); }
@@ -124,7 +131,17 @@ class FdSink final : public ByteSink {
 
 }  // namespace
 
-Status writeFileAtomic(const std::filesystem::path& path, const std::function<Status(ByteSink&)>& produce) {
+namespace {
+
+// A file written completely under a temporary name beside its target, not yet renamed over it.
+struct StagedFile {
+  std::string temp, target;
+  std::filesystem::path dir;
+};
+
+// Writes `produce`'s content to a temporary file in the target's directory and flushes it. Any failure removes the
+// temporary file; the target is never touched here.
+Result<StagedFile> stageFile(const std::filesystem::path& path, const std::function<Status(ByteSink&)>& produce) {
   const std::string p = path.string();
   if (path.filename().empty()) return makeError(ErrorCode::kIo, p + ": cannot write: the path names no file");
   const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
@@ -152,8 +169,8 @@ Status writeFileAtomic(const std::filesystem::path& path, const std::function<St
                      p + ": cannot create a temporary file in '" + dir.string() + "': " + reason(errno));
   }
   FdCloser closer(fd);
-  // From here on every failure removes the temporary file; the target is untouched until rename().
-  auto fail = [&](const std::string& what, int err) -> Status {
+  // From here on every failure removes the temporary file.
+  auto fail = [&](const std::string& what, int err) -> Error {
     ::close(closer.release());
     ::unlink(temp.c_str());
     return makeError(ErrorCode::kIo, p + ": " + what + ": " + reason(err));
@@ -165,7 +182,7 @@ Status writeFileAtomic(const std::filesystem::path& path, const std::function<St
     if (sink.error() != 0) return fail("write failed", sink.error());
     ::close(closer.release());
     ::unlink(temp.c_str());
-    return s;
+    return s.error();
   }
   if (::fsync(fd) != 0) return fail("fsync failed", errno);
   const int fd_to_close = closer.release();
@@ -174,17 +191,49 @@ Status writeFileAtomic(const std::filesystem::path& path, const std::function<St
     ::unlink(temp.c_str());
     return makeError(ErrorCode::kIo, p + ": close failed: " + reason(err));
   }
-  if (::rename(temp.c_str(), p.c_str()) != 0) {
+  return StagedFile{temp, p, dir};
+}
+
+// Renames a staged file over its target and makes the rename durable.
+Status publish(const StagedFile& f) {
+  if (::rename(f.temp.c_str(), f.target.c_str()) != 0) {
     const int err = errno;
-    ::unlink(temp.c_str());
-    return makeError(ErrorCode::kIo, p + ": cannot replace the file: " + reason(err));
+    ::unlink(f.temp.c_str());
+    return makeError(ErrorCode::kIo, f.target + ": cannot replace the file: " + reason(err));
   }
-  // Make the rename itself durable. Best effort: some file systems refuse fsync on a directory, and the data is
-  // already complete under its final name.
-  const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  // Best effort: some file systems refuse fsync on a directory, and the data is already complete under its name.
+  const int dir_fd = ::open(f.dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dir_fd >= 0) {
     (void)::fsync(dir_fd);
     ::close(dir_fd);
+  }
+  return Ok{};
+}
+
+}  // namespace
+
+Status writeFileAtomic(const std::filesystem::path& path, const std::function<Status(ByteSink&)>& produce) {
+  auto staged = stageFile(path, produce);
+  if (!staged) return staged.error();
+  return publish(*staged);
+}
+
+Status writeFilesAtomic(const std::vector<PendingFile>& files) {
+  std::vector<StagedFile> staged;
+  for (const PendingFile& f : files) {
+    auto s = stageFile(f.path, [&](ByteSink& sink) { return sink.append(f.bytes); });
+    if (!s) {
+      for (const StagedFile& done : staged) ::unlink(done.temp.c_str());
+      return s.error();
+    }
+    staged.push_back(std::move(s).value());
+  }
+  // Every file is complete on disk: only renames are left, which fail only if a directory changes under us.
+  for (size_t i = 0; i < staged.size(); ++i) {
+    if (Status s = publish(staged[i]); !s.ok()) {
+      for (size_t j = i + 1; j < staged.size(); ++j) ::unlink(staged[j].temp.c_str());
+      return s;
+    }
   }
   return Ok{};
 }

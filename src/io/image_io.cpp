@@ -6,6 +6,7 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <cctype>
 #include <climits>
 #include <cstring>
 
@@ -24,7 +25,7 @@ void appendBytes(void* context, void* data, int size) {
 }
 
 template <class Pixel>
-Status savePngImpl(const Image2D<Pixel>& image, const std::filesystem::path& path) {
+Result<std::vector<uint8_t>> encodePngImpl(const Image2D<Pixel>& image, const std::filesystem::path& path) {
   constexpr int kComponents = int(sizeof(Pixel));
   if (image.width <= 0 || image.height <= 0) {
     return makeError(ErrorCode::kInvalidArgument, path.string() + ": cannot write an empty image (" +
@@ -42,13 +43,35 @@ Status savePngImpl(const Image2D<Pixel>& image, const std::filesystem::path& pat
   const int ok = stbi_write_png_to_func(appendBytes, &png, image.width, image.height, kComponents, image.pixels.data(),
                                         image.width * kComponents);
   if (!ok || png.empty()) return makeError(ErrorCode::kIo, path.string() + ": PNG encoding failed");
-  return writeFileAtomic(path, png);
+  return png;
+}
+
+template <class Pixel>
+Status savePngImpl(const Image2D<Pixel>& image, const std::filesystem::path& path) {
+  auto png = encodePngImpl(image, path);
+  if (!png) return png.error();
+  return writeFileAtomic(path, *png);
 }
 
 }  // namespace
 
 Status savePng(const ImageRgb& image, const std::filesystem::path& path) { return savePngImpl(image, path); }
 Status savePng(const ImageRgba& image, const std::filesystem::path& path) { return savePngImpl(image, path); }
+Result<std::vector<uint8_t>> encodePng(const ImageRgb& image, const std::filesystem::path& path) {
+  return encodePngImpl(image, path);
+}
+Result<std::vector<uint8_t>> encodePng(const ImageRgba& image, const std::filesystem::path& path) {
+  return encodePngImpl(image, path);
+}
+
+bool hasExtension(const std::filesystem::path& path, std::string_view ext) {
+  const std::string e = path.extension().string();
+  if (e.size() != ext.size()) return false;
+  for (size_t i = 0; i < e.size(); ++i) {
+    if (std::tolower(static_cast<unsigned char>(e[i])) != ext[i]) return false;
+  }
+  return true;
+}
 
 Result<ImageRgba> loadPng(const std::filesystem::path& path) {
   auto bytes = readFileBytes(path);

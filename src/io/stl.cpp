@@ -10,8 +10,13 @@
 //     >= 0x09, so the count would be >= 0x09090909 and the file >= 7.5 GB.
 //  2. else it starts with "solid" (after whitespace / a UTF-8 byte-order mark) and holds no NUL byte -> ASCII.
 //     Text never contains NUL; binary triangle data almost always does (the attribute bytes are usually zero).
-//  3. else binary, and the size does not match the count: reported as truncated or as a size mismatch.
-// ASCII numbers are parsed straight to float32 with std::from_chars (correctly rounded, no locale).
+//  3. else a file whose first bytes name another format (PLY, 3MF, STEP, ...) is refused as not an STL, and so is
+//     one whose count bytes are text and do not fit its size (text, but not an ASCII STL).
+//  4. else binary: shorter than the count says -> truncated; longer -> the declared triangles are read and the extra
+//     bytes ignored with a warning (as other STL readers do).
+// ASCII is whitespace-separated: line breaks are not required (a whole file may be one line); a solid's name runs to
+// the end of its line or to the first 'facet' / 'endsolid' token. Numbers are parsed straight to float32 with
+// std::from_chars (correctly rounded, no locale).
 #include "vox/io/stl.h"
 
 #include <algorithm>
@@ -42,14 +47,6 @@ float loadF32(const uint8_t* p) { return std::bit_cast<float>(loadU32(p)); }
 void storeU32(uint8_t* p, uint32_t v) {
   if constexpr (std::endian::native == std::endian::big) v = __builtin_bswap32(v);
   std::memcpy(p, &v, 4);
-}
-
-// A token for a message: printable, at most 40 characters.
-std::string quoteToken(std::string_view t) {
-  std::string s;
-  for (char c : t.substr(0, 40)) s += (c >= 32 && c < 127) ? c : '?';
-  if (t.size() > 40) s += "...";
-  return "'" + s + "'";
 }
 
 std::string trimmed(std::string_view s) {
@@ -88,11 +85,11 @@ class AsciiParser {
       if (!keywordIs(tok, "solid")) {
         return fail(first_solid ? "expected 'solid'" : "expected 'solid' or end of file", tok);
       }
-      const std::string solid_name = trimmed(restOfLine());
+      const std::string solid_name = trimmed(nameOnLine("facet", "endsolid"));
       if (first_solid) out.header = solid_name;
       first_solid = false;
       if (Status s = parseFacets(out.mesh); !s.ok()) return s;
-      restOfLine();  // the name after endsolid, if any; it need not match
+      nameOnLine("solid", "solid");  // the name after endsolid, if any; it need not match
       tok = next();
       if (tok.empty()) return Ok{};
     }
@@ -141,11 +138,24 @@ class AsciiParser {
     return {b, size_t(p_ - b)};
   }
 
-  // The rest of the current line (without the newline), consumed.
-  std::string_view restOfLine() {
+  // A solid's name: the rest of the current line, consumed, but only up to a token that is one of the two keywords.
+  // ASCII STL is whitespace-separated, so a whole file may be one line ("solid a facet normal ... endsolid a").
+  std::string_view nameOnLine(std::string_view stop1, std::string_view stop2) {
     const char* b = p_;
-    while (p_ < end_ && *p_ != '\n') ++p_;
-    return {b, size_t(p_ - b)};
+    const char* name_end = p_;
+    for (;;) {
+      while (p_ < end_ && *p_ != '\n' && isSpace(uint8_t(*p_))) ++p_;
+      if (p_ == end_ || *p_ == '\n') break;
+      const char* t = p_;
+      while (p_ < end_ && !isSpace(uint8_t(*p_))) ++p_;
+      const std::string_view tok(t, size_t(p_ - t));
+      if (keywordIs(tok, stop1) || keywordIs(tok, stop2)) {
+        p_ = t;  // the keyword is the next token
+        break;
+      }
+      name_end = p_;
+    }
+    return {b, size_t(name_end - b)};
   }
 
   Status expect(std::string_view keyword) {
@@ -169,17 +179,17 @@ class AsciiParser {
         value = float(d);
         return Ok{};
       }
-      return failAt("number out of float32 range: " + quoteToken(tok));
+      return failAt("number out of float32 range: " + quoteBytes(tok));
     }
     if (ec != std::errc() || ptr != e) return fail("expected a number", tok);
     if (finite_required && !std::isfinite(value)) {
-      return failAt("vertex coordinate is not finite: " + quoteToken(tok));
+      return failAt("vertex coordinate is not finite: " + quoteBytes(tok));
     }
     return Ok{};
   }
 
   Status fail(const std::string& what, std::string_view found) {
-    return failAt(what + ", found " + (found.empty() ? std::string("end of file") : quoteToken(found)));
+    return failAt(what + ", found " + (found.empty() ? std::string("end of file") : quoteBytes(found)));
   }
   Status failAt(const std::string& what) {
     return makeError(ErrorCode::kParse, name_ + ":" + std::to_string(token_line_) + ": " + what);
@@ -227,12 +237,49 @@ bool startsWithSolid(std::span<const uint8_t> bytes) {
   return keywordIs(rest, "solid");
 }
 
+const char* const kNotAscii = " (it starts with 'solid' but holds binary data, so it is not ASCII)";
+
+// A file of another format, told by its first bytes, so that the message names it rather than a broken STL.
+const char* otherFormat(std::span<const uint8_t> bytes) {
+  const std::string_view head(reinterpret_cast<const char*>(bytes.data()), std::min<size_t>(bytes.size(), 80));
+  const auto starts = [&](std::string_view m) { return head.substr(0, m.size()) == m; };
+  if (starts("ply\n") || starts("ply\r\n")) return "a PLY file";
+  if (starts("PK\x03\x04")) return "a zip archive (3MF is a zip)";
+  if (starts("glTF")) return "a binary glTF (GLB) file";
+  if (starts("ISO-10303-21")) return "a STEP file";
+  if (starts("OFF") && head.size() > 3 && isSpace(uint8_t(head[3]))) return "an OFF file";
+  if (starts("#binvox")) return "a .binvox file (use the .binvox extension)";
+  if (starts("\x89VXM")) return "a .vxm file (use the .vxm extension)";
+  // IGES: 80-column records, the first in the Start section ('S' in column 73, then a sequence number).
+  if (head.size() >= 80 && head[72] == 'S' && head.substr(73, 7).find_first_not_of(" 0123456789") == head.npos) {
+    return "an IGES file";
+  }
+  return nullptr;
+}
+
+// Whether the four bytes of a binary STL's triangle count are all text (whitespace or printable ASCII).
+bool countIsText(std::span<const uint8_t> bytes) {
+  for (size_t i = kBinaryHeaderBytes; i < kBinaryPrefixBytes; ++i) {
+    if (!isSpace(bytes[i]) && (bytes[i] < 0x20 || bytes[i] > 0x7e)) return false;
+  }
+  return true;
+}
+
 // The topology pass numbers corners in 32 bits.
 constexpr uint64_t kMaxTriangles = UINT32_MAX / 3;
 
 Error tooManyTriangles(const std::string& name, uint64_t count) {
   return makeError(ErrorCode::kLimit, name + ": " + std::to_string(count) + " triangles; voxmod reads at most " +
                                           std::to_string(kMaxTriangles));
+}
+
+// A binary STL of exactly 84 + 50 * count bytes.
+Status parseBinaryChecked(std::span<const uint8_t> bytes, const std::string& name, uint64_t count, StlLoad& out) {
+  out.ascii = false;
+  out.header = trimmed(std::string_view(reinterpret_cast<const char*>(bytes.data()), kBinaryHeaderBytes));
+  if (count == 0) return makeError(ErrorCode::kParse, name + ": binary STL contains no triangles");
+  if (count > kMaxTriangles) return tooManyTriangles(name, count);
+  return parseBinary(bytes, name, out);
 }
 
 // The triangles of an STL file (binary or ASCII, decided by content); topology and warnings come later.
@@ -246,30 +293,37 @@ Status parseStlMesh(std::span<const uint8_t> bytes, const std::string& name, Stl
   const bool solid = startsWithSolid(bytes);
 
   if (size >= kBinaryPrefixBytes && size == expected) {
-    out.ascii = false;
-    out.header = trimmed(std::string_view(reinterpret_cast<const char*>(bytes.data()), kBinaryHeaderBytes));
-    if (count == 0) return makeError(ErrorCode::kParse, name + ": binary STL contains no triangles");
-    if (count > kMaxTriangles) return tooManyTriangles(name, count);
-    if (Status s = parseBinary(bytes, name, out); !s.ok()) return s;
+    if (Status s = parseBinaryChecked(bytes, name, count, out); !s.ok()) return s;
   } else if (solid && std::memchr(bytes.data(), 0, bytes.size()) == nullptr) {
     out.ascii = true;
     AsciiParser parser(bytes, name);
     if (Status s = parser.parse(out); !s.ok()) return s;
     if (out.mesh.triangles.empty()) return makeError(ErrorCode::kParse, name + ": ASCII STL contains no triangles");
     if (out.mesh.triangles.size() > kMaxTriangles) return tooManyTriangles(name, out.mesh.triangles.size());
+  } else if (const char* other = otherFormat(bytes)) {
+    return makeError(ErrorCode::kParse, name + ": not an STL file: it looks like " + other +
+                                            ", which voxmod does not read (it reads STL, .vxm and .binvox)");
+  } else if (size < kBinaryPrefixBytes) {
+    return makeError(ErrorCode::kParse, name + ": not an STL file: " + std::to_string(size) +
+                                            " bytes is shorter than a binary STL header (84 bytes)" +
+                                            (solid ? kNotAscii : " and it does not start with 'solid'"));
+  } else if (countIsText(bytes) && size < expected) {
+    // Bytes 80..83 are text, so the "count" is over 151 million triangles (7.5 GB): the file is text, not binary.
+    return makeError(ErrorCode::kParse, name + ": not an STL file: it is neither an ASCII STL (" +
+                                            (solid ? "it holds NUL bytes" : "it does not start with 'solid'") +
+                                            ") nor a binary STL (its size does not fit the triangle count at byte 80)");
   } else {
-    const std::string why =
-        solid ? " (it starts with 'solid' but holds binary data, so it is not ASCII)" : std::string();
-    if (size < kBinaryPrefixBytes) {
-      return makeError(ErrorCode::kParse, name + ": not an STL file: " + std::to_string(size) +
-                                              " bytes is shorter than a binary STL header (84 bytes)" +
-                                              (solid ? why : " and it does not start with 'solid'"));
-    }
     const std::string sizes = "header declares " + std::to_string(count) + " triangles (" + std::to_string(expected) +
                               " bytes) but the file has " + std::to_string(size) + " bytes";
-    if (size < expected) return makeError(ErrorCode::kParse, name + ": binary STL truncated: " + sizes + why);
-    return makeError(ErrorCode::kParse, name + ": binary STL size mismatch: " + sizes + " (" +
-                                            std::to_string(size - expected) + " extra)" + why);
+    if (size < expected) {
+      return makeError(ErrorCode::kParse,
+                       name + ": binary STL truncated: " + sizes + (solid ? kNotAscii : std::string()));
+    }
+    // Bytes after the declared triangles (padding, a second copy, trailing metadata): read what the header
+    // declares, as other STL readers do, and say what was ignored.
+    if (Status s = parseBinaryChecked(bytes.first(size_t(expected)), name, count, out); !s.ok()) return s;
+    out.warnings.push_back(name + ": " + std::to_string(size - expected) + " bytes after the " + std::to_string(count) +
+                           " triangles the header declares were ignored");
   }
 
   return Ok{};

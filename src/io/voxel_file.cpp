@@ -738,7 +738,7 @@ Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string
         return error(ErrorCode::kParse, "expected 'scale s' with a positive number");
       }
     } else {
-      return error(ErrorCode::kParse, "unknown binvox header line '" + std::string(line.substr(0, 40)) + "'");
+      return error(ErrorCode::kParse, "unknown binvox header line " + quoteBytes(line));
     }
   }
   if (!have_data) return makeError(ErrorCode::kParse, name + ": binvox header has no 'data' line");
@@ -763,11 +763,15 @@ Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string
         return dataError(ErrorCode::kParse, "has value " + std::to_string(v) + " at byte " +
                                                 std::to_string(pos + 2 * i) + " (values are 0 or 1)");
       }
+      if (n == 0) {
+        return dataError(ErrorCode::kParse, "has a run of length 0 at byte " + std::to_string(pos + 2 * i + 1) +
+                                                " (run lengths are 1..255)");
+      }
       if (n > total - covered) {
         return dataError(ErrorCode::kParse, "runs past the " + std::to_string(total) + " voxels of the grid (at byte " +
                                                 std::to_string(pos + 2 * i) + ")");
       }
-      if (v == 1 && n > 0) {
+      if (v == 1) {
         // Consecutive voxels share (x, z) for up to `width` voxels; a run of at most 255 touches few z values.
         for (uint64_t k = covered; k < covered + n; k += width - (k % width)) {
           layer_used[size_t((k / width) % height)] = 1;

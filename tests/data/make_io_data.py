@@ -47,7 +47,9 @@ V = [("0", "0", "0"), ("1", "0", "0"), ("0", "1", "0")]
 
 write(BAD, "empty.stl", b"")
 write(BAD, "binary_truncated.stl", binary_stl([TRI] * 12)[: 84 + 50 * 5])
-write(BAD, "binary_count_mismatch.stl", binary_stl([TRI] * 3, declared=2))
+write(BAD, "not_stl_ply.stl", b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+      b"property float y\nproperty float z\nend_header\n" + b"\0" * 36)
+write(BAD, "not_stl_text.stl", "this is a text file with more than eighty-four bytes in it, but it is not an STL.\n" * 2)
 write(BAD, "binary_zero_triangles.stl", binary_stl([]))
 write(BAD, "binary_nan.stl", binary_stl([TRI, [(0.0, 0.0, 0.0), (float("nan"), 0.0, 0.0), (0.0, 1.0, 0.0)]]))
 write(BAD, "binary_inf.stl", binary_stl([TRI, TRI, [(0.0, 0.0, float("inf")), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0)]]))
@@ -81,6 +83,8 @@ write(OK, "ascii_uppercase_tabs.stl", "SOLID T\n\tFACET NORMAL 0 0 1\n\t\tOUTER 
       "\t\t\tVERTEX 1 0 0\n\t\t\tVERTEX 0 1 0\n\t\tENDLOOP\n\tENDFACET\nENDSOLID T")
 write(OK, "ascii_degenerate.stl", "solid t\n" + facet(V) + facet([("0", "0", "0"), ("1", "0", "0"), ("2", "0", "0")])
       + "endsolid t\n")
+write(OK, "binary_extra_bytes.stl", binary_stl([TRI] * 3, declared=2))
+write(OK, "ascii_one_line.stl", "solid one line " + (facet(V) * 2).replace("\n", " ") + "endsolid one line")
 write(OK, "binary_solid_header.stl", binary_stl([TRI, TRI], header=b"solid part exported by a CAD tool"))
 
 # ---- .binvox (SPEC section 4) ----
@@ -104,6 +108,9 @@ write(BAD, "binvox_no_data.binvox", b"#binvox 1\ndim 4 4 4\ntranslate 0 0 0\nsca
 write(BAD, "binvox_no_dim.binvox", binvox("", RUNS).replace(b"dim \n", b""))
 write(BAD, "binvox_huge_dim.binvox", binvox("20000 20000 20000", RUNS))
 write(BAD, "binvox_not_binvox.binvox", b"P6\n4 4\n255\n")
+write(BAD, "binvox_zero_run.binvox", binvox("4 4 4", [(0, 10), (1, 0)] + RUNS[1:] + [(0, 0)]))
+write(BAD, "binvox_not_utf8_header.binvox", binvox("4 4 4", RUNS, header_extra="\xff\xfe\x01 data\n")
+      .replace(b"\xc3\xbf\xc3\xbe", b"\xff\xfe"))
 
 # ---- .vxm (docs/file-format.md) ----
 

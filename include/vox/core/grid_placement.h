@@ -17,7 +17,8 @@ struct GridPlacement {
   int32_t resolution = 0;  // voxels along the longest axis
 };
 
-// From a resolution R in [1, kMaxResolution]. Fails for an empty or non-finite box, or a box with zero extent.
+// From a resolution R in [1, kMaxResolution]. Fails for an empty or non-finite box, or a box with zero extent (kParse:
+// the input mesh is unusable; an out-of-range R is kInvalidArgument).
 Result<GridPlacement> placeGridByResolution(const Box3d& bounds, int64_t resolution);
 // From a voxel size h > 0 in model units: R = ceil(largest extent / h). Fails when R exceeds kMaxResolution.
 Result<GridPlacement> placeGridByVoxelSize(const Box3d& bounds, double voxel_size);

@@ -6,11 +6,16 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "vox/core/result.h"
 
 namespace vox::io {
+
+// Bytes from a file, quoted for a message: printable ASCII kept, anything else (control bytes, bytes that are not
+// UTF-8) shown as '?', at most `max_chars` characters then "...". Messages built from file content stay valid text.
+std::string quoteBytes(std::string_view bytes, size_t max_chars = 40);
 
 // Whole file into memory. Errors: "<path>: no such file", "<path>: permission denied", ...
 Result<std::vector<uint8_t>> readFileBytes(const std::filesystem::path& path);
@@ -39,5 +44,13 @@ class VectorSink final : public ByteSink {
 // encoder never needs the whole file in memory. The target is replaced only when produce succeeds and the data is
 // flushed; any failure (produce's own or the disk's) leaves the previous file untouched and is returned.
 Status writeFileAtomic(const std::filesystem::path& path, const std::function<Status(ByteSink&)>& produce);
+
+// Several files written as one: each is written and flushed under a temporary name first, and only when all are
+// complete are they renamed over their targets. A failure leaves every target as it was (no half of a pair).
+struct PendingFile {
+  std::filesystem::path path;
+  std::vector<uint8_t> bytes;
+};
+Status writeFilesAtomic(const std::vector<PendingFile>& files);
 
 }  // namespace vox::io

@@ -1,7 +1,8 @@
 #pragma once
 // STL reader (binary and ASCII, chosen by content, docs/file-format.md): binary when the size is exactly
 // 84 + 50 * count (even if the header starts with "solid"); else ASCII when the file starts with "solid" and holds
-// no NUL byte; else a binary file of the wrong size (an error saying truncated or size mismatch). Errors name the
+// no NUL byte; else not an STL when its first bytes name another format; else a binary file of the wrong size
+// (truncated is an error; extra bytes after the declared triangles are ignored with a warning). Errors name the
 // file, and the line for ASCII, e.g. "part.stl:88: expected 'vertex', found 'endloop'".
 #include <cstdint>
 #include <filesystem>
@@ -22,8 +23,8 @@ struct StlLoad {
   std::vector<std::string> warnings;  // e.g. "part.stl: 3 degenerate triangles", "part.stl: not watertight: ..."
 };
 
-// Reads an STL file. Fails on: missing/unreadable file, empty mesh, truncated binary data, a binary triangle count
-// that does not match the file size, NaN/Inf coordinates, bad ASCII tokens.
+// Reads an STL file. Fails on: missing/unreadable file, empty mesh, truncated binary data, another format,
+// NaN/Inf coordinates, bad ASCII tokens.
 Result<StlLoad> loadStl(const std::filesystem::path& path);
 // The same from bytes in memory; `name` is used in messages (for tests and fuzzing).
 Result<StlLoad> parseStl(std::span<const uint8_t> bytes, const std::string& name);

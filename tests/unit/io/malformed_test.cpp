@@ -46,9 +46,13 @@ const Refusal kRefusals[] = {
     {"binary_truncated.stl", ErrorCode::kParse,
      "binary_truncated.stl: binary STL truncated: header declares 12 triangles (684 bytes) but the file has 334 "
      "bytes"},
-    {"binary_count_mismatch.stl", ErrorCode::kParse,
-     "binary_count_mismatch.stl: binary STL size mismatch: header declares 2 triangles (184 bytes) but the file has "
-     "234 bytes (50 extra)"},
+    // STL: files of other kinds are named as not STL, not as a broken binary STL.
+    {"not_stl_ply.stl", ErrorCode::kParse,
+     "not_stl_ply.stl: not an STL file: it looks like a PLY file, which voxmod does not read (it reads STL, .vxm and "
+     ".binvox)"},
+    {"not_stl_text.stl", ErrorCode::kParse,
+     "not_stl_text.stl: not an STL file: it is neither an ASCII STL (it does not start with 'solid') nor a binary "
+     "STL (its size does not fit the triangle count at byte 80)"},
     {"binary_zero_triangles.stl", ErrorCode::kParse, "binary_zero_triangles.stl: binary STL contains no triangles"},
     {"binary_solid_header_truncated.stl", ErrorCode::kParse,
      "binary_solid_header_truncated.stl: binary STL truncated: header declares 4 triangles (284 bytes) but the "
@@ -86,6 +90,11 @@ const Refusal kRefusals[] = {
     {"binvox_no_data.binvox", ErrorCode::kParse, "binvox_no_data.binvox: binvox header has no 'data' line"},
     {"binvox_no_dim.binvox", ErrorCode::kParse, "binvox_no_dim.binvox: binvox header has no 'dim' line"},
     {"binvox_huge_dim.binvox", ErrorCode::kLimit, "binvox_huge_dim.binvox:2: dimension 20000 is outside 1..16384"},
+    {"binvox_zero_run.binvox", ErrorCode::kParse,
+     "binvox_zero_run.binvox: binvox data has a run of length 0 at byte 55 (run lengths are 1..255)"},
+    // Bytes that are not text are quoted as '?', so the message (and the CLI's JSON) stays valid UTF-8.
+    {"binvox_not_utf8_header.binvox", ErrorCode::kParse,
+     "binvox_not_utf8_header.binvox:3: unknown binvox header line '??? data'"},
     {"binvox_not_binvox.binvox", ErrorCode::kParse,
      "binvox_not_binvox.binvox: not a binvox file (it does not start with '#binvox')"},
     // .vxm
@@ -192,6 +201,24 @@ TEST(StlQuirks, degenerateTriangleIsKeptWithAWarning) {
   EXPECT_EQ(r->topology.degenerate_triangles, 1);
   ASSERT_FALSE(r->warnings.empty());
   EXPECT_EQ(r->warnings[0], "ascii_degenerate.stl: 1 degenerate triangles (zero area; kept)");
+}
+
+TEST(StlQuirks, asciiOnOneLineWithoutFinalNewlineLoads) {
+  const auto r = quirk("ascii_one_line.stl");
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_TRUE(r->ascii);
+  EXPECT_EQ(r->mesh.triangles.size(), 2u);
+  EXPECT_EQ(r->header, "one line");
+  EXPECT_EQ(r->mesh.triangles[1].v[1], glm::vec3(1, 0, 0));
+}
+
+TEST(StlQuirks, binaryWithBytesAfterTheDeclaredTrianglesLoadsThemWithAWarning) {
+  const auto r = quirk("binary_extra_bytes.stl");
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_FALSE(r->ascii);
+  EXPECT_EQ(r->mesh.triangles.size(), 2u);
+  ASSERT_FALSE(r->warnings.empty());
+  EXPECT_EQ(r->warnings[0], "binary_extra_bytes.stl: 50 bytes after the 2 triangles the header declares were ignored");
 }
 
 TEST(StlQuirks, binaryWhoseHeaderStartsWithSolidIsBinary) {

@@ -262,12 +262,13 @@ TEST(Binvox, nonCubicFileReadsAsDepthWidthHeight) {
   EXPECT_EQ(r->frame().voxel_size, 2.0);  // scale / largest dimension
 }
 
-TEST(Binvox, countZeroRunsAreHarmless) {
+// binvox writes run lengths 1..255; a 0 is a damaged file, refused rather than skipped in silence.
+TEST(Binvox, countZeroRunIsRefused) {
   std::string file = "#binvox 1\ndim 2 2 2\ndata\n";
   file += std::string{0, 0, 1, 3, 1, 0, 0, 5};
   const auto r = decodeBinvox(std::vector<uint8_t>(file.begin(), file.end()), "t.binvox");
-  ASSERT_TRUE(r.ok()) << r.error().message;
-  EXPECT_EQ(r->filledCount(), 3);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().message, "t.binvox: binvox data has a run of length 0 at byte 26 (run lengths are 1..255)");
 }
 
 TEST(VoxelFile, dispatchesByExtensionCaseInsensitively) {

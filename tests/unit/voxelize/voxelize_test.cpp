@@ -486,7 +486,7 @@ TEST(VoxelizeControl, badParametersAreRejectedWithReasons) {
   p.threads = 0;
   auto empty = voxelizeSolid(TriangleMesh{}, p);
   ASSERT_FALSE(empty.ok());
-  EXPECT_EQ(empty.error().code, ErrorCode::kInvalidArgument);
+  EXPECT_EQ(empty.error().code, ErrorCode::kParse);
   EXPECT_NE(empty.error().message.find("no triangles"), std::string::npos);
 }
 
