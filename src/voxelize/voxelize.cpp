@@ -591,10 +591,33 @@ Result<VoxelizePlan> planVoxelization(const Box3d& bounds, const VoxelizeParams&
   return plan;
 }
 
+ModeChoice resolveAutoMode(const MeshTopology& topology) {
+  const std::string edges_text =
+      plural(topology.boundary_edges, "boundary edge") + ", " + plural(topology.nonmanifold_edges, "non-manifold edge");
+  if (topology.watertight()) return {FillMode::kNonzero, "mesh is closed (" + edges_text + "): using nonzero"};
+  if (topology.closedOriented()) {
+    // Closed bodies that touch or overlap (an assembly): every edge is used as often in each direction, so the
+    // winding number is exact everywhere and nonzero gives the union, where vote would equal parity and leave the
+    // overlaps empty.
+    return {FillMode::kNonzero, "mesh is not manifold (" + edges_text +
+                                    ") but closed: every edge is used equally often in both directions (touching or "
+                                    "overlapping bodies): using nonzero, which fills their union"};
+  }
+  if (topology.closes_when_noise_welded) {
+    // Open only by exporter noise (corners that should coincide differ by ~1e-17): closed once vertices within 1e-9
+    // of the bounding-box diagonal are welded. A ray slips through such a seam only if it passes within that
+    // distance of it, so nonzero gives the closed solid (on featuretype it matches the reference exactly), where
+    // vote would cost three ray passes for nothing.
+    return {FillMode::kNonzero, "mesh is not watertight by exact vertex equality (" + edges_text +
+                                    ") but closes when vertices within 1e-9 of its size are welded: using nonzero"};
+  }
+  return {FillMode::kVote, "mesh is not watertight (" + edges_text + "): using vote"};
+}
+
 Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizeParams& params, const ProgressFn& progress,
                                      const MeshTopology* topology) {
   const std::string name = mesh.name.empty() ? std::string("the mesh") : mesh.name;
-  if (mesh.triangles.empty()) return makeError(ErrorCode::kInvalidArgument, name + " has no triangles");
+  if (mesh.triangles.empty()) return makeError(ErrorCode::kParse, name + " has no triangles");
   if (mesh.triangles.size() > UINT32_MAX) {  // the ray casters index triangles with 32 bits
     return makeError(ErrorCode::kLimit, name + " has " + std::to_string(mesh.triangles.size()) +
                                             " triangles; at most 4294967295 can be voxelized");
@@ -615,31 +638,12 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
                                                 plural(topology->nonmanifold_edges, "non-manifold edge")
                                           : std::string();
   switch (params.mode) {
-    case FillMode::kAuto:
-      if (topology->watertight()) {
-        result.mode_used = FillMode::kNonzero;
-        result.mode_reason = "mesh is closed (" + edges_text + "): using nonzero";
-      } else if (topology->closedOriented()) {
-        // Closed bodies that touch or overlap (an assembly): every edge is used as often in each direction, so
-        // the winding number is exact everywhere and nonzero gives the union, where vote would equal parity and
-        // leave the overlaps empty.
-        result.mode_used = FillMode::kNonzero;
-        result.mode_reason = "mesh is not manifold (" + edges_text +
-                             ") but closed: every edge is used equally often in both directions (touching or "
-                             "overlapping bodies): using nonzero, which fills their union";
-      } else if (topology->closes_when_noise_welded) {
-        // Open only by exporter noise (corners that should coincide differ by ~1e-17): closed once vertices within
-        // 1e-9 of the bounding-box diagonal are welded. A ray slips through such a seam only if it passes within
-        // that distance of it, so nonzero gives the closed solid (on featuretype it matches the reference exactly),
-        // where vote would cost three ray passes for nothing.
-        result.mode_used = FillMode::kNonzero;
-        result.mode_reason = "mesh is not watertight by exact vertex equality (" + edges_text +
-                             ") but closes when vertices within 1e-9 of its size are welded: using nonzero";
-      } else {
-        result.mode_used = FillMode::kVote;
-        result.mode_reason = "mesh is not watertight (" + edges_text + "): using vote";
-      }
+    case FillMode::kAuto: {
+      ModeChoice choice = resolveAutoMode(*topology);
+      result.mode_used = choice.mode;
+      result.mode_reason = std::move(choice.reason);
       break;
+    }
     case FillMode::kParity:
     case FillMode::kNonzero:
     case FillMode::kVote:

@@ -75,6 +75,15 @@ struct VoxelizePlan {
 };
 Result<VoxelizePlan> planVoxelization(const Box3d& bounds, const VoxelizeParams& params);
 
+// What FillMode::kAuto resolves to for a mesh of this topology, and why (the words voxelizeSolid reports as
+// mode_reason): nonzero for closed meshes, for touching or overlapping closed bodies and for meshes that close when
+// exporter noise is welded; vote for meshes with holes.
+struct ModeChoice {
+  FillMode mode = FillMode::kNonzero;
+  std::string reason;  // e.g. "mesh is closed (0 boundary edges, 0 non-manifold edges): using nonzero"
+};
+ModeChoice resolveAutoMode(const MeshTopology& topology);
+
 // Voxelizes `mesh`. `topology`, when given, avoids recomputing it for kAuto (and enables the warning about open
 // meshes in the other modes). Fails with kLimit when the estimate exceeds the memory limit (before allocating) or
 // memory runs out, kInvalidArgument for bad parameters or an empty mesh, kCancelled when progress says so. Progress
