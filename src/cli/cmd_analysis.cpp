@@ -37,6 +37,7 @@ struct SectionOptions {
 
 int runSection(const SectionOptions& o) {
   Output out(o.c.json);
+  if (const std::string why = pngOutputProblem(o.out); !why.empty()) return out.fail(kExitUsage, why);
   auto model = loadModel(o.c.file, o.c.mesh, out);
   if (!model) return out.fail(model.error());
   SectionParams p;
@@ -53,7 +54,7 @@ int runSection(const SectionOptions& o) {
   d["width"] = section->mask.width;
   d["height"] = section->mask.height;
   d["output"] = o.out;
-  out.say("section " + o.axis + " = " + std::to_string(o.index) + " (at " + std::to_string(section->position) + " " +
+  out.say("section " + o.axis + " = " + std::to_string(o.index) + " (at " + significant(section->position) + " " +
           model->grid.frame().units + "): " + std::to_string(section->filled) + " filled voxels; wrote " + o.out);
   return out.finish();
 }
@@ -84,8 +85,15 @@ int runPeel(const PeelOptions& o) {
   d["remaining"] = r->remaining_count;
   d["core_voxels"] = r->core_voxels;
   if (!o.out.empty()) d["output"] = o.out;
-  out.say("peeled " + std::to_string(r->removed_per_layer.size()) + " layers; " + std::to_string(r->remaining_count) +
-          " voxels remain; last layer (core) " + std::to_string(r->core_voxels) + " voxels");
+  // The window's words: a model has L skin layers, the last (layer L) is the core.
+  const size_t layers = r->removed_per_layer.size();
+  std::string line =
+      std::to_string(layers) + " layers peeled, " + std::to_string(r->remaining_count) + " voxels remain";
+  if (r->remaining_count == 0 && layers > 0) {
+    line += "; the model has " + std::to_string(layers) + " skin layers and the core (layer " + std::to_string(layers) +
+            ", the thickest region) had " + std::to_string(r->core_voxels) + " voxels";
+  }
+  out.say(line);
   return out.finish();
 }
 
@@ -98,6 +106,7 @@ struct XrayOptions {
 
 int runXray(const XrayOptions& o) {
   Output out(o.c.json);
+  if (const std::string why = pngOutputProblem(o.out); !why.empty()) return out.fail(kExitUsage, why);
   auto model = loadModel(o.c.file, o.c.mesh, out);
   if (!model) return out.fail(model.error());
   XrayParams p;
@@ -105,10 +114,15 @@ int runXray(const XrayOptions& o) {
   p.mode = parseXrayMode(o.mode).value();
   auto x = computeXray(model->grid, p);
   if (!x) return out.fail(x.error());
-  if (auto s = io::savePng(renderXray(*x, o.scale), o.out); !s) return out.fail(s.error());
+  // The image and the CSV are written as one: both or, on any failure, neither.
+  auto png = io::encodePng(renderXray(*x, o.scale), o.out);
+  if (!png) return out.fail(png.error());
+  std::vector<io::PendingFile> files{{o.out, std::move(png).value()}};
   if (!o.csv.empty()) {
-    if (auto s = io::writeFileAtomic(o.csv, xrayCsv(*x)); !s) return out.fail(s.error());
+    const std::string csv = xrayCsv(*x);
+    files.push_back({o.csv, std::vector<uint8_t>(csv.begin(), csv.end())});
   }
+  if (auto s = io::writeFilesAtomic(files); !s) return out.fail(s.error());
   const double h = model->grid.voxelSize();
   auto& d = out.data();
   d["axis"] = o.axis;
@@ -123,8 +137,8 @@ int runXray(const XrayOptions& o) {
   d["output"] = o.out;
   if (!o.csv.empty()) d["csv"] = o.csv;
   out.say("x-ray " + o.mode + " along " + o.axis + ": " + std::to_string(x->rays_hit) + " rays hit; min " +
-          std::to_string(x->min) + ", max " + std::to_string(x->max) + ", mean " + std::to_string(x->mean) +
-          " voxels (voxel size " + std::to_string(h) + " " + model->grid.frame().units + "); wrote " + o.out);
+          std::to_string(x->min) + ", max " + std::to_string(x->max) + ", mean " + significant(x->mean) +
+          " voxels (voxel size " + significant(h) + " " + model->grid.frame().units + "); wrote " + o.out);
   return out.finish();
 }
 
@@ -142,6 +156,14 @@ int runMass(const MassOptions& o) {
   d["filled"] = m.filled;
   d["volume"] = m.volume;
   d["volume_error_bound"] = m.volume_error_bound;
+  d["units"] = model->grid.frame().units;
+  out.say("volume   " + significant(m.volume) + " (+/- " + significant(m.volume_error_bound, 3) + ")");
+  if (m.filled == 0) {
+    // An empty model has no centroid, inertia or bounding box: null, never a made-up number.
+    for (const char* key : {"centroid", "inertia", "bbox", "bbox_min_ijk", "bbox_max_ijk"}) d[key] = nullptr;
+    out.say("the model is empty: it has no centroid, inertia or bounding box");
+    return out.finish();
+  }
   d["centroid"] = jsonVec3(m.centroid);
   nlohmann::ordered_json inertia = nlohmann::ordered_json::array();
   for (int r = 0; r < 3; ++r) inertia.push_back({m.inertia[0][r], m.inertia[1][r], m.inertia[2][r]});
@@ -149,17 +171,14 @@ int runMass(const MassOptions& o) {
   d["bbox"] = {{"min", jsonVec3(m.bbox.min)}, {"max", jsonVec3(m.bbox.max)}};
   d["bbox_min_ijk"] = jsonVec3(m.bbox_min_ijk);
   d["bbox_max_ijk"] = jsonVec3(m.bbox_max_ijk);
-  d["units"] = model->grid.frame().units;
-  out.say("volume   " + std::to_string(m.volume) + " (+/- " + std::to_string(m.volume_error_bound) + ")");
-  out.say("centroid " + std::to_string(m.centroid.x) + " " + std::to_string(m.centroid.y) + " " +
-          std::to_string(m.centroid.z));
+  const auto vec = [](const glm::dvec3& v) {
+    return significant(v.x) + " " + significant(v.y) + " " + significant(v.z);
+  };
+  out.say("centroid " + vec(m.centroid));
   for (int r = 0; r < 3; ++r) {
-    out.say(std::string(r == 0 ? "inertia  " : "         ") + std::to_string(m.inertia[0][r]) + " " +
-            std::to_string(m.inertia[1][r]) + " " + std::to_string(m.inertia[2][r]));
+    out.say(std::string(r == 0 ? "inertia  " : "         ") + vec({m.inertia[0][r], m.inertia[1][r], m.inertia[2][r]}));
   }
-  out.say("bbox     " + std::to_string(m.bbox.min.x) + " " + std::to_string(m.bbox.min.y) + " " +
-          std::to_string(m.bbox.min.z) + "  to  " + std::to_string(m.bbox.max.x) + " " + std::to_string(m.bbox.max.y) +
-          " " + std::to_string(m.bbox.max.z));
+  out.say("bbox     " + vec(m.bbox.min) + "  to  " + vec(m.bbox.max));
   return out.finish();
 }
 

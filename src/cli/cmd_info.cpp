@@ -54,9 +54,8 @@ int runInfo(const InfoOptions& o) {
     }
     out.say("  dims        " + std::to_string(g.nx()) + " x " + std::to_string(g.ny()) + " x " +
             std::to_string(g.nz()));
-    out.say("  voxel size  " + std::to_string(h) + " " + g.frame().units);
-    out.say("  filled      " + std::to_string(filled) + " voxels, volume " +
-            std::to_string(double(filled) * h * h * h));
+    out.say("  voxel size  " + significant(h) + " " + g.frame().units);
+    out.say("  filled      " + std::to_string(filled) + " voxels, volume " + significant(double(filled) * h * h * h));
     out.say("  surface     " + std::to_string(surface) + " voxels");
     out.say("  memory      " + std::to_string(g.memoryBytes() >> 10) + " KiB");
   }

@@ -35,6 +35,7 @@ std::optional<render::StandardView> parseView(const std::string& s) {
 
 int runRender(const RenderOptions& o) {
   Output out(o.json);
+  if (const std::string why = pngOutputProblem(o.out); !why.empty()) return out.fail(kExitUsage, why);
   auto model = loadModel(o.file, o.mesh, out);
   if (!model) return out.fail(model.error());
   VoxelGrid grid = std::move(model->grid);

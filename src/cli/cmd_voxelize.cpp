@@ -94,7 +94,7 @@ int runVoxelize(const VoxelizeOptions& o) {
   if (result->mode_used == FillMode::kVote) {
     out.say(std::to_string(result->disputed_count) + " voxels in dispute between the three ray directions");
   }
-  out.say("wrote " + o.out + " in " + std::to_string(t_written - t0) + " s");
+  out.say("wrote " + o.out + " in " + significant(t_written - t0, 3) + " s");
   return out.finish();
 }
 

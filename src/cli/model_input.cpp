@@ -19,8 +19,9 @@ void addMeshOptions(CLI::App& sub, MeshOptions& options, const std::string& mode
   auto* size = sub.add_option("--voxel-size", options.params.voxel_size,
                               "For a mesh FILE: voxel size in model units (instead of --res)");
   res->excludes(size);
-  sub.add_option(mode_names, options.mode_text, "For a mesh FILE: parity|nonzero|vote|auto (default auto)")
-      ->check(CLI::IsMember({"parity", "nonzero", "vote", "auto"}));
+  auto* mode = sub.add_option(mode_names, options.mode_text, "For a mesh FILE: parity|nonzero|vote|auto (default auto)")
+                   ->check(CLI::IsMember({"parity", "nonzero", "vote", "auto"}));
+  options.mesh_only = {res, size, mode};
   sub.add_option("--threads", options.params.threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(0, 1024));
   sub.add_option("--memory-limit", options.memory_limit_mib,
@@ -51,6 +52,12 @@ Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptio
   LoadedModel m;
   const double t0 = nowSeconds();
   if (io::isVoxelFile(file)) {
+    for (const CLI::Option* o : options.mesh_only) {
+      if (o->count() > 0) {
+        out.warn(o->get_name() + " is ignored: " + file.filename().string() +
+                 " is a voxel file, already voxelized (the option applies to a mesh FILE)");
+      }
+    }
     auto grid = io::loadVoxelFile(file);
     if (!grid) return grid.error();
     m.grid = std::move(grid).value();

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cli/output.h"
 #include "vox/core/mesh.h"
@@ -12,7 +13,8 @@
 
 namespace CLI {
 class App;
-}
+class Option;
+}  // namespace CLI
 
 namespace vox::cli {
 
@@ -20,6 +22,8 @@ struct MeshOptions {
   VoxelizeParams params;
   std::string mode_text = "auto";
   int64_t memory_limit_mib = 0;
+  // The options above that only a mesh FILE uses, to say so when they are given with a voxel file.
+  std::vector<const CLI::Option*> mesh_only;
 };
 
 // Adds --res, --voxel-size, --mode (alias --fill-mode), --threads, --memory-limit to a subcommand. Subcommands

@@ -1,7 +1,10 @@
 #include "cli/output.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+
+#include "vox/io/image_io.h"
 
 namespace vox::cli {
 
@@ -13,6 +16,18 @@ void Output::say(const std::string& line) const {
 void Output::warn(const std::string& line) {
   std::fprintf(stderr, "warning: %s\n", line.c_str());
   warnings_.push_back(line);
+}
+
+std::string significant(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
+std::string pngOutputProblem(const std::string& path) {
+  if (io::hasExtension(path, ".png")) return {};
+  return path + ": unknown image format '" + std::filesystem::path(path).extension().string() +
+         "' (voxmod writes PNG images: use a .png file name)";
 }
 
 int exitCodeFor(const Error& e) {
@@ -33,14 +48,14 @@ int Output::fail(int exit_code, const std::string& message) {
   if (json_) {
     data_["error"] = message;
     data_["warnings"] = warnings_;
-    std::cout << data_.dump() << std::endl;
+    std::cout << data_.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << std::endl;
   }
   return exit_code;
 }
 
 int Output::finish() {
   data_["warnings"] = warnings_;
-  if (json_) std::cout << data_.dump() << std::endl;
+  if (json_) std::cout << data_.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << std::endl;
   return kExitOk;
 }
 

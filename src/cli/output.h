@@ -38,6 +38,13 @@ class Output {
 // Exit code for an error: usage problems 1, no OpenGL 3, everything else (input/output) 2.
 int exitCodeFor(const Error& e);
 
+// Empty when `path` ends in .png (any case); otherwise the message that refuses it as a usage error, as convert
+// refuses an unknown format: voxmod writes images only as PNG and never puts PNG bytes under another name.
+std::string pngOutputProblem(const std::string& path);
+
+// A number for a human line: `digits` significant digits ("%.6g"): 0.000279412, 1e-09, 12345.7; never "0.000000".
+std::string significant(double v, int digits = 6);
+
 // JSON helpers.
 template <class V>
 nlohmann::ordered_json jsonVec3(const V& v) {
