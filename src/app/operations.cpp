@@ -343,6 +343,7 @@ const char* browserTitle(BrowserPurpose purpose) {
 void openBrowser(AppState& state, BrowserPurpose purpose) {
   FileBrowser& b = state.browser;
   b.open_requested = true;
+  b.then = nullptr;  // a continuation belongs to the browsing that set it (saveThen), never to a later one
   b.purpose = purpose;
   b.error.clear();
   std::error_code ec;
@@ -435,6 +436,15 @@ void guardUnsaved(AppState& state, std::function<void(AppState&)> then) {
   }
   state.after_unsaved_prompt = std::move(then);
   state.unsaved_prompt_requested = true;
+}
+
+void saveThen(AppState& state, std::function<void(AppState&)> then) {
+  if (!state.doc.save_path.empty()) {
+    if (saveModel(state, state.doc.save_path) && then) then(state);
+    return;
+  }
+  openBrowser(state, BrowserPurpose::kSaveModel);
+  state.browser.then = std::move(then);  // runs only if a save from this browser succeeds
 }
 
 void requestQuit(AppState& state) {

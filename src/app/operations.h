@@ -35,6 +35,9 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
 bool hasUnsavedChanges(const AppState& state);
 // Runs `then` now when nothing would be lost; otherwise asks Save / Discard / Cancel first.
 void guardUnsaved(AppState& state, std::function<void(AppState&)> then);
+// The unsaved prompt's "Save": save to the document's file, or ask where with the browser; `then` (quit, open
+// another file) runs only after a successful save. A browser opened later for anything else never runs it.
+void saveThen(AppState& state, std::function<void(AppState&)> then);
 void requestQuit(AppState& state);
 
 // ---- Model ----

@@ -304,6 +304,53 @@ TEST(AppDocument, unsavedChangesAskBeforeQuitting) {
   EXPECT_TRUE(state.quit_requested);
 }
 
+// Quit -> Save -> the browser -> a save that fails -> the browser goes away; a later, ordinary Save As must save
+// and nothing more: the quit belonged to the browsing that failed.
+TEST(AppDocument, aQuitWhoseSaveFailedDoesNotComeBackWithALaterSave) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
+  AppState state;
+  startOpen(state, dir / "block.vxm");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  state.panel = Panel::kSkin;
+  peelTo(state, 1);
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model->peeled == 1; }));
+  state.doc.save_path.clear();  // as for a model voxelized from a mesh: no file to save to yet
+  requestQuit(state);
+  ASSERT_TRUE(state.after_unsaved_prompt);
+  auto quit = std::move(state.after_unsaved_prompt);
+  state.after_unsaved_prompt = nullptr;
+  saveThen(state, std::move(quit));  // the prompt's "Save": no file yet, so the browser asks where
+  ASSERT_TRUE(state.browser.open_requested);
+  EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kSaveModel, dir / "block.vxm" / "sub.vxm"));
+  EXPECT_FALSE(state.quit_requested);
+  ASSERT_EQ(state.errors.messages.size(), 1u);
+
+  dispatch(state, ActionId::kSaveAs);  // later, the user saves
+  ASSERT_TRUE(acceptBrowserPath(state, BrowserPurpose::kSaveModel, dir / "good.vxm"));
+  EXPECT_FALSE(hasUnsavedChanges(state));
+  EXPECT_FALSE(state.quit_requested);  // the window stays open
+}
+
+// The prompt's Save that succeeds in its own browser does continue (here: quits).
+TEST(AppDocument, aQuitWhoseSaveSucceedsQuits) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
+  AppState state;
+  startOpen(state, dir / "block.vxm");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  state.panel = Panel::kSkin;
+  peelTo(state, 1);
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model->peeled == 1; }));
+  state.doc.save_path.clear();
+  requestQuit(state);
+  auto quit = std::move(state.after_unsaved_prompt);
+  saveThen(state, std::move(quit));
+  EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kSaveModel, dir / "block.vxm" / "sub.vxm"));
+  EXPECT_TRUE(acceptBrowserPath(state, BrowserPurpose::kSaveModel, dir / "good.vxm"));  // same browser, retried
+  EXPECT_TRUE(state.quit_requested);
+}
+
 // A save that fails (here: a path below a regular file, which even root cannot create) reports the path, keeps the
 // model and its unsaved state, and a save elsewhere then succeeds.
 TEST(AppDocument, aFailedSaveKeepsTheModelAndAnotherPlaceWorks) {

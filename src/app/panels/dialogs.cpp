@@ -117,10 +117,16 @@ void drawVoxelizeDialog(AppState& state) {
     ImGui::TextColored(kErrorColour, "%s", plan.error().message.c_str());
   }
   if (!mesh.topology.watertight()) {
-    ImGui::TextColored(kWarningColour, "The mesh is not watertight (%s boundary, %s non-manifold edges)%s",
+    ImGui::TextColored(kWarningColour, "The mesh is not watertight (%s boundary, %s non-manifold edges).",
                        groupDigits(mesh.topology.boundary_edges).c_str(),
-                       groupDigits(mesh.topology.nonmanifold_edges).c_str(),
-                       p.mode == FillMode::kAuto ? ": auto will use vote mode." : ".");
+                       groupDigits(mesh.topology.nonmanifold_edges).c_str());
+  }
+  if (p.mode == FillMode::kAuto) {
+    // The same words the Model panel shows after voxelizing (mode_reason), before it starts.
+    const ModeChoice choice = resolveAutoMode(mesh.topology);
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 520.0f);
+    ImGui::TextDisabled("auto will use %s: %s", fillModeName(choice.mode), choice.reason.c_str());
+    ImGui::PopTextWrapPos();
   }
   if (mesh.topology.degenerate_triangles > 0) {
     ImGui::TextColored(kWarningColour, "%s degenerate triangles (they cross no ray and are ignored).",
@@ -181,7 +187,8 @@ void drawErrorDialog(AppState& state) {
     ImGui::PopTextWrapPos();
     if (state.errors.messages.size() > 1) ImGui::TextDisabled("(%zu more)", state.errors.messages.size() - 1);
     ImGui::Spacing();
-    if (ImGui::Button("OK", ImVec2(120.0f, 0.0f)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false)) {
+    if (ImGui::Button("OK", ImVec2(120.0f, 0.0f)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
+        ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
       state.errors.messages.erase(state.errors.messages.begin());
       ImGui::CloseCurrentPopup();
     }
@@ -213,13 +220,7 @@ void drawUnsavedPrompt(AppState& state) {
   record("prompt_save");
   if (save) {
     ImGui::CloseCurrentPopup();
-    auto f = then();
-    if (!state.doc.save_path.empty()) {
-      if (saveModel(state, state.doc.save_path) && f) f(state);
-    } else {
-      openBrowser(state, BrowserPurpose::kSaveModel);
-      state.browser.then = std::move(f);
-    }
+    saveThen(state, then());
   }
   ImGui::SameLine();
   const bool discard = ImGui::Button("Discard", ImVec2(110.0f, 0.0f));
@@ -251,7 +252,10 @@ void drawAboutDialog(AppState& state) {
   ImGui::Spacing();
   ImGui::Text("Dear ImGui %s, GLFW %s", ImGui::GetVersion(), glfwGetVersionString());
   ImGui::Text("OpenGL: %s", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
-  if (ImGui::Button("Close", ImVec2(120.0f, 0.0f)) || state.close_dialogs) ImGui::CloseCurrentPopup();
+  if (ImGui::Button("Close", ImVec2(120.0f, 0.0f)) || state.close_dialogs ||
+      ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+    ImGui::CloseCurrentPopup();
+  }
   ImGui::EndPopup();
 }
 

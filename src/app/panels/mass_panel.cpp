@@ -2,6 +2,7 @@
 // unit density. Computed in the background whenever the model changes while the panel is open.
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include <imgui.h>
 
@@ -26,28 +27,48 @@ void drawMassPanel(AppState& state) {
   char buf[160];
   wrappedColoured(ImGui::GetStyle().Colors[ImGuiCol_TextDisabled],
                   std::string("Unit density; each voxel a solid cube. Lengths in ") + u + ".");
+  if (m->filled == 0) {
+    // Nothing to weigh: no centroid, inertia or box exists (never show the sentinels of an empty box).
+    ImGui::Spacing();
+    ImGui::TextWrapped(
+        "The model is empty (%s): it has no volume, centroid, inertia or bounding box.",
+        state.doc.model && state.doc.model->peeled > 0 ? "everything was peeled away" : "no voxel is filled");
+    return;
+  }
   if (beginFactTable("mass")) {
     tableRow("Filled voxels", groupDigits(m->filled));
-    std::snprintf(buf, sizeof buf, "%.6g  (+/- %.3g)", m->volume, m->volume_error_bound);
+    std::snprintf(buf, sizeof buf, "%.6g", m->volume);
     tableRow("Volume", buf);
+    std::snprintf(buf, sizeof buf, "+/- %.3g", m->volume_error_bound);
+    tableRow("Volume bound", buf);
     if (state.doc.mesh && state.doc.model && state.doc.model->peeled == 0 && state.doc.mesh->volume > 0) {
-      std::snprintf(buf, sizeof buf, "%.6g  (voxels differ by %+.3f%%)", state.doc.mesh->volume,
-                    100.0 * (m->volume - state.doc.mesh->volume) / state.doc.mesh->volume);
+      std::snprintf(buf, sizeof buf, "%.6g", state.doc.mesh->volume);
       tableRow("Mesh volume", buf);
+      std::snprintf(buf, sizeof buf, "%+.3f%%", 100.0 * (m->volume - state.doc.mesh->volume) / state.doc.mesh->volume);
+      tableRow("Voxels differ", buf);
     }
-    std::snprintf(buf, sizeof buf, "(%.5g, %.5g, %.5g)", m->centroid.x, m->centroid.y, m->centroid.z);
-    tableRow("Centroid", buf);
-    if (m->filled > 0) {
-      std::snprintf(buf, sizeof buf, "(%.5g, %.5g, %.5g)", m->bbox.min.x, m->bbox.min.y, m->bbox.min.z);
-      tableRow("Box min", buf);
-      std::snprintf(buf, sizeof buf, "(%.5g, %.5g, %.5g)", m->bbox.max.x, m->bbox.max.y, m->bbox.max.z);
-      tableRow("Box max", buf);
-      const glm::dvec3 e = m->bbox.extent();
-      std::snprintf(buf, sizeof buf, "%.5g x %.5g x %.5g", e.x, e.y, e.z);
-      tableRow("Box size", buf);
-      std::snprintf(buf, sizeof buf, "(%d, %d, %d) .. (%d, %d, %d)", m->bbox_min_ijk.x, m->bbox_min_ijk.y,
-                    m->bbox_min_ijk.z, m->bbox_max_ijk.x, m->bbox_max_ijk.y, m->bbox_max_ijk.z);
-      tableRow("Box (voxels)", buf);
+    tableRow("Box (voxels)", "(" + std::to_string(m->bbox_min_ijk.x) + ", " + std::to_string(m->bbox_min_ijk.y) + ", " +
+                                 std::to_string(m->bbox_min_ijk.z) + ") .. (" + std::to_string(m->bbox_max_ijk.x) +
+                                 ", " + std::to_string(m->bbox_max_ijk.y) + ", " + std::to_string(m->bbox_max_ijk.z) +
+                                 ")");
+    ImGui::EndTable();
+  }
+  // Vectors in columns, one number to a cell, so that no number is broken across lines.
+  if (ImGui::BeginTable("vectors", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame)) {
+    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 90.0f);
+    for (const char* axis : {"x", "y", "z"}) ImGui::TableSetupColumn(axis);
+    ImGui::TableHeadersRow();
+    const glm::dvec3 e = m->bbox.extent();
+    const std::pair<const char*, glm::dvec3> rows[] = {
+        {"Centroid", m->centroid}, {"Box min", m->bbox.min}, {"Box max", m->bbox.max}, {"Box size", e}};
+    for (const auto& [label, v] : rows) {
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      ImGui::TextDisabled("%s", label);
+      for (int c = 0; c < 3; ++c) {
+        ImGui::TableSetColumnIndex(c + 1);
+        ImGui::Text("%.5g", v[c]);
+      }
     }
     ImGui::EndTable();
   }

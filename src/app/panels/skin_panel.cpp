@@ -83,10 +83,12 @@ void drawSkinPanel(AppState& state) {
 
   heading("Layers");
   if (beginFactTable("skin_facts")) {
-    tableRow("Current layer", k == 0 ? "0 (the whole model)"
-                                     : std::to_string(k) + " peeled" + (k == layers - 1 ? " (core reached)" : ""));
-    tableRow("Layers to the core",
-             std::to_string(layers) + " (core depth " + formatLength(double(layers) * h, units) + " in face steps)");
+    // The CLI's words: the model has L skin layers, the last (layer L) is the core; peeling stops before it.
+    tableRow("Skin layers", std::to_string(layers) + " (the core is layer " + std::to_string(layers) + ", at depth " +
+                                formatLength(double(layers) * h, units) + " in face steps)");
+    tableRow("Peeled", k == 0 ? std::string("none (the whole model)")
+                              : std::to_string(k) + " of " + std::to_string(layers) + " layers" +
+                                    (k == layers - 1 ? ": only the core remains" : ""));
     tableRow("Remaining voxels", groupDigits(total - gone) + " of " + groupDigits(total));
     if (k > 0 && size_t(k) <= removed.size()) tableRow("Layer removed", groupDigits(removed[size_t(k) - 1]));
     tableRow("Core voxels", groupDigits(depth->coreVoxels()));
