@@ -209,4 +209,32 @@ std::string xrayCsv(const XrayResult& xray) {
   return out;
 }
 
+ScalarMapLegend xrayLegend(const XrayResult& xray) {
+  // Which grid axes the image shows (vox/analysis/analysis.h: X -> (y, z), Y -> (x, z), Z -> (x, y)).
+  static constexpr Axis kRight[] = {Axis::kY, Axis::kX, Axis::kX};
+  static constexpr Axis kUp[] = {Axis::kZ, Axis::kZ, Axis::kY};
+  const int a = int(xray.axis);
+  const double h = xray.voxel_size;
+  ScalarMapLegend l;
+  l.title = std::string("X-ray along ") + axisName(xray.axis) + ": " + xrayModeName(xray.mode) + " thickness per ray";
+  l.value_name = "voxels";
+  l.units_per_value = h;
+  l.units = xray.units.empty() || xray.units == "model" ? "model units" : xray.units;
+  l.right_axis = axisName(kRight[a]);
+  l.up_axis = axisName(kUp[a]);
+  char buf[200];
+  if (xray.rays_hit == 0) {
+    l.notes.push_back("No ray hits material.");
+    return l;
+  }
+  std::snprintf(buf, sizeof buf, "%lld rays hit material: min %lld, max %lld, mean %.2f voxels",
+                static_cast<long long>(xray.rays_hit), static_cast<long long>(xray.min),
+                static_cast<long long>(xray.max), xray.mean);
+  l.notes.push_back(buf);
+  std::snprintf(buf, sizeof buf, "min %.4g, max %.4g, mean %.4g %s (voxel size %.4g %s)", double(xray.min) * h,
+                double(xray.max) * h, xray.mean * h, l.units.c_str(), h, l.units.c_str());
+  l.notes.push_back(buf);
+  return l;
+}
+
 }  // namespace vox

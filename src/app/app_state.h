@@ -114,7 +114,6 @@ struct SkinUi {
 
 struct XrayUi {
   XrayParams params;
-  int32_t image_scale = 2;
 };
 
 struct VoxelizeDialog {
@@ -265,10 +264,7 @@ struct AppState {
   std::string section_error;
   Texture section_texture;
   XrayKey xray_texture_key;
-  XrayKey xray_probe_key;  // the figure sizes at scales 1 and 2 (for the layout) were measured for this X-ray
-  int32_t xray_probe_size[4] = {0, 0, 0, 0};
   Texture xray_texture;
-  int32_t xray_map_x = -1, xray_map_y = -1;  // the thickness map inside the rendered figure (-1: unknown)
   std::optional<render::Box3> model_bounds;
 
   Viewport viewport;

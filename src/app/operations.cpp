@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "app/viewport.h"
+#include "vox/io/figure.h"
 #include "vox/io/file_util.h"
 #include "vox/io/image_io.h"
 #include "vox/io/stl.h"
@@ -43,7 +44,26 @@ std::string lowerExtension(const std::filesystem::path& p) {
 }
 
 // Makes `snapshot` the current model. The previous one goes on the undo stack when `undoable`.
+// A new grid (re-voxelized, or undo / redo across a voxelization) may lie on another lattice; the camera lives in
+// voxel-index space, so it is carried over to the new lattice to keep showing the same part of the model. A first
+// model is fitted instead.
+void keepTheView(AppState& state, const GridFrame& before, bool had_model) {
+  const GridFrame& now = state.model.frame();
+  if (!had_model) {
+    state.view.fit_pending = true;
+  } else if (now.voxel_size != before.voxel_size || now.origin != before.origin) {
+    if (before.voxel_size > 0 && now.voxel_size > 0) {
+      state.view.camera =
+          render::reframed(state.view.camera, before.origin, before.voxel_size, now.origin, now.voxel_size);
+    } else {
+      state.view.fit_pending = true;
+    }
+  }
+}
+
 void setModel(AppState& state, ModelSnapshot snapshot, bool undoable) {
+  const bool had_model = state.doc.model.has_value();
+  const GridFrame before = state.model.frame();
   if (undoable && state.doc.model) {
     state.doc.undo_stack.push_back(std::move(*state.doc.model));
     state.doc.redo_stack.clear();
@@ -52,6 +72,7 @@ void setModel(AppState& state, ModelSnapshot snapshot, bool undoable) {
   state.model = state.doc.model->grid;
   state.model_version = state.doc.model->version;
   state.viewport.dirty = true;
+  keepTheView(state, before, had_model);
   // Keep the section where it was when it still fits; start in the middle otherwise.
   const int32_t n = axisLength(state, state.section.axis);
   if (state.section.index < 0 || state.section.index >= n) state.section.index = n / 2;
@@ -135,9 +156,7 @@ void applyVoxelized(AppState& state, VoxelizeResult result, const VoxelizeParams
   origin->what = "voxelized at " + res_text + " (" + origin->mode_used + ")";
   VoxelGrid grid = std::move(result.grid);
   if (state.doc.mesh) grid.frame().source = state.doc.mesh->path.filename().string();
-  const bool first = !state.doc.model.has_value();
   setModel(state, newBase(state, std::move(grid), std::move(origin), "voxelize " + res_text), true);
-  if (first) state.view.fit_pending = true;
   if (state.voxelized_counts_as_saved) state.doc.saved_version = state.doc.model->version;
   state.voxelized_counts_as_saved = false;
 }
@@ -265,13 +284,11 @@ bool exportSectionPng(AppState& state, const std::filesystem::path& path) {
   return true;
 }
 
-namespace {
 const XrayResult* currentXray(const AppState& state) {
   const XrayKey key{state.model_version, state.xray.params.axis, state.xray.params.mode};
   const auto* x = state.xray_result.get(key);
   return x ? x->get() : nullptr;
 }
-}  // namespace
 
 bool exportXrayPng(AppState& state, const std::filesystem::path& path) {
   const XrayResult* x = currentXray(state);
@@ -282,7 +299,7 @@ bool exportXrayPng(AppState& state, const std::filesystem::path& path) {
   // Independent of the window: about 512 pixels across the longer side of the map.
   const int32_t longest = std::max({x->thickness.width, x->thickness.height, 1});
   const int32_t scale = std::clamp((512 + longest - 1) / longest, 1, 8);
-  if (Status s = io::savePng(renderXray(*x, scale), path); !s) {
+  if (Status s = io::savePng(io::drawScalarMapFigure(x->thickness, x->max, xrayLegend(*x), scale).image, path); !s) {
     reportError(state, describe(s.error(), path), path);
     return false;
   }

@@ -65,6 +65,8 @@ void redo(AppState& state);
 void updateDocument(AppState& state);
 // The section for the current params (null when there is no model).
 const Section* currentSection(AppState& state);
+// The X-ray for the current params, once computed (null before, and without a model).
+const XrayResult* currentXray(const AppState& state);
 // Number of voxels along an axis of the model (0 without one).
 int32_t axisLength(const AppState& state, Axis axis);
 

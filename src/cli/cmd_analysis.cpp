@@ -6,6 +6,7 @@
 #include "cli/commands.h"
 #include "cli/model_input.h"
 #include "vox/analysis/analysis.h"
+#include "vox/io/figure.h"
 #include "vox/io/file_util.h"
 #include "vox/io/image_io.h"
 #include "vox/io/voxel_file.h"
@@ -115,7 +116,7 @@ int runXray(const XrayOptions& o) {
   auto x = computeXray(model->grid, p);
   if (!x) return out.fail(x.error());
   // The image and the CSV are written as one: both or, on any failure, neither.
-  auto png = io::encodePng(renderXray(*x, o.scale), o.out);
+  auto png = io::encodePng(io::drawScalarMapFigure(x->thickness, x->max, xrayLegend(*x), o.scale).image, o.out);
   if (!png) return out.fail(png.error());
   std::vector<io::PendingFile> files{{o.out, std::move(png).value()}};
   if (!o.csv.empty()) {

@@ -137,4 +137,12 @@ double pixelsPerVoxel(const Camera& camera, double viewport_height_px, double de
   return viewport_height_px / (2.0 * half_height);
 }
 
+Camera reframed(const Camera& camera, const glm::dvec3& from_origin, double from_voxel, const glm::dvec3& to_origin,
+                double to_voxel) {
+  Camera out = camera;
+  out.target = (from_origin + camera.target * from_voxel - to_origin) / to_voxel;
+  out.distance = camera.distance * from_voxel / to_voxel;
+  return out;
+}
+
 }  // namespace vox::render

@@ -15,6 +15,7 @@
 #include "app/script.h"
 #include "app/settings.h"
 #include "support/test_support.h"
+#include "vox/io/stl.h"
 #include "vox/io/voxel_file.h"
 
 namespace vox::app {
@@ -349,6 +350,42 @@ TEST(AppDocument, aQuitWhoseSaveSucceedsQuits) {
   EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kSaveModel, dir / "block.vxm" / "sub.vxm"));
   EXPECT_TRUE(acceptBrowserPath(state, BrowserPurpose::kSaveModel, dir / "good.vxm"));  // same browser, retried
   EXPECT_TRUE(state.quit_requested);
+}
+
+// Re-voxelizing at another resolution while zoomed in keeps showing the same part of the model: the camera (in
+// voxel units) is carried to the new lattice, and back on undo. It was kept as it was, and the view went blank.
+TEST(AppDocument, reVoxelizingKeepsTheViewOnTheSamePartOfTheModel) {
+  test::TempDir dir;
+  TriangleMesh cube = test::unitCubeMesh();
+  for (Triangle& t : cube.triangles) {
+    for (glm::vec3& v : t.v) v = v * glm::vec3(4, 2, 1) + glm::vec3(-1, 3, 5);  // a 4 x 2 x 1 box, off the origin
+  }
+  ASSERT_TRUE(io::saveStlBinary(cube, dir / "box.stl").ok());
+  AppState state;
+  startOpen(state, dir / "box.stl");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.mesh != nullptr; }));
+  startVoxelize(state, VoxelizeParams{.resolution = 20});
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  EXPECT_TRUE(state.view.fit_pending);  // the first model is fitted
+  state.view.fit_pending = false;       // as the viewport does
+  const GridFrame a = state.model.frame();
+  state.view.camera.target = glm::dvec3(3.0, 2.0, 1.0);  // zoomed in on one corner region
+  state.view.camera.distance = 6.0;
+  const glm::dvec3 model_point = a.origin + state.view.camera.target * a.voxel_size;
+
+  const uint64_t before = state.model_version;
+  startVoxelize(state, VoxelizeParams{.resolution = 100});
+  ASSERT_TRUE(pump(state, [&] { return state.model_version != before; }));
+  const GridFrame b = state.model.frame();
+  ASSERT_NE(a.voxel_size, b.voxel_size);
+  EXPECT_FALSE(state.view.fit_pending);  // the user's zoom is kept, not thrown away
+  const glm::dvec3 target = b.origin + state.view.camera.target * b.voxel_size;
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(target[i], model_point[i], 1e-9) << i;
+  EXPECT_NEAR(state.view.camera.distance * b.voxel_size, 6.0 * a.voxel_size, 1e-9);
+
+  undo(state);
+  EXPECT_NEAR(state.view.camera.distance, 6.0, 1e-9);
+  EXPECT_NEAR(state.view.camera.target.x, 3.0, 1e-9);
 }
 
 // A save that fails (here: a path below a regular file, which even root cannot create) reports the path, keeps the

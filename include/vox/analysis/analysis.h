@@ -121,8 +121,9 @@ struct XrayResult {
   double mean = 0.0;
 };
 Result<XrayResult> computeXray(const VoxelGrid& grid, const XrayParams& params);
-// Colour-scaled image with a colour bar and a legend (values in voxels and model units); `scale` pixels per ray.
-ImageRgb renderXray(const XrayResult& xray, int32_t scale = 1);
+// What the X-ray's legend says: title, the image axes, values in voxels and model units, the statistics. Drawn by
+// io::drawScalarMapFigure for PNG export and by the window as its own text.
+ScalarMapLegend xrayLegend(const XrayResult& xray);
 // CSV: header "u,v,thickness_voxels,thickness_<units>", one line per ray that hits material.
 std::string xrayCsv(const XrayResult& xray);
 

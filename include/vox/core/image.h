@@ -2,6 +2,7 @@
 // Plain 2D images produced by analysis (sections, X-ray maps) and the renderer; row 0 is the top row.
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace vox {
@@ -29,5 +30,17 @@ struct Rgba8 {
 
 using ImageRgb = Image2D<Rgb8>;
 using ImageRgba = Image2D<Rgba8>;
+
+// What a legend says about a map of non-negative integer values (0: no material on that ray), such as an X-ray:
+// analysis writes the words (it knows what the values mean), the figure module draws them (io::drawScalarMapFigure)
+// and the window shows them as its own text.
+struct ScalarMapLegend {
+  std::string title;                // e.g. "X-ray along z: max thickness per ray"
+  std::string value_name;           // e.g. "voxels"
+  double units_per_value = 1.0;     // model units per value (the voxel size)
+  std::string units;                // e.g. "mm", "model units"
+  std::string right_axis, up_axis;  // the grid axes along the image's columns and rows, e.g. "x", "y"
+  std::vector<std::string> notes;   // statistics, one line each
+};
 
 }  // namespace vox

@@ -79,6 +79,12 @@ struct Camera {
 // Yaw and pitch (degrees) of a standard view.
 glm::dvec2 standardViewAngles(StandardView view);
 
+// The same view of the same part in another grid's voxel-index space, for a model re-voxelized at another
+// resolution (or an undo back to one): a point p of grid A is the model point from_origin + p * from_voxel, and in
+// grid B it is (that - to_origin) / to_voxel. Target and distance move with it; the angles stay.
+Camera reframed(const Camera& camera, const glm::dvec3& from_origin, double from_voxel, const glm::dvec3& to_origin,
+                double to_voxel);
+
 // Pixels covered by one voxel edge at view-space depth `depth` (distance along the view axis; ignored for
 // orthographic) in a viewport `viewport_height_px` tall. The thesis's "point size S" (section 6.2).
 double pixelsPerVoxel(const Camera& camera, double viewport_height_px, double depth);

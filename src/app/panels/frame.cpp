@@ -80,27 +80,15 @@ ImageLayout layoutImage(AppState& state, float w, float h) {
   if (state.model.empty() || (state.panel != Panel::kSection && state.panel != Panel::kXray)) return l;
   const float text = 3.0f * ImGui::GetTextLineHeightWithSpacing();  // title and read-out lines around the image
   constexpr float kMost = 0.6f, kLeast = 0.35f;
-  if (state.panel == Panel::kXray) {
-    const XrayFigure f = xrayFigureSize(state);
-    if (f.w1 == 0) return l;  // not computed yet: the whole area for the 3D view
-    const ImVec2 margin(16.0f, text);
-    const int32_t side = f.bestScale(ImVec2(kMost * w - margin.x, h - margin.y));
-    const int32_t stacked = f.bestScale(ImVec2(w - margin.x, kMost * h - margin.y));
-    if (stacked >= side) {
-      const float ih = std::clamp(f.sizeAt(stacked).y + margin.y, kLeast * h, kMost * h);
-      l.image = ImVec2(w, std::floor(ih));
-      l.view = ImVec2(w, h - l.image.y);
-      l.image_offset = ImVec2(0.0f, l.view.y);
-    } else {
-      const float iw = std::clamp(f.sizeAt(side).x + margin.x, kLeast * w, kMost * w);
-      l.image = ImVec2(std::floor(iw), h);
-      l.view = ImVec2(w - l.image.x, h);
-      l.image_offset = ImVec2(l.view.x, 0.0f);
-    }
-    return l;
-  }
   ImVec2 fixed(40.0f, text + 16.0f), scalable(1.0f, 1.0f);
-  if (const Section* s = currentSection(state)) scalable = ImVec2(float(s->mask.width), float(s->mask.height));
+  if (state.panel == Panel::kXray) {
+    const XrayResult* x = currentXray(state);
+    if (!x) return l;  // not computed yet: the whole area for the 3D view
+    fixed = ImVec2(xrayLegendSize().x + 40.0f, text + 16.0f);
+    scalable = ImVec2(float(x->thickness.width), float(x->thickness.height));
+  } else if (const Section* s = currentSection(state)) {
+    scalable = ImVec2(float(s->mask.width), float(s->mask.height));
+  }
   const float side = fitScale(fixed, scalable, ImVec2(kMost * w, h));
   const float stacked = fitScale(fixed, scalable, ImVec2(w, kMost * h));
   if (stacked >= side) {

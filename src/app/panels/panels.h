@@ -27,16 +27,8 @@ void drawMassPanel(AppState& state);
 // The 2D images beside the 3D view (Section and X-ray panels).
 void drawSectionImage(AppState& state);
 void drawXrayImage(AppState& state);
-// Size of the X-ray figure (renderXray: map plus legend) as a function of its scale, measured at scales 1 and 2
-// for the layout; the legend does not grow with the scale, so sizeAt() over-estimates a little, never under.
-struct XrayFigure {
-  int32_t w1 = 0, h1 = 0, w2 = 0, h2 = 0, map_width = 0, map_height = 0;
-  ImVec2 sizeAt(int32_t scale) const;
-  // Largest scale (1..16) whose figure fits the area; 1 when none does.
-  int32_t bestScale(ImVec2 area) const;
-};
-// Zero before the X-ray is computed.
-XrayFigure xrayFigureSize(AppState& state);
+// Room the X-ray image needs besides its map (title, colour bar and labels, read-out), in screen pixels.
+ImVec2 xrayLegendSize();
 
 // Dialogs.
 void drawVoxelizeDialog(AppState& state);

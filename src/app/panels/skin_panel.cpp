@@ -84,8 +84,8 @@ void drawSkinPanel(AppState& state) {
   heading("Layers");
   if (beginFactTable("skin_facts")) {
     // The CLI's words: the model has L skin layers, the last (layer L) is the core; peeling stops before it.
-    tableRow("Skin layers", std::to_string(layers) + " (the core is layer " + std::to_string(layers) + ", at depth " +
-                                formatLength(double(layers) * h, units) + " in face steps)");
+    tableRow("Skin layers", std::to_string(layers) + " (the core is layer " + std::to_string(layers) + ")");
+    tableRow("Core depth", formatLength(double(layers) * h, units) + " in face steps");
     tableRow("Peeled", k == 0 ? std::string("none (the whole model)")
                               : std::to_string(k) + " of " + std::to_string(layers) + " layers" +
                                     (k == layers - 1 ? ": only the core remains" : ""));

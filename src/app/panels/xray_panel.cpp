@@ -1,6 +1,6 @@
 // X-ray panel (thesis 5.2.3 and 6.5): thickness of material along rays parallel to an axis, per ray the thinnest
-// run (min), the thickest run (max) or the sum of the runs (total); the picture comes from vox::renderXray with
-// its colour bar and legend, and hovering it reads the thickness of one ray.
+// run (min), the thickest run (max) or the sum of the runs (total). The map is a texture of one texel per ray; its
+// colour bar, labels and axes are drawn as UI at screen size, and hovering the map reads the thickness of one ray.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,39 +12,9 @@
 #include "app/operations.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
+#include "vox/io/figure.h"
 
 namespace vox::app {
-namespace {
-
-constexpr const char* kAxisNames[] = {"x", "y", "z"};
-
-const XrayResult* currentXray(const AppState& state) {
-  const XrayKey key{state.model_version, state.xray.params.axis, state.xray.params.mode};
-  const auto* x = state.xray_result.get(key);
-  return x ? x->get() : nullptr;
-}
-
-// Where renderXray put the thickness map inside its figure. The analysis module does not report its layout, so
-// this finds the one-pixel frame (grey 120) that renderXray draws around a map of exactly map_w x map_h pixels,
-// scanning from the top left (the map is left of the colour bar, whose frame has a different size). Returns false
-// when no such frame exists; the hover read-out is then off.
-bool findMapOrigin(const ImageRgb& img, int32_t map_w, int32_t map_h, int32_t& x_out, int32_t& y_out) {
-  constexpr Rgb8 kFrame{120, 120, 120};
-  for (int32_t y = 0; y + map_h + 1 < img.height; ++y) {
-    for (int32_t x = 0; x + map_w + 1 < img.width; ++x) {
-      if (img.at(x, y) == kFrame && img.at(x + 1, y) == kFrame && img.at(x, y + 1) == kFrame &&
-          img.at(x + map_w + 1, y) == kFrame && img.at(x, y + map_h + 1) == kFrame &&
-          img.at(x + map_w + 1, y + map_h + 1) == kFrame) {
-        x_out = x + 1;
-        y_out = y + 1;
-        return true;
-      }
-    }
-  }
-  return false;
-}
-
-}  // namespace
 
 void drawXrayPanel(AppState& state) {
   if (state.model.empty()) {
@@ -122,35 +92,10 @@ void drawXrayPanel(AppState& state) {
   if (ImGui::Button("Export CSV...")) dispatch(state, ActionId::kExportXrayCsv);
 }
 
-ImVec2 XrayFigure::sizeAt(int32_t scale) const {
-  if (scale <= 1) return ImVec2(float(w1), float(h1));
-  return ImVec2(float(w2 + (scale - 2) * map_width), float(h2 + (scale - 2) * map_height));
-}
-
-int32_t XrayFigure::bestScale(ImVec2 area) const {
-  int32_t best = 1;
-  for (int32_t s = 2; s <= 16; ++s) {
-    const ImVec2 size = sizeAt(s);
-    if (size.x > area.x || size.y > area.y) break;
-    best = s;
-  }
-  return best;
-}
-
-XrayFigure xrayFigureSize(AppState& state) {
-  const XrayResult* x = currentXray(state);
-  if (!x) return {};
-  const XrayKey key{state.model_version, x->axis, x->mode};
-  int32_t* p = state.xray_probe_size;
-  if (!(key == state.xray_probe_key) || p[0] == 0) {
-    const ImageRgb one = renderXray(*x, 1), two = renderXray(*x, 2);
-    state.xray_probe_key = key;
-    p[0] = one.width;
-    p[1] = one.height;
-    p[2] = two.width;
-    p[3] = two.height;
-  }
-  return {p[0], p[1], p[2], p[3], x->thickness.width, x->thickness.height};
+ImVec2 xrayLegendSize() {
+  // Title above the map, the colour bar with two columns of labels beside it, the read-out below.
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  return ImVec2(ImGui::CalcTextSize("0000000  000.00000").x + 64.0f, 3.5f * line + 8.0f);
 }
 
 void drawXrayImage(AppState& state) {
@@ -160,59 +105,111 @@ void drawXrayImage(AppState& state) {
     return;
   }
   const int32_t tw = x->thickness.width, th = x->thickness.height;
-  const float readout_h = 2.0f * ImGui::GetTextLineHeightWithSpacing();
-  const ImVec2 avail = ImGui::GetContentRegionAvail();
   const XrayKey key{state.model_version, x->axis, x->mode};
+  const ScalarMapLegend legend = xrayLegend(*x);
 
-  // The largest whole number of pixels per ray whose figure fits (whole numbers keep the rays equal squares and the
-  // legend's pixel font sharp).
-  const int32_t fit_scale = xrayFigureSize(state).bestScale(ImVec2(avail.x, avail.y - readout_h));
-  if (!(key == state.xray_texture_key) || state.xray_texture.empty() || fit_scale != state.xray.image_scale) {
-    state.xray.image_scale = fit_scale;
-    const ImageRgb img = renderXray(*x, fit_scale);
-    if (!findMapOrigin(img, tw * fit_scale, th * fit_scale, state.xray_map_x, state.xray_map_y)) {
-      state.xray_map_x = state.xray_map_y = -1;
+  // The map, one texel per ray, coloured once per change; the texture shows it magnified without smoothing.
+  if (!(key == state.xray_texture_key) || state.xray_texture.empty()) {
+    ImageRgb map(tw, th);
+    const double top = double(std::max<int64_t>(x->max, 1));
+    for (int32_t v = 0; v < th; ++v) {
+      for (int32_t u = 0; u < tw; ++u) {
+        const int32_t t = x->thickness.at(u, v);
+        map.at(u, v) = t > 0 ? io::rampColour(double(t) / top) : io::kNoMaterialColour;
+      }
     }
-    state.xray_texture.upload(img);
+    state.xray_texture.upload(map);
     state.xray_texture_key = key;
   }
-  const Texture& tex = state.xray_texture;
-  const float fit = std::min(1.0f, std::min(avail.x / float(tex.width()), (avail.y - readout_h) / float(tex.height())));
-  const ImVec2 size(float(tex.width()) * fit, float(tex.height()) * fit);
-  const ImVec2 origin = ImGui::GetCursorScreenPos();
-  ImGui::Image(textureId(tex.id()), size);
+
+  ImGui::TextUnformatted(legend.title.c_str());
+  ImGui::Dummy(ImVec2(0.0f, ImGui::GetTextLineHeight() * 0.5f));  // room for the colour bar's column headers
+  // Room left of the map for the "up" axis label.
+  const float axis_w = std::max(ImGui::CalcTextSize(legend.up_axis.c_str()).x, ImGui::CalcTextSize("^").x) + 6.0f;
+  ImGui::SetCursorPosX(ImGui::GetCursorPosX() + axis_w);
+  const ImVec2 legend_size = xrayLegendSize();
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  float fit = std::min((avail.x - legend_size.x - axis_w) / float(tw), (avail.y - 2.0f * line - 4.0f) / float(th));
+  if (fit >= 1.0f) fit = std::floor(fit);  // whole pixels per ray keep every ray the same square
+  fit = std::max(fit, 0.05f);
+  const ImVec2 size(float(tw) * fit, float(th) * fit);
+  const ImVec2 map0 = ImGui::GetCursorScreenPos();
+  ImGui::Image(textureId(state.xray_texture.id()), size);
+  const bool hovered = ImGui::IsItemHovered();
   {
     const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
     state.widget_rects.push_back({"xray_image", r0.x, r0.y, r1.x, r1.y});
   }
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->AddRect(ImVec2(map0.x - 1.0f, map0.y - 1.0f), ImVec2(map0.x + size.x + 1.0f, map0.y + size.y + 1.0f),
+              IM_COL32(120, 120, 120, 255));
 
-  // Hover read-out: the ray under the mouse, in voxels and model units.
+  // The colour bar beside the map, as UI at screen size: 0 at the bottom, the maximum at the top, ticks labelled in
+  // voxels and in model units.
+  const float bar_h = std::max(size.y, 6.0f * line);
+  const ImVec2 bar0(map0.x + size.x + 16.0f, map0.y);
+  const float bar_w = 14.0f;
+  constexpr int kBands = 32;
+  for (int i = 0; i < kBands; ++i) {
+    const auto colour = [](double t) {
+      const Rgb8 c = io::rampColour(t);
+      return IM_COL32(c.r, c.g, c.b, 255);
+    };
+    const double t_top = 1.0 - double(i) / kBands, t_bottom = 1.0 - double(i + 1) / kBands;
+    const float y0 = bar0.y + bar_h * float(i) / kBands, y1 = bar0.y + bar_h * float(i + 1) / kBands;
+    dl->AddRectFilledMultiColor(ImVec2(bar0.x, y0), ImVec2(bar0.x + bar_w, y1), colour(t_top), colour(t_top),
+                                colour(t_bottom), colour(t_bottom));
+  }
+  dl->AddRect(ImVec2(bar0.x - 1.0f, bar0.y - 1.0f), ImVec2(bar0.x + bar_w + 1.0f, bar0.y + bar_h + 1.0f),
+              IM_COL32(120, 120, 120, 255));
+  const ImU32 ink = ImGui::GetColorU32(ImGuiCol_Text);
+  const float text_h = ImGui::GetTextLineHeight();
+  const float value_x = bar0.x + bar_w + 8.0f;
+  const float unit_x = value_x + ImGui::CalcTextSize("0000000").x + 8.0f;
+  const float header_y = bar0.y - 1.5f * text_h - 2.0f;
+  dl->AddText(ImVec2(value_x, header_y), ink, legend.value_name.c_str());
+  dl->AddText(ImVec2(unit_x, header_y), ink, legend.units.c_str());
+  const std::vector<int64_t> ticks = io::colourBarTicks(x->max);
+  float last_y = -1e9f;
+  for (size_t i = ticks.size(); i-- > 0;) {  // from the maximum down, so the maximum always gets its label
+    const float f = x->max > 0 ? float(ticks[i]) / float(x->max) : 0.0f;
+    const float ty = bar0.y + (1.0f - f) * bar_h;
+    if (i + 1 != ticks.size() && ty - text_h * 0.5f < last_y + text_h) continue;  // would overlap the label above
+    dl->AddLine(ImVec2(bar0.x + bar_w, ty), ImVec2(bar0.x + bar_w + 5.0f, ty), ink);
+    char units_label[32];
+    std::snprintf(units_label, sizeof units_label, "%.4g", double(ticks[i]) * legend.units_per_value);
+    dl->AddText(ImVec2(value_x, ty - text_h * 0.5f), ink, std::to_string(ticks[i]).c_str());
+    dl->AddText(ImVec2(unit_x, ty - text_h * 0.5f), ink, units_label);
+    last_y = ty - text_h * 0.5f;
+  }
+  // Image axes: "right" under the map's bottom-right corner, "up" beside its top-left corner.
+  const std::string right = legend.right_axis + " >";
+  dl->AddText(ImVec2(map0.x + size.x - ImGui::CalcTextSize(right.c_str()).x, map0.y + size.y + 2.0f), ink,
+              right.c_str());
+  dl->AddText(ImVec2(map0.x - ImGui::CalcTextSize("^").x - 4.0f, map0.y), ink, "^");
+  dl->AddText(ImVec2(map0.x - ImGui::CalcTextSize(legend.up_axis.c_str()).x - 4.0f, map0.y + text_h), ink,
+              legend.up_axis.c_str());
+  ImGui::Dummy(ImVec2(0.0f, std::max(0.0f, bar_h - size.y) + line * 0.5f));
+
+  // Hover read-out: the ray under the mouse, found from where the map was drawn.
   std::string readout = "Hover the map to read the thickness of one ray.";
-  if (ImGui::IsItemHovered() && state.xray_map_x >= 0) {
+  if (hovered) {
     const ImVec2 m = ImGui::GetIO().MousePos;
-    const float px = (m.x - origin.x) / fit - float(state.xray_map_x);
-    const float py = (m.y - origin.y) / fit - float(state.xray_map_y);
-    const int32_t s = state.xray.image_scale;
-    const int32_t u = int32_t(std::floor(px / float(s))), row = int32_t(std::floor(py / float(s)));
+    const int32_t u = int32_t(std::floor((m.x - map0.x) / fit)), row = int32_t(std::floor((m.y - map0.y) / fit));
     if (u >= 0 && u < tw && row >= 0 && row < th) {
-      static constexpr int kRight[] = {1, 0, 0}, kUp[] = {2, 2, 1};
-      const int a = int(x->axis);
       const int32_t v = th - 1 - row;  // row 0 holds the largest "up" index
       const int32_t t = x->thickness.at(u, row);
-      const ImVec2 map0(origin.x + float(state.xray_map_x) * fit, origin.y + float(state.xray_map_y) * fit);
-      const float cell = float(s) * fit;
-      const ImVec2 c0(map0.x + float(u) * cell, map0.y + float(row) * cell);
-      markCell(map0, ImVec2(map0.x + float(tw) * cell, map0.y + float(th) * cell), c0,
-               ImVec2(c0.x + cell, c0.y + cell));
+      const ImVec2 c0(map0.x + float(u) * fit, map0.y + float(row) * fit);
+      markCell(map0, ImVec2(map0.x + size.x, map0.y + size.y), c0, ImVec2(c0.x + fit, c0.y + fit));
       char buf[200];
-      const std::string units = state.model.frame().units;
       if (t > 0) {
-        std::snprintf(buf, sizeof buf, "Ray %s = %d, %s = %d: %s thickness %d voxels = %.4g %s", kAxisNames[kRight[a]],
-                      u, kAxisNames[kUp[a]], v, xrayModeName(x->mode), t, double(t) * x->voxel_size,
-                      units == "model" ? "model units" : units.c_str());
+        std::snprintf(buf, sizeof buf, "Ray %s = %d, %s = %d: %s thickness %d voxels = %.4g %s",
+                      legend.right_axis.c_str(), u, legend.up_axis.c_str(), v, xrayModeName(x->mode), t,
+                      double(t) * x->voxel_size, legend.units.c_str());
       } else {
-        std::snprintf(buf, sizeof buf, "Ray %s = %d, %s = %d: no material", kAxisNames[kRight[a]], u,
-                      kAxisNames[kUp[a]], v);
+        std::snprintf(buf, sizeof buf, "Ray %s = %d, %s = %d: no material", legend.right_axis.c_str(), u,
+                      legend.up_axis.c_str(), v);
       }
       readout = buf;
     }

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "analysis/tiny_font.h"
 #include "support/test_support.h"
 #include "vox/analysis/analysis.h"
+#include "vox/io/figure.h"
 #include "vox/io/image_io.h"
 #include "vox/io/voxel_file.h"
 
@@ -19,9 +19,9 @@ namespace vox {
 namespace {
 
 namespace fs = std::filesystem;
-using analysis_detail::drawText;
-using analysis_detail::kGlyphHeight;
-using analysis_detail::textWidth;
+using io::drawText;
+using io::textLineHeight;
+using io::textWidth;
 
 constexpr int kTextScale = 2;
 constexpr Rgb8 kWhite{255, 255, 255};
@@ -41,7 +41,8 @@ VoxelGrid loadReference(const fs::path& shared, const std::string& file) {
 // Images side by side on a white canvas, each with a caption underneath.
 ImageRgb strip(const std::vector<ImageRgb>& images, const std::vector<std::string>& captions,
                const std::string& title) {
-  const int gap = 16, caption_h = (kGlyphHeight + 6) * kTextScale, title_h = title.empty() ? 0 : caption_h + 4;
+  const int gap = 16, caption_h = textLineHeight(kTextScale) + 4 * kTextScale,
+            title_h = title.empty() ? 0 : caption_h + 4;
   int width = gap, height = 0;
   for (const ImageRgb& i : images) {
     width += i.width + gap;
@@ -133,7 +134,8 @@ TEST(DocImages, writeAnalysisPictures) {
     for (XrayMode mode : {XrayMode::kMin, XrayMode::kMax, XrayMode::kTotal}) {
       auto x = computeXray(armadillo, XrayParams{Axis::kZ, mode});
       ASSERT_TRUE(x.ok());
-      save(renderXray(*x, 2), out / (std::string("xray_armadillo_z_") + xrayModeName(mode) + ".png"));
+      save(io::drawScalarMapFigure(x->thickness, x->max, xrayLegend(*x), 2).image,
+           out / (std::string("xray_armadillo_z_") + xrayModeName(mode) + ".png"));
     }
   }
 }
