@@ -7,14 +7,12 @@
 #include <string>
 
 #include "analysis/parallel.h"
+#include "vox/core/text.h"
 #include "vox/analysis/analysis.h"
 
 namespace vox {
 namespace {
 
-std::string dimsText(const Dims& d) {
-  return std::to_string(d.nx) + "x" + std::to_string(d.ny) + "x" + std::to_string(d.nz);
-}
 
 std::string vecText(const glm::dvec3& v) {
   char buf[96];

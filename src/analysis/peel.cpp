@@ -262,6 +262,13 @@ Result<DepthMap> computeDepthMap(const VoxelGrid& grid, const ProgressFn& progre
   return dm;
 }
 
+uint64_t estimateDepthMapBytes(const VoxelGrid& grid) {
+  if (grid.empty()) return 0;
+  const int64_t deepest = (std::min({grid.nx(), grid.ny(), grid.nz()}) + 1) / 2;
+  const uint64_t planes = uint64_t(std::bit_width(uint64_t(deepest)));
+  return (planes + 2) * uint64_t(grid.memoryBytes());
+}
+
 VoxelGrid DepthMap::remainingAfter(int32_t k) const {
   if (k <= 0 || original_.empty()) return original_;
   if (k >= layers()) return rest_;

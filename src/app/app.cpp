@@ -6,6 +6,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -344,6 +347,15 @@ int runGui(int argc, char** argv) {
       }
     }
     glfwSwapBuffers(window);
+    if (state.release_memory) {
+      // A document was closed (another opened): its grids, depth map and point buffers are gone by now, after this
+      // frame drew the new one. Hand the freed heap back to the system, or the process keeps gigabytes it no
+      // longer uses (glibc keeps freed memory for reuse).
+      state.release_memory = false;
+#if defined(__GLIBC__)
+      malloc_trim(0);
+#endif
+    }
     if (timing) {
       const double t_end = nowSeconds();
       state.frame_phase_ms[0] = (t_draw - t_build) * 1000.0;

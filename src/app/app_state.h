@@ -278,6 +278,7 @@ struct AppState {
   std::vector<std::pair<int, int>> key_presses;
   bool unsaved_prompt_requested = false;
   bool quit_requested = false;
+  bool release_memory = false;  // a document was closed: give freed memory back to the system after the next frame
   bool show_about = false;
   bool close_dialogs = false;  // the script's "dialog close": every open dialog closes itself on the next frame
 

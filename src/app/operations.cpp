@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "app/viewport.h"
+#include "vox/core/text.h"
 #include "vox/io/figure.h"
 #include "vox/io/file_util.h"
 #include "vox/io/image_io.h"
@@ -108,6 +109,7 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
   state.section.playing = false;
   state.view.fit_pending = true;
   state.viewport.dirty = true;
+  state.release_memory = true;
   doc.path = loaded.path;
   addRecentFile(state.settings, std::filesystem::absolute(loaded.path).lexically_normal().string());
   state.settings.last_directory = std::filesystem::absolute(loaded.path).parent_path().string();
@@ -498,6 +500,18 @@ void cancelJobs(AppState& state) {
 
 bool modelBusy(const AppState& state) { return state.load_job.active() || state.voxelize_job.active(); }
 
+uint64_t skinLayersMemoryLimit() { return physicalMemoryBytes() / 5 * 4; }
+
+std::string skinLayersMemoryProblem(const VoxelGrid& grid) {
+  const uint64_t need = estimateDepthMapBytes(grid) + grid.memoryBytes();
+  const uint64_t limit = skinLayersMemoryLimit();
+  if (limit == 0 || need <= limit) return {};
+  return "the skin layers of this " + std::to_string(grid.nx()) + " x " + std::to_string(grid.ny()) + " x " +
+         std::to_string(grid.nz()) + " model need up to " + formatBytes(need) + " with the model, more than " +
+         formatBytes(limit) + " (80% of this machine's memory): voxelize at a lower resolution to peel in the window, "
+         "or peel with 'voxmod peel FILE --layers N' (about three copies of the grid)";
+}
+
 const DepthMap* currentDepthMap(const AppState& state) {
   if (!state.doc.model) return nullptr;
   const auto* d = state.depth.get(state.doc.model->base_id);
@@ -600,6 +614,11 @@ void updateDocument(AppState& state) {
   if ((state.panel == Panel::kSkin || state.skin.pending_peel) && state.depth.wants(m.base_id)) {
     VoxelGrid base = m.base;
     state.depth.request(m.base_id, "Computing skin layers", [base](const ProgressFn& progress) {
+      // Refused before anything is allocated when it could run the machine out of memory (it would take the
+      // window, and the user's work, with it).
+      if (const std::string why = skinLayersMemoryProblem(base); !why.empty()) {
+        return Result<std::shared_ptr<const DepthMap>>(makeError(ErrorCode::kLimit, why));
+      }
       auto d = computeDepthMap(base, progress);
       if (!d) return Result<std::shared_ptr<const DepthMap>>(d.error());
       return Result<std::shared_ptr<const DepthMap>>(std::make_shared<const DepthMap>(std::move(d).value()));

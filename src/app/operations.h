@@ -53,6 +53,10 @@ bool modelBusy(const AppState& state);  // loading or voxelizing
 void peelTo(AppState& state, int32_t layers);
 int32_t peelLayersAvailable(const AppState& state);  // layers of the base's depth map; -1 while unknown
 const DepthMap* currentDepthMap(const AppState& state);
+// The memory the skin layers may use (80% of physical memory), and why they would not fit for this grid (empty when
+// they do): the depth map's estimate (estimateDepthMapBytes) plus the model itself.
+uint64_t skinLayersMemoryLimit();
+std::string skinLayersMemoryProblem(const VoxelGrid& grid);
 
 bool canUndo(const AppState& state);
 bool canRedo(const AppState& state);

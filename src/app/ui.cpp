@@ -17,20 +17,6 @@ std::string groupDigits(int64_t n) {
   return n < 0 ? "-" + out : out;
 }
 
-std::string formatBytes(uint64_t bytes) {
-  char buf[32];
-  const double b = double(bytes);
-  if (bytes < 1024) {
-    std::snprintf(buf, sizeof buf, "%" PRIu64 " B", bytes);
-  } else if (b < 1024.0 * 1024.0) {
-    std::snprintf(buf, sizeof buf, "%.1f KiB", b / 1024.0);
-  } else if (b < 1024.0 * 1024.0 * 1024.0) {
-    std::snprintf(buf, sizeof buf, "%.1f MiB", b / (1024.0 * 1024.0));
-  } else {
-    std::snprintf(buf, sizeof buf, "%.2f GiB", b / (1024.0 * 1024.0 * 1024.0));
-  }
-  return buf;
-}
 
 std::string formatSeconds(double s) {
   char buf[32];

@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include "vox/core/text.h"
+
 namespace vox::app {
 
 // ImGui identifies textures by an opaque pointer-sized value; the OpenGL3 backend reads it as a GL texture name.
@@ -12,8 +14,6 @@ inline ImTextureID textureId(uint32_t gl_name) { return reinterpret_cast<ImTextu
 
 // 1234567 -> "1 234 567" (thin groups are easier to read in a table of voxel counts).
 std::string groupDigits(int64_t n);
-// Bytes with a binary unit: "512 B", "12.3 MiB", "1.02 GiB".
-std::string formatBytes(uint64_t bytes);
 // Seconds as "0.42 s" or "85 ms".
 std::string formatSeconds(double s);
 // A number in model units with the units name: "12.5 mm", "0.031 model units".

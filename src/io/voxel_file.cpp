@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "vox/core/text.h"
 #include "vox/io/file_util.h"
 
 namespace vox::io {
@@ -33,27 +34,8 @@ namespace {
 
 std::string baseName(const std::string& name) { return std::filesystem::path(name).filename().string(); }
 
-std::string dimsText(const Dims& d) {
-  return std::to_string(d.nx) + "x" + std::to_string(d.ny) + "x" + std::to_string(d.nz);
-}
 
-std::string gib(uint64_t bytes) {
-  char buf[32];
-  if (bytes >= (uint64_t(1) << 30)) {
-    std::snprintf(buf, sizeof buf, "%.1f GiB", double(bytes) / double(uint64_t(1) << 30));
-  } else {
-    std::snprintf(buf, sizeof buf, "%.1f MiB", double(bytes) / double(uint64_t(1) << 20));
-  }
-  return buf;
-}
 
-// Physical memory of this machine; a grid that would need more is refused before anything is allocated.
-uint64_t physicalMemoryBytes() {
-  const long pages = ::sysconf(_SC_PHYS_PAGES);
-  const long page = ::sysconf(_SC_PAGESIZE);
-  if (pages <= 0 || page <= 0) return uint64_t(1) << 40;
-  return uint64_t(pages) * uint64_t(page);
-}
 
 Status checkDims(const Dims& d, const std::string& name) {
   const int32_t k = VoxelGrid::kMaxDim;
@@ -70,11 +52,11 @@ Status checkLayerMemory(const Dims& d, int64_t layers, const std::string& name, 
   const Dims one{d.nx, d.ny, 1};
   const uint64_t layer_bytes = estimateGridBytes(one) - estimateGridBytes(Dims{d.nx, d.ny, 0});
   const uint64_t need = layer_bytes * uint64_t(layers + 1) + extra;  // + the shared zero layer
-  const uint64_t have = limit > 0 ? limit : physicalMemoryBytes();
-  if (need > have) {
+  const uint64_t have = limit > 0 ? limit : physicalMemoryBytes();  // 0: unknown, no limit
+  if (have > 0 && need > have) {
     return makeError(ErrorCode::kLimit, name + ": grid " + dimsText(d) + " with " + std::to_string(layers) +
-                                            " occupied layers needs " + gib(need) + " of memory; the limit is " +
-                                            gib(have));
+                                            " occupied layers needs " + formatBytes(need) + " of memory; the limit is " +
+                                            formatBytes(have));
   }
   return Ok{};
 }

@@ -17,6 +17,7 @@
 // are listed by layer and XORed into a running layer as the layer pass goes up). Rows of rays are independent, so
 // the work is split over slabs of rows with std::thread; each thread writes only the Z layers of its own rows (rays
 // along X and Y) or its own slab's toggle lists (rays along Z), so no two threads ever write the same word.
+#include "vox/core/text.h"
 #include "vox/voxelize/voxelize.h"
 
 #include <unistd.h>
@@ -60,31 +61,10 @@ std::optional<FillMode> parseFillMode(const std::string& s) {
   return std::nullopt;
 }
 
-uint64_t physicalMemoryBytes() {
-  const long pages = sysconf(_SC_PHYS_PAGES);
-  const long page_size = sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || page_size <= 0) return 0;
-  return uint64_t(pages) * uint64_t(page_size);
-}
 
 namespace {
 
-std::string formatBytes(uint64_t bytes) {
-  char buf[64];
-  const double b = double(bytes);
-  if (b >= 1024.0 * 1024.0 * 1024.0) {
-    std::snprintf(buf, sizeof buf, "%.2f GiB", b / (1024.0 * 1024.0 * 1024.0));
-  } else if (b >= 1024.0 * 1024.0) {
-    std::snprintf(buf, sizeof buf, "%.1f MiB", b / (1024.0 * 1024.0));
-  } else {
-    std::snprintf(buf, sizeof buf, "%llu bytes", static_cast<unsigned long long>(bytes));
-  }
-  return buf;
-}
 
-std::string dimsText(const Dims& d) {
-  return std::to_string(d.nx) + " x " + std::to_string(d.ny) + " x " + std::to_string(d.nz);
-}
 
 // Bytes of the results alive at the peak: the grid, and in vote mode the disputed voxels, at most a grid's words and a
 // word per row (the parities along X and Y only ever exist one layer at a time, along Z as toggle lists).

@@ -85,6 +85,11 @@ class DepthMap {
 // Peels up to max_layers (all when < 0). Cost: per layer, O(words spanned by what is left) (the peel tracks the
 // shrinking extent of every row), parallel over Z; memory: ceil(log2(layers + 1)) bit-plane grids.
 Result<DepthMap> computeDepthMap(const VoxelGrid& grid, const ProgressFn& progress = {}, int32_t max_layers = -1);
+// Upper bound on the bytes computeDepthMap holds at its peak for this grid: the bit planes of the deepest possible
+// depth (a voxel is never deeper than its distance to the grid's nearest face, so layers <= ceil(min(nx, ny, nz) / 2)),
+// plus the two grids of the peel in progress, each at most the grid's own memory. The window shows it and refuses
+// past the memory limit.
+uint64_t estimateDepthMapBytes(const VoxelGrid& grid);
 
 struct PeelParams {
   int32_t layers = 1;  // ignored when all = true

@@ -91,7 +91,5 @@ ModeChoice resolveAutoMode(const MeshTopology& topology);
 Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizeParams& params,
                                      const ProgressFn& progress = {}, const MeshTopology* topology = nullptr);
 
-// Physical memory of this machine in bytes (0 if unknown).
-uint64_t physicalMemoryBytes();
 
 }  // namespace vox

@@ -60,6 +60,10 @@ void drawSkinPanel(AppState& state) {
   ImGui::SameLine();
   actionButton(state, ActionId::kPeelCore, "Peel to core", "peel_core", w);
 
+  // What peeling will hold, before it starts (the bound the depth map stays under).
+  wrappedColoured(ImGui::GetStyle().Colors[ImGuiCol_TextDisabled],
+                  "Memory for the skin layers: up to " + formatBytes(estimateDepthMapBytes(snap.base)) + " (limit " +
+                      formatBytes(skinLayersMemoryLimit()) + ")");
   if (!depth) {
     ImGui::Spacing();
     if (const Error* e = state.depth.error(snap.base_id)) {

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <bit>
+
 #include "grids.h"
 #include "vox/analysis/analysis.h"
 
@@ -215,6 +217,20 @@ TEST(DepthMap, emptyInputs) {
   auto e = computeDepthMap(VoxelGrid());
   ASSERT_TRUE(e.ok());
   EXPECT_EQ(e->layers(), 0);
+}
+
+// The window shows this bound before it computes the skin layers and refuses past the memory limit: it must hold
+// for what the depth map really keeps (its bit planes), and stay a small multiple of the grid.
+TEST(DepthMap, memoryEstimateBoundsWhatTheMapHolds) {
+  const VoxelGrid g = test::ballGrid(Dims{60, 50, 40}, glm::dvec3(30, 25, 20), 18.5);
+  const uint64_t estimate = estimateDepthMapBytes(g);
+  // Deepest possible layer: ceil(40 / 2) = 20, 5 bit planes, plus the two grids of the peel in progress.
+  EXPECT_EQ(estimate, 7 * uint64_t(g.memoryBytes()));
+  auto d = computeDepthMap(g);
+  ASSERT_TRUE(d.ok());
+  EXPECT_LE(d->memoryBytes(), estimate);
+  EXPECT_LE(size_t(std::bit_width(uint32_t(d->layers()))), 5u);
+  EXPECT_EQ(estimateDepthMapBytes(VoxelGrid()), 0u);
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ TEST(DecodeLimit, vxmFullGridOverTheLimitIsRefusedBeforeAllocating) {
   ASSERT_FALSE(refused.ok());
   EXPECT_EQ(refused.error().code, ErrorCode::kLimit);
   EXPECT_NE(refused.error().message.find(
-                "big.vxm: grid 256x256x256 with 256 occupied layers needs 2.5 MiB of memory; the limit is 1.0 MiB"),
+                "big.vxm: grid 256 x 256 x 256 with 256 occupied layers needs 2.5 MiB of memory; the limit is 1.0 MiB"),
             std::string::npos)
       << refused.error().message;
   EXPECT_NE(refused.error().message.find("the limit is"), std::string::npos) << refused.error().message;

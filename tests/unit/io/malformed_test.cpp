@@ -115,7 +115,7 @@ const Refusal kRefusals[] = {
      "vxm_filled_mismatch.vxm: .vxm body is inconsistent: header says 4 runs and 9 filled voxels, body has 4 and 7"},
     {"vxm_huge_dims.vxm", ErrorCode::kLimit, "<memory>"},
     {"vxm_dims_too_large.vxm", ErrorCode::kLimit,
-     "vxm_dims_too_large.vxm: grid dimensions 20000x1x1 are outside 1..16384 per axis"},
+     "vxm_dims_too_large.vxm: grid dimensions 20000 x 1 x 1 are outside 1..16384 per axis"},
     {"vxm_zero_voxel_size.vxm", ErrorCode::kCorrupt,
      "vxm_zero_voxel_size.vxm: .vxm header has a non-finite origin or a voxel size that is not positive"},
 };
@@ -128,7 +128,7 @@ TEST_P(MalformedFile, isRefusedWithItsMessage) {
   EXPECT_EQ(int(e.code), int(c.code)) << e.message;
   if (std::string(c.message) == "<memory>") {
     // The limit depends on this machine's memory; the message names the grid and the need.
-    EXPECT_EQ(e.message.rfind(std::string(c.file) + ": grid 16384x16384x16384 with 16384 occupied layers needs ", 0),
+    EXPECT_EQ(e.message.rfind(std::string(c.file) + ": grid 16384 x 16384 x 16384 with 16384 occupied layers needs ", 0),
               0u)
         << e.message;
   } else {

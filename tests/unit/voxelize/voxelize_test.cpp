@@ -1,4 +1,5 @@
 // The voxelizer on meshes built in code, against analytic or independent answers (SPEC section 1).
+#include "vox/core/text.h"
 #include "vox/voxelize/voxelize.h"
 
 #include <gtest/gtest.h>
