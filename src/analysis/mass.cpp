@@ -10,6 +10,9 @@
 #include <algorithm>
 #include <bit>
 #include <climits>
+#include <optional>
+#include <cmath>
+#include <cctype>
 
 #include "analysis/layer_ops.h"
 #include "analysis/parallel.h"
@@ -153,6 +156,67 @@ MassProperties computeMassProperties(const VoxelGrid& grid) {
   mp.bbox.max = origin + (glm::dvec3(s.hi) + 1.0) * h;
   mp.volume_error_bound = double(s.n - s.interior) * h * h * h;
   return mp;
+}
+
+PrincipalAxes principalAxes(const glm::dmat3& inertia) {
+  // Cyclic Jacobi: each sweep zeroes the off-diagonal elements one after another with plane rotations; a symmetric
+  // 3 x 3 matrix converges to machine precision in a handful of sweeps.
+  glm::dmat3 a = inertia;
+  glm::dmat3 v(1.0);
+  for (int sweep = 0; sweep < 50; ++sweep) {
+    const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+    const double scale = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
+    if (off <= 1e-30 * scale || off == 0.0) break;
+    for (int p = 0; p < 2; ++p) {
+      for (int q = p + 1; q < 3; ++q) {
+        if (a[p][q] == 0.0) continue;
+        const double theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+        const double t = (theta >= 0 ? 1.0 : -1.0) / (std::fabs(theta) + std::sqrt(theta * theta + 1.0));
+        const double c = 1.0 / std::sqrt(t * t + 1.0), sn = t * c;
+        glm::dmat3 r(1.0);  // a <- r^T a r zeroes a[p][q]
+        r[p][p] = c;
+        r[q][q] = c;
+        r[q][p] = sn;   // column q, row p
+        r[p][q] = -sn;  // column p, row q
+        a = glm::transpose(r) * a * r;
+        a[p][q] = a[q][p] = 0.0;
+        v = v * r;
+      }
+    }
+  }
+  // Sort ascending, axes along.
+  int order[3] = {0, 1, 2};
+  std::sort(order, order + 3, [&](int i, int j) { return a[i][i] < a[j][j]; });
+  PrincipalAxes out;
+  for (int i = 0; i < 3; ++i) {
+    out.moments[i] = a[order[i]][order[i]];
+    out.axes[i] = glm::normalize(v[order[i]]);
+  }
+  out.axes[2] = glm::cross(out.axes[0], out.axes[1]);  // right-handed
+  return out;
+}
+
+const std::vector<Material>& commonMaterials() {
+  static const std::vector<Material> table = {
+      {"steel", 7850.0},    {"stainless steel", 8000.0}, {"cast iron", 7200.0},   {"aluminium", 2700.0},
+      {"titanium", 4430.0}, {"copper", 8960.0},          {"brass", 8500.0},       {"ABS", 1040.0},
+      {"PLA", 1240.0},      {"nylon (PA12)", 1010.0},    {"resin (SLA)", 1180.0}, {"water", 1000.0},
+  };
+  return table;
+}
+
+std::optional<double> materialDensity(const std::string& name) {
+  const auto lower = [](std::string s) {
+    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
+  const std::string n = lower(name);
+  for (const Material& m : commonMaterials()) {
+    const std::string mn = lower(m.name);
+    if (n == mn || n == mn.substr(0, mn.find(" ("))) return m.density_kg_m3;
+  }
+  if (n == "aluminum") return 2700.0;
+  return std::nullopt;
 }
 
 }  // namespace vox

@@ -39,6 +39,7 @@ struct MeshSource {
   MeshTopology topology;
   bool ascii = false;
   std::vector<std::string> warnings;  // from the reader: degenerate triangles, not watertight
+  std::vector<std::string> notes;     // from the reader: information (closed once exporter noise is welded)
   double load_s = 0.0;
   double volume = 0.0;  // signed volume of the mesh (model units cubed), for comparison with the voxel volume
 };
@@ -116,10 +117,17 @@ struct XrayUi {
   XrayParams params;
 };
 
+// The Mass panel's material: a density in kg/m^3 (0: unit density) and the name it came from.
+struct MassUi {
+  std::string material = "unit density";
+  double density = 0.0;
+};
+
 struct VoxelizeDialog {
   bool open_requested = false;
   VoxelizeParams params;
   bool by_voxel_size = false;
+  std::string proposal_note;  // why the dialog proposes another resolution than the last one used
 };
 
 enum class BrowserPurpose {
@@ -245,6 +253,7 @@ struct AppState {
   SectionUi section;
   SkinUi skin;
   XrayUi xray;
+  MassUi mass_ui;
   VoxelizeDialog voxelize;
   FileBrowser browser;
 
@@ -293,10 +302,9 @@ struct AppState {
 
   // Testing and docs.
   std::optional<ScriptRun> script;
-  bool voxelize_after_load = false;        // the bundled model at start-up: voxelize at once instead of asking
-  bool voxelized_counts_as_saved = false;  // ... and that voxelization is not a change the user could lose
-  std::vector<WidgetRect> widget_rects;    // refilled every frame
-  std::string screenshot_on_idle;          // --screenshot PATH: write once everything has settled, then quit
+  bool voxelize_after_load = false;      // the bundled model at start-up: voxelize at once instead of asking
+  std::vector<WidgetRect> widget_rects;  // refilled every frame
+  std::string screenshot_on_idle;        // --screenshot PATH: write once everything has settled, then quit
   int exit_code = 0;
 };
 

@@ -131,9 +131,7 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
     state.panel = Panel::kModel;
     state.panel_change_requested = true;
     if (state.voxelize_after_load || !state.screenshot_on_idle.empty()) {
-      // Voxelized without being asked (the bundled part at start-up): that model is the starting point, not a
-      // change the user could lose.
-      state.voxelized_counts_as_saved = true;
+      // Voxelized without being asked (the bundled part at start-up).
       startVoxelize(state, state.voxelize.params);
     } else if (!state.script) {
       // A mesh is voxelized at the resolution the user picks: show the plan first (a script voxelizes itself).
@@ -158,9 +156,11 @@ void applyVoxelized(AppState& state, VoxelizeResult result, const VoxelizeParams
   origin->what = "voxelized at " + res_text + " (" + origin->mode_used + ")";
   VoxelGrid grid = std::move(result.grid);
   if (state.doc.mesh) grid.frame().source = state.doc.mesh->path.filename().string();
+  // Voxelizing alone loses nothing the user could not redo in a moment: when nothing was unsaved before, nothing
+  // is after (a peel, later, is a change worth a prompt).
+  const bool nothing_to_lose = !hasUnsavedChanges(state);
   setModel(state, newBase(state, std::move(grid), std::move(origin), "voxelize " + res_text), true);
-  if (state.voxelized_counts_as_saved) state.doc.saved_version = state.doc.model->version;
-  state.voxelized_counts_as_saved = false;
+  if (nothing_to_lose) state.doc.saved_version = state.doc.model->version;
 }
 
 std::string describe(const Error& e, const std::filesystem::path& file) {
@@ -224,6 +224,7 @@ void startOpen(AppState& state, const std::filesystem::path& path) {
       mesh->topology = stl->topology;
       mesh->ascii = stl->ascii;
       mesh->warnings = std::move(stl->warnings);
+      mesh->notes = std::move(stl->notes);
       mesh->volume = signedVolume(mesh->mesh);
       mesh->load_s = nowSeconds() - t0;
       out.mesh = std::move(mesh);
@@ -477,6 +478,33 @@ Result<VoxelizePlan> planFor(const AppState& state, const VoxelizeParams& params
   return planVoxelization(state.doc.mesh->mesh.bounds(), params);
 }
 
+uint64_t comfortableVoxelizeBytes() {
+  const uint64_t physical = physicalMemoryBytes();
+  return physical == 0 ? uint64_t(4) << 30 : std::min(uint64_t(4) << 30, physical / 4);
+}
+
+void proposeResolution(AppState& state) {
+  VoxelizeDialog& d = state.voxelize;
+  d.proposal_note.clear();
+  if (!state.doc.mesh || d.by_voxel_size) return;
+  const auto need = [&](int64_t r) {
+    VoxelizeParams p = d.params;
+    p.resolution = r;
+    auto plan = planFor(state, p);
+    return plan ? plan->bytes : UINT64_MAX;
+  };
+  const uint64_t last = need(d.params.resolution);
+  if (last <= comfortableVoxelizeBytes()) return;
+  for (int64_t r : {1000, 400, 200, 100}) {
+    if (r < d.params.resolution && need(r) <= comfortableVoxelizeBytes()) {
+      d.proposal_note = "Proposed R = " + std::to_string(r) + ": the last one used, " +
+                        std::to_string(d.params.resolution) + ", would need " + formatBytes(last) + " for this part.";
+      d.params.resolution = r;
+      return;
+    }
+  }
+}
+
 void startVoxelize(AppState& state, const VoxelizeParams& params) {
   if (!state.doc.mesh) {
     reportError(state, "there is no mesh to voxelize: open an STL file first", state.doc.path);
@@ -500,6 +528,20 @@ void cancelJobs(AppState& state) {
 
 bool modelBusy(const AppState& state) { return state.load_job.active() || state.voxelize_job.active(); }
 
+void setModelUnits(AppState& state, const std::string& units) {
+  if (!state.doc.model || state.model.frame().units == units) return;
+  // A statement about what the numbers mean, for the whole document: every snapshot shares it.
+  const auto set = [&](ModelSnapshot& s) {
+    s.grid.frame().units = units;
+    s.base.frame().units = units;
+  };
+  set(*state.doc.model);
+  for (ModelSnapshot& s : state.doc.undo_stack) set(s);
+  for (ModelSnapshot& s : state.doc.redo_stack) set(s);
+  state.model.frame().units = units;
+  state.doc.saved_version = 0;  // the file on disk says otherwise now: worth saving
+}
+
 uint64_t skinLayersMemoryLimit() { return physicalMemoryBytes() / 5 * 4; }
 
 std::string skinLayersMemoryProblem(const VoxelGrid& grid) {
@@ -508,7 +550,8 @@ std::string skinLayersMemoryProblem(const VoxelGrid& grid) {
   if (limit == 0 || need <= limit) return {};
   return "the skin layers of this " + std::to_string(grid.nx()) + " x " + std::to_string(grid.ny()) + " x " +
          std::to_string(grid.nz()) + " model need up to " + formatBytes(need) + " with the model, more than " +
-         formatBytes(limit) + " (80% of this machine's memory): voxelize at a lower resolution to peel in the window, "
+         formatBytes(limit) +
+         " (80% of this machine's memory): voxelize at a lower resolution to peel in the window, "
          "or peel with 'voxmod peel FILE --layers N' (about three copies of the grid)";
 }
 

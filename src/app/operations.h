@@ -43,6 +43,11 @@ void requestQuit(AppState& state);
 // ---- Model ----
 // Voxelizes the open mesh in the background; the current model stays on screen until the new one is ready.
 void startVoxelize(AppState& state, const VoxelizeParams& params);
+// Memory a voxelization may take without a second thought: 4 GiB, or a quarter of the machine's memory if less.
+uint64_t comfortableVoxelizeBytes();
+// When the voxelize dialog opens: if the last resolution would need more than that for this mesh, propose the
+// largest of 1000, 400, 200, 100 that does not, and say why (VoxelizeDialog::proposal_note).
+void proposeResolution(AppState& state);
 // The plan (dims, voxel size, memory) for these params, or why they cannot work.
 Result<VoxelizePlan> planFor(const AppState& state, const VoxelizeParams& params);
 void cancelJobs(AppState& state);
@@ -56,6 +61,8 @@ const DepthMap* currentDepthMap(const AppState& state);
 // The memory the skin layers may use (80% of physical memory), and why they would not fit for this grid (empty when
 // they do): the depth map's estimate (estimateDepthMapBytes) plus the model itself.
 uint64_t skinLayersMemoryLimit();
+// Says what the model's coordinates are in (mm, cm, m, in, or "model"): the whole document, every undo step too.
+void setModelUnits(AppState& state, const std::string& units);
 std::string skinLayersMemoryProblem(const VoxelGrid& grid);
 
 bool canUndo(const AppState& state);

@@ -9,6 +9,9 @@
 
 namespace vox::app {
 
+inline const ImVec4 kErrorColour{1.0f, 0.45f, 0.4f, 1.0f};
+inline const ImVec4 kWarningColour{1.0f, 0.78f, 0.3f, 1.0f};
+
 // ImGui identifies textures by an opaque pointer-sized value; the OpenGL3 backend reads it as a GL texture name.
 inline ImTextureID textureId(uint32_t gl_name) { return reinterpret_cast<ImTextureID>(uintptr_t(gl_name)); }
 

@@ -1,11 +1,14 @@
 // The analysis subcommands (SPEC section 5): section, peel, xray, mass. Each binds its flags to the same params
 // struct the GUI edits (vox/analysis/analysis.h) and FILE may be a mesh, voxelized on the fly.
+#include <cmath>
+
 #include <CLI/CLI.hpp>
 
 #include "cli/cmd_list.h"
 #include "cli/commands.h"
 #include "cli/model_input.h"
 #include "vox/analysis/analysis.h"
+#include "vox/core/units.h"
 #include "vox/io/figure.h"
 #include "vox/io/file_util.h"
 #include "vox/io/image_io.h"
@@ -125,16 +128,20 @@ int runXray(const XrayOptions& o) {
   }
   if (auto s = io::writeFilesAtomic(files); !s) return out.fail(s.error());
   const double h = model->grid.voxelSize();
+  // *_mm keys are millimetres when the model's units are known, model units otherwise ("units" says which).
+  const double metres = metresPerUnit(model->grid.frame().units);
+  const double to_mm = metres > 0 ? metres * 1000.0 : 1.0;
   auto& d = out.data();
   d["axis"] = o.axis;
   d["mode"] = o.mode;
+  d["units"] = metres > 0 ? std::string("mm") : model->grid.frame().units;
   d["rays_hit"] = x->rays_hit;
   d["min"] = x->min;
   d["max"] = x->max;
   d["mean"] = x->mean;
-  d["min_mm"] = double(x->min) * h;
-  d["max_mm"] = double(x->max) * h;
-  d["mean_mm"] = x->mean * h;
+  d["min_mm"] = double(x->min) * h * to_mm;
+  d["max_mm"] = double(x->max) * h * to_mm;
+  d["mean_mm"] = x->mean * h * to_mm;
   d["output"] = o.out;
   if (!o.csv.empty()) d["csv"] = o.csv;
   out.say("x-ray " + o.mode + " along " + o.axis + ": " + std::to_string(x->rays_hit) + " rays hit; min " +
@@ -146,29 +153,72 @@ int runXray(const XrayOptions& o) {
 // ---- mass ----
 struct MassOptions {
   Common c;
+  double density = 0.0;  // kg/m^3; 0: unit density only
+  std::string material;
 };
 
 int runMass(const MassOptions& o) {
   Output out(o.c.json);
+  double density = o.density;
+  if (!o.material.empty()) {
+    const auto d = materialDensity(o.material);
+    if (!d) {
+      std::string names;
+      for (const Material& m : commonMaterials()) names += std::string(names.empty() ? "" : ", ") + m.name;
+      return out.fail(kExitUsage, "unknown material '" + o.material + "' (known: " + names + ")");
+    }
+    density = *d;
+  }
   auto model = loadModel(o.c.file, o.c.mesh, out);
   if (!model) return out.fail(model.error());
+  const std::string& units = model->grid.frame().units;
+  const double metres = metresPerUnit(units);
+  if (density > 0 && metres == 0) {
+    return out.fail(kExitUsage, o.c.file +
+                                    ": a mass in kg needs the model's length units, which this file does not "
+                                    "give: say them with --units mm|cm|m|in");
+  }
   const MassProperties m = computeMassProperties(model->grid);
   auto& d = out.data();
   d["filled"] = m.filled;
   d["volume"] = m.volume;
   d["volume_error_bound"] = m.volume_error_bound;
-  d["units"] = model->grid.frame().units;
-  out.say("volume   " + significant(m.volume) + " (+/- " + significant(m.volume_error_bound, 3) + ")");
+  d["units"] = units;
+  if (density > 0) {
+    d["density_kg_m3"] = density;
+    d["mass_kg"] = m.volume * metres * metres * metres * density;
+  }
+  out.say("volume   " + significant(m.volume) + " (+/- " + significant(m.volume_error_bound, 3) + ") " +
+          unitsLabel(units) + "^3");
+  if (density > 0) {
+    out.say("mass     " + significant(m.volume * metres * metres * metres * density) + " kg (density " +
+            significant(density) + " kg/m^3)");
+  }
   if (m.filled == 0) {
     // An empty model has no centroid, inertia or bounding box: null, never a made-up number.
-    for (const char* key : {"centroid", "inertia", "bbox", "bbox_min_ijk", "bbox_max_ijk"}) d[key] = nullptr;
+    for (const char* key :
+         {"centroid", "inertia", "principal_moments", "principal_axes", "bbox", "bbox_min_ijk", "bbox_max_ijk"}) {
+      d[key] = nullptr;
+    }
     out.say("the model is empty: it has no centroid, inertia or bounding box");
     return out.finish();
   }
+  const PrincipalAxes principal = principalAxes(m.inertia);
+  const auto matrix = [](const glm::dmat3& t, double f) {
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    for (int r = 0; r < 3; ++r) rows.push_back({t[0][r] * f, t[1][r] * f, t[2][r] * f});
+    return rows;
+  };
   d["centroid"] = jsonVec3(m.centroid);
-  nlohmann::ordered_json inertia = nlohmann::ordered_json::array();
-  for (int r = 0; r < 3; ++r) inertia.push_back({m.inertia[0][r], m.inertia[1][r], m.inertia[2][r]});
-  d["inertia"] = inertia;
+  d["inertia"] = matrix(m.inertia, 1.0);
+  d["principal_moments"] = jsonVec3(principal.moments);
+  d["principal_axes"] = {jsonVec3(principal.axes[0]), jsonVec3(principal.axes[1]), jsonVec3(principal.axes[2])};
+  // Unit density in model units^5 -> kg m^2: times density and metres^5.
+  const double to_kg_m2 = density * std::pow(metres, 5.0);
+  if (density > 0) {
+    d["inertia_kg_m2"] = matrix(m.inertia, to_kg_m2);
+    d["principal_moments_kg_m2"] = jsonVec3(principal.moments * to_kg_m2);
+  }
   d["bbox"] = {{"min", jsonVec3(m.bbox.min)}, {"max", jsonVec3(m.bbox.max)}};
   d["bbox_min_ijk"] = jsonVec3(m.bbox_min_ijk);
   d["bbox_max_ijk"] = jsonVec3(m.bbox_max_ijk);
@@ -176,9 +226,14 @@ int runMass(const MassOptions& o) {
     return significant(v.x) + " " + significant(v.y) + " " + significant(v.z);
   };
   out.say("centroid " + vec(m.centroid));
+  const double f = density > 0 ? to_kg_m2 : 1.0;
+  const std::string inertia_units = density > 0 ? " (kg m^2)" : " (unit density, " + unitsLabel(units) + "^5)";
   for (int r = 0; r < 3; ++r) {
-    out.say(std::string(r == 0 ? "inertia  " : "         ") + vec({m.inertia[0][r], m.inertia[1][r], m.inertia[2][r]}));
+    out.say(std::string(r == 0 ? "inertia  " : "         ") +
+            vec(glm::dvec3(m.inertia[0][r], m.inertia[1][r], m.inertia[2][r]) * f) + (r == 0 ? inertia_units : ""));
   }
+  out.say("principal moments " + vec(principal.moments * f));
+  for (int i = 0; i < 3; ++i) out.say("  axis " + std::to_string(i + 1) + "         " + vec(principal.axes[i]));
   out.say("bbox     " + vec(m.bbox.min) + "  to  " + vec(m.bbox.max));
   return out.finish();
 }
@@ -229,6 +284,11 @@ void addXrayCommand(CLI::App& sub, CommandContext& ctx) {
 void addMassCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<MassOptions>();
   addCommon(sub, o->c);
+  auto* density = sub.add_option("--density", o->density, "Density in kg/m^3, for the mass in kg (needs --units)")
+                      ->check(CLI::PositiveNumber);
+  std::string names;
+  for (const Material& m : commonMaterials()) names += std::string(names.empty() ? "" : ", ") + m.name;
+  sub.add_option("--material", o->material, "A common material's density instead: " + names)->excludes(density);
   sub.callback([o, &ctx] { ctx.exit_code = runMass(*o); });
 }
 

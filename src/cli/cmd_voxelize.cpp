@@ -36,6 +36,7 @@ int runVoxelize(const VoxelizeOptions& o) {
   if (!stl) return out.fail(stl.error());
   const double t_loaded = nowSeconds();
   for (const std::string& w : stl->warnings) out.warn(w);
+  for (const std::string& n : stl->notes) out.note(n);
 
   VoxelizeParams params = o.mesh_options.params;
   params.mode = parseFillMode(o.mesh_options.mode_text).value_or(FillMode::kAuto);

@@ -22,6 +22,10 @@ void addMeshOptions(CLI::App& sub, MeshOptions& options, const std::string& mode
   auto* mode = sub.add_option(mode_names, options.mode_text, "For a mesh FILE: parity|nonzero|vote|auto (default auto)")
                    ->check(CLI::IsMember({"parity", "nonzero", "vote", "auto"}));
   options.mesh_only = {res, size, mode};
+  sub.add_option("--units", options.units,
+                 "Length units of the model's coordinates: mm, cm, m, in (STL files carry none; default: the "
+                 "voxel file's, or 'model')")
+      ->check(CLI::IsMember({"model", "mm", "cm", "m", "in"}));
   sub.add_option("--threads", options.params.threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(0, 1024));
   sub.add_option("--memory-limit", options.memory_limit_mib,
@@ -61,6 +65,7 @@ Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptio
     auto grid = io::loadVoxelFile(file);
     if (!grid) return grid.error();
     m.grid = std::move(grid).value();
+    if (!options.units.empty()) m.grid.frame().units = options.units;
     m.load_s = nowSeconds() - t0;
     return m;
   }
@@ -68,11 +73,13 @@ Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptio
   if (!stl) return stl.error();
   m.load_s = nowSeconds() - t0;
   for (const std::string& w : stl->warnings) out.warn(w);
+  for (const std::string& n : stl->notes) out.note(n);
   m.from_mesh = true;
   m.triangles = int64_t(stl->mesh.triangles.size());
   m.topology = stl->topology;
 
   VoxelizeParams params = options.params;
+  if (!options.units.empty()) params.units = options.units;
   auto mode = parseFillMode(options.mode_text);
   if (!mode) return makeError(ErrorCode::kInvalidArgument, "unknown --mode '" + options.mode_text + "'");
   params.mode = *mode;

@@ -22,6 +22,7 @@ struct MeshOptions {
   VoxelizeParams params;
   std::string mode_text = "auto";
   int64_t memory_limit_mib = 0;
+  std::string units;  // --units: what the model's numbers are in (mm, cm, m, in); empty: the file's own
   // The options above that only a mesh FILE uses, to say so when they are given with a voxel file.
   std::vector<const CLI::Option*> mesh_only;
 };

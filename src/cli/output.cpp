@@ -30,6 +30,11 @@ std::string pngOutputProblem(const std::string& path) {
          "' (voxmod writes PNG images: use a .png file name)";
 }
 
+void Output::note(const std::string& line) {
+  std::fprintf(stderr, "note: %s\n", line.c_str());
+  notes_.push_back(line);
+}
+
 int exitCodeFor(const Error& e) {
   switch (e.code) {
     case ErrorCode::kInvalidArgument:
@@ -48,6 +53,7 @@ int Output::fail(int exit_code, const std::string& message) {
   if (json_) {
     data_["error"] = message;
     data_["warnings"] = warnings_;
+    if (!notes_.empty()) data_["notes"] = notes_;
     std::cout << data_.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << std::endl;
   }
   return exit_code;
@@ -55,6 +61,7 @@ int Output::fail(int exit_code, const std::string& message) {
 
 int Output::finish() {
   data_["warnings"] = warnings_;
+  if (!notes_.empty()) data_["notes"] = notes_;
   if (json_) std::cout << data_.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << std::endl;
   return kExitOk;
 }

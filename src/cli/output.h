@@ -22,7 +22,9 @@ class Output {
   nlohmann::ordered_json& data() { return data_; }
   // Human line: stdout without --json, stderr with it (stdout then holds only the JSON object).
   void say(const std::string& line) const;
-  void warn(const std::string& line);  // on stderr, and collected into the JSON object's "warnings" list
+  void warn(const std::string& line);
+  void note(const std::string& line);  // information on stderr ("note: ..."), and in the JSON object's "notes"  // on
+                                       // stderr, and collected into the JSON object's "warnings" list
   // Prints the error, emits the JSON object (with "error") and returns the exit code for it.
   int fail(const Error& error);
   int fail(int exit_code, const std::string& message);
@@ -33,6 +35,7 @@ class Output {
   bool json_;
   nlohmann::ordered_json data_ = nlohmann::ordered_json::object();
   std::vector<std::string> warnings_;
+  std::vector<std::string> notes_;
 };
 
 // Exit code for an error: usage problems 1, no OpenGL 3, everything else (input/output) 2.

@@ -338,14 +338,14 @@ void finishStlLoad(StlLoad& out) {
     out.warnings.push_back(name + ": " + std::to_string(t.degenerate_triangles) +
                            " degenerate triangles (zero area; kept)");
   }
-  if (!t.watertight()) {
-    std::string w = name + ": not watertight: " + std::to_string(t.boundary_edges) + " boundary edges, " +
-                    std::to_string(t.nonmanifold_edges) + " non-manifold edges (vertices welded by exact equality)";
-    // Exporter noise (corners that should coincide differing by ~1e-17) is worth telling apart from real holes.
-    if (t.closes_when_noise_welded) {
-      w += "; closed when vertices within 1e-9 of the model's size are welded (exporter noise)";
-    }
-    out.warnings.push_back(std::move(w));
+  if (t.closes_when_noise_welded && !t.watertight()) {
+    // Exporter noise (corners that should coincide differing by ~1e-17) is not a hole: information, not a warning.
+    out.notes.push_back(name + ": treated as closed: its " + std::to_string(t.boundary_edges + t.nonmanifold_edges) +
+                        " open edges close when vertices within 1e-9 of the model's size are welded (exporter noise)");
+  } else if (!t.watertight()) {
+    out.warnings.push_back(name + ": not watertight: " + std::to_string(t.boundary_edges) + " boundary edges, " +
+                           std::to_string(t.nonmanifold_edges) +
+                           " non-manifold edges (vertices welded by exact equality)");
   }
 }
 

@@ -138,5 +138,44 @@ TEST_F(FirstUse, peelSaysHowManySkinLayersAndWhichIsTheCore) {
       << r.out;
 }
 
+// A 2 x 2 x 2 cube in millimetres of steel: 8000 mm^3 = 8e-6 m^3, 0.0628 kg. Principal moments of a cube are
+// equal: m a^2 / 6 with a = 0.002 m (m^2 units: kg m^2).
+TEST_F(FirstUse, massInKilogramsFromUnitsAndAMaterial) {
+  TriangleMesh cube = test::unitCubeMesh();
+  for (Triangle& t : cube.triangles) {
+    for (glm::vec3& v : t.v) v *= 20.0f;
+  }
+  ASSERT_TRUE(io::saveStlBinary(cube, path("cube20.stl")).ok());
+  auto r = runVoxmod({"mass", path("cube20.stl"), "--res", "20", "--units", "mm", "--material", "steel", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["units"], "mm");
+  EXPECT_EQ(j["density_kg_m3"], 7850.0);
+  const double mass = 8000e-9 * 7850.0;
+  EXPECT_NEAR(j["mass_kg"].get<double>(), mass, 1e-12);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(j["principal_moments_kg_m2"][i].get<double>(), mass * 0.02 * 0.02 / 6.0, 1e-12);
+  }
+  // Without units there is no kg: a usage error that says what to add.
+  r = runVoxmod({"mass", path("cube20.stl"), "--res", "20", "--density", "7850"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--units"), std::string::npos) << r.err;
+}
+
+// xray's *_mm keys are millimetres when the units are known (here centimetres: 10 mm each), model units otherwise.
+TEST_F(FirstUse, xrayMillimetreKeysAreMillimetres) {
+  auto r = runVoxmod({"xray", path("box.stl"), "--res", "10", "--axis", "z", "--mode", "max", "-o", path("x.png"),
+                      "--units", "cm", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  json j = json::parse(r.out);
+  EXPECT_EQ(j["units"], "mm");
+  EXPECT_NEAR(j["max_mm"].get<double>(), 10.0, 1e-9);
+  r = runVoxmod(
+      {"xray", path("box.stl"), "--res", "10", "--axis", "z", "--mode", "max", "-o", path("x.png"), "--json"});
+  j = json::parse(r.out);
+  EXPECT_EQ(j["units"], "model");
+  EXPECT_NEAR(j["max_mm"].get<double>(), 1.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace vox

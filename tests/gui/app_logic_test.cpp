@@ -388,6 +388,66 @@ TEST(AppDocument, reVoxelizingKeepsTheViewOnTheSamePartOfTheModel) {
   EXPECT_NEAR(state.view.camera.target.x, 3.0, 1e-9);
 }
 
+// Voxelizing a mesh can be redone in a moment: it is not an unsaved change worth a prompt. A peel is.
+TEST(AppDocument, voxelizingAloneIsNotAnUnsavedChangeButAPeelIs) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveStlBinary(test::unitCubeMesh(), dir / "box.stl").ok());
+  AppState state;
+  startOpen(state, dir / "box.stl");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.mesh != nullptr; }));
+  startVoxelize(state, VoxelizeParams{.resolution = 12});
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  EXPECT_FALSE(hasUnsavedChanges(state));
+  requestQuit(state);
+  EXPECT_TRUE(state.quit_requested);  // no prompt
+  state.quit_requested = false;
+  state.panel = Panel::kSkin;
+  peelTo(state, 1);
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model->peeled == 1; }));
+  EXPECT_TRUE(hasUnsavedChanges(state));
+  const uint64_t before = state.model_version;
+  startVoxelize(state, VoxelizeParams{.resolution = 14});  // the peel is still on the undo stack: still unsaved
+  ASSERT_TRUE(pump(state, [&] { return state.model_version != before; }));
+  EXPECT_TRUE(hasUnsavedChanges(state));
+}
+
+// The dialog remembers the last resolution, but does not propose one that needs gigabytes for the next part.
+TEST(AppDocument, theVoxelizeDialogProposesAResolutionThatFitsComfortably) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveStlBinary(test::unitCubeMesh(), dir / "box.stl").ok());
+  AppState state;
+  startOpen(state, dir / "box.stl");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.mesh != nullptr; }));
+  state.voxelize.params.resolution = 4096;  // a cube: 4096^3 bits = 8 GiB, more in auto mode (vote at worst)
+  proposeResolution(state);
+  EXPECT_EQ(state.voxelize.params.resolution, 1000);
+  EXPECT_NE(state.voxelize.proposal_note.find("the last one used, 4096, would need "), std::string::npos)
+      << state.voxelize.proposal_note;
+  state.voxelize.params.resolution = 300;  // fits: kept, nothing said
+  proposeResolution(state);
+  EXPECT_EQ(state.voxelize.params.resolution, 300);
+  EXPECT_TRUE(state.voxelize.proposal_note.empty());
+}
+
+TEST(AppDocument, modelUnitsAreSetForTheWholeDocument) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
+  AppState state;
+  startOpen(state, dir / "block.vxm");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  state.panel = Panel::kSkin;
+  peelTo(state, 1);
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model->peeled == 1; }));
+  setModelUnits(state, "in");
+  EXPECT_EQ(state.model.frame().units, "in");
+  undo(state);
+  EXPECT_EQ(state.model.frame().units, "in");  // every step of the document
+  ASSERT_TRUE(saveModel(state, dir / "inches.vxm"));
+  auto back = io::loadVxm(dir / "inches.vxm");
+  ASSERT_TRUE(back.ok());
+  EXPECT_EQ(back->frame().units, "in");
+}
+
 // A save that fails (here: a path below a regular file, which even root cannot create) reports the path, keeps the
 // model and its unsaved state, and a save elsewhere then succeeds.
 TEST(AppDocument, aFailedSaveKeepsTheModelAndAnotherPlaceWorks) {

@@ -146,6 +146,22 @@ struct MassProperties {
 };
 MassProperties computeMassProperties(const VoxelGrid& grid);
 
+// Principal moments of inertia (ascending) and their axes (unit vectors, right-handed: axes[2] = axes[0] x axes[1])
+// of a symmetric inertia tensor, by Jacobi rotations.
+struct PrincipalAxes {
+  glm::dvec3 moments{0.0};
+  glm::dmat3 axes{1.0};  // axes[i] is the axis of moments[i] (a column of glm's matrix)
+};
+PrincipalAxes principalAxes(const glm::dmat3& inertia);
+
+// Densities of common engineering materials (kg/m^3), for mass in kg (the model's units must be known).
+struct Material {
+  const char* name;
+  double density_kg_m3;
+};
+const std::vector<Material>& commonMaterials();
+std::optional<double> materialDensity(const std::string& name);  // by name, case-insensitive
+
 // ---- Booleans (thesis 7.2) ----
 enum class BoolOp { kUnion, kIntersection, kDifference };
 // Both grids must have the same dims and frame (same lattice); otherwise an error says what differs.

@@ -21,6 +21,7 @@ struct StlLoad {
   std::string header;                 // binary: the 80-byte header (trimmed); ASCII: the first solid's name
   MeshTopology topology;              // watertightness: boundary and non-manifold edge counts
   std::vector<std::string> warnings;  // e.g. "part.stl: 3 degenerate triangles", "part.stl: not watertight: ..."
+  std::vector<std::string> notes;     // information, e.g. "part.stl: treated as closed: ... (exporter noise)"
 };
 
 // Reads an STL file. Fails on: missing/unreadable file, empty mesh, truncated binary data, another format,

@@ -15,12 +15,10 @@
 #include "app/operations.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
+#include "vox/core/units.h"
 
 namespace vox::app {
 namespace {
-
-const ImVec4 kErrorColour{1.0f, 0.45f, 0.4f, 1.0f};
-const ImVec4 kWarningColour{1.0f, 0.78f, 0.3f, 1.0f};
 
 void centreNextWindow() {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
@@ -48,7 +46,10 @@ void drawVoxelizeDialog(AppState& state) {
   VoxelizeDialog& d = state.voxelize;
   if (d.open_requested) {
     d.open_requested = false;
-    if (state.doc.mesh) ImGui::OpenPopup("Voxelize");
+    if (state.doc.mesh) {
+      proposeResolution(state);
+      ImGui::OpenPopup("Voxelize");
+    }
   }
   centreNextWindow();
   if (!ImGui::BeginPopupModal("Voxelize", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
@@ -98,6 +99,14 @@ void drawVoxelizeDialog(AppState& state) {
     ImGui::EndCombo();
   }
   ImGui::TextDisabled("%s", modeHelp(p.mode));
+  ImGui::SetNextItemWidth(160.0f);
+  if (ImGui::BeginCombo("Units", unitsLabel(p.units).c_str())) {
+    for (std::string_view u : kLengthUnits) {
+      if (ImGui::Selectable(unitsLabel(u).c_str(), u == p.units)) p.units = std::string(u);
+    }
+    ImGui::EndCombo();
+  }
+  helpMarker("What the mesh's coordinates are in (STL files do not say): for masses in kg and lengths in mm.");
 
   // The plan, before anything is allocated.
   ImGui::Separator();
@@ -109,6 +118,11 @@ void drawVoxelizeDialog(AppState& state) {
     ImGui::Text("Voxel size: %.6g model units", g.frame.voxel_size);
     ImGui::Text("Memory: up to %s (limit %s)", formatBytes(plan->bytes).c_str(),
                 formatBytes(plan->limit_bytes).c_str());
+    if (!d.proposal_note.empty()) ImGui::TextColored(kWarningColour, "%s", d.proposal_note.c_str());
+    if (plan->bytes > comfortableVoxelizeBytes() && plan->bytes <= plan->limit_bytes) {
+      ImGui::TextColored(kWarningColour, "This takes %s of memory, and peeling it several times that.",
+                         formatBytes(plan->bytes).c_str());
+    }
     if (plan->limit_bytes > 0 && plan->bytes > plan->limit_bytes) {
       ImGui::TextColored(kErrorColour, "Too large for this machine's memory limit: choose a lower resolution.");
       can_start = false;
@@ -116,7 +130,7 @@ void drawVoxelizeDialog(AppState& state) {
   } else {
     ImGui::TextColored(kErrorColour, "%s", plan.error().message.c_str());
   }
-  if (!mesh.topology.watertight()) {
+  if (!mesh.topology.watertight() && !mesh.topology.closes_when_noise_welded) {
     ImGui::TextColored(kWarningColour, "The mesh is not watertight (%s boundary, %s non-manifold edges).",
                        groupDigits(mesh.topology.boundary_edges).c_str(),
                        groupDigits(mesh.topology.nonmanifold_edges).c_str());

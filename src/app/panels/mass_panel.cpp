@@ -1,5 +1,7 @@
-// Mass properties panel (thesis 2.6.1): volume, centroid, inertia tensor and bounding box of the voxel model, with
-// unit density. Computed in the background whenever the model changes while the panel is open.
+// Mass properties panel (thesis 2.6.1): volume, centroid, inertia tensor, principal moments and axes, bounding box,
+// each voxel a solid cube. With the model's units and a density (or a common material) it gives the mass in kg and
+// the inertia in kg m^2. Computed in the background whenever the model changes while the panel is open.
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -9,84 +11,107 @@
 #include "app/operations.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
+#include "vox/core/units.h"
 
 namespace vox::app {
+namespace {
+
+// Units and density: what turns unit-density volumes into kilograms.
+void materialControls(AppState& state) {
+  const std::string units = state.model.frame().units;
+  ImGui::SetNextItemWidth(120.0f);
+  if (ImGui::BeginCombo("Model units", unitsLabel(units).c_str())) {
+    for (std::string_view u : kLengthUnits) {
+      if (ImGui::Selectable(unitsLabel(u).c_str(), u == units)) setModelUnits(state, std::string(u));
+    }
+    ImGui::EndCombo();
+  }
+  helpMarker("What the model's coordinates are in. STL files do not say; .vxm files keep what you choose here.");
+  MassUi& ui = state.mass_ui;
+  ImGui::SetNextItemWidth(120.0f);
+  if (ImGui::BeginCombo("Material", ui.material.c_str())) {
+    if (ImGui::Selectable("unit density", ui.density <= 0.0)) ui = MassUi{};
+    for (const Material& m : commonMaterials()) {
+      if (ImGui::Selectable(m.name, ui.material == m.name)) ui = MassUi{m.name, m.density_kg_m3};
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::SetNextItemWidth(120.0f);
+  if (ImGui::InputDouble("kg/m^3", &ui.density, 0.0, 0.0, "%.6g")) {
+    ui.density = std::max(ui.density, 0.0);
+    ui.material = ui.density > 0.0 ? "custom" : "unit density";
+  }
+}
+
+void vectorTable(const char* id, std::initializer_list<std::pair<const char*, glm::dvec3>> rows, double f) {
+  // One number to a cell, so that no number is broken across lines.
+  if (!ImGui::BeginTable(id, 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame)) return;
+  ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 90.0f);
+  for (const char* axis : {"x", "y", "z"}) ImGui::TableSetupColumn(axis);
+  ImGui::TableHeadersRow();
+  for (const auto& [label, v] : rows) {
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::TextDisabled("%s", label);
+    for (int c = 0; c < 3; ++c) {
+      ImGui::TableSetColumnIndex(c + 1);
+      ImGui::Text("%.5g", v[c] * f);
+    }
+  }
+  ImGui::EndTable();
+}
+
+}  // namespace
 
 void drawMassPanel(AppState& state) {
   if (state.model.empty()) {
     ImGui::TextWrapped("Open a voxel file or voxelize a mesh to see its mass properties.");
     return;
   }
+  materialControls(state);
   const MassProperties* m = state.mass.get(state.model_version);
   if (!m) {
     ImGui::TextUnformatted("Computing...");
     return;
   }
-  const std::string units = state.model.frame().units;
-  const char* u = units == "model" ? "model units" : units.c_str();
-  char buf[160];
-  wrappedColoured(ImGui::GetStyle().Colors[ImGuiCol_TextDisabled],
-                  std::string("Unit density; each voxel a solid cube. Lengths in ") + u + ".");
-  if (m->filled == 0) {
-    // Nothing to weigh: no centroid, inertia or box exists (never show the sentinels of an empty box).
-    ImGui::Spacing();
+  if (m->filled == 0) {  // nothing to weigh: no centroid, inertia or box exists (never the sentinels of an empty box)
     ImGui::TextWrapped(
         "The model is empty (%s): it has no volume, centroid, inertia or bounding box.",
         state.doc.model && state.doc.model->peeled > 0 ? "everything was peeled away" : "no voxel is filled");
     return;
   }
+  const std::string units = unitsLabel(state.model.frame().units);
+  const double metres = metresPerUnit(state.model.frame().units), density = state.mass_ui.density;
+  const bool kg = metres > 0.0 && density > 0.0;
+  if (density > 0.0 && metres == 0.0) wrappedColoured(kWarningColour, "Choose the model's units for a mass in kg.");
+  char buf[160];
   if (beginFactTable("mass")) {
     tableRow("Filled voxels", groupDigits(m->filled));
-    std::snprintf(buf, sizeof buf, "%.6g", m->volume);
+    std::snprintf(buf, sizeof buf, "%.6g %s^3 (+/- %.3g)", m->volume, units.c_str(), m->volume_error_bound);
     tableRow("Volume", buf);
-    std::snprintf(buf, sizeof buf, "+/- %.3g", m->volume_error_bound);
-    tableRow("Volume bound", buf);
+    if (kg) {
+      std::snprintf(buf, sizeof buf, "%.6g kg", m->volume * std::pow(metres, 3.0) * density);
+      tableRow("Mass", buf);
+    }
     if (state.doc.mesh && state.doc.model && state.doc.model->peeled == 0 && state.doc.mesh->volume > 0) {
-      std::snprintf(buf, sizeof buf, "%.6g", state.doc.mesh->volume);
+      std::snprintf(buf, sizeof buf, "%.6g (voxels %+.3f%%)", state.doc.mesh->volume,
+                    100.0 * (m->volume - state.doc.mesh->volume) / state.doc.mesh->volume);
       tableRow("Mesh volume", buf);
-      std::snprintf(buf, sizeof buf, "%+.3f%%", 100.0 * (m->volume - state.doc.mesh->volume) / state.doc.mesh->volume);
-      tableRow("Voxels differ", buf);
-    }
-    tableRow("Box (voxels)", "(" + std::to_string(m->bbox_min_ijk.x) + ", " + std::to_string(m->bbox_min_ijk.y) + ", " +
-                                 std::to_string(m->bbox_min_ijk.z) + ") .. (" + std::to_string(m->bbox_max_ijk.x) +
-                                 ", " + std::to_string(m->bbox_max_ijk.y) + ", " + std::to_string(m->bbox_max_ijk.z) +
-                                 ")");
-    ImGui::EndTable();
-  }
-  // Vectors in columns, one number to a cell, so that no number is broken across lines.
-  if (ImGui::BeginTable("vectors", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame)) {
-    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 90.0f);
-    for (const char* axis : {"x", "y", "z"}) ImGui::TableSetupColumn(axis);
-    ImGui::TableHeadersRow();
-    const glm::dvec3 e = m->bbox.extent();
-    const std::pair<const char*, glm::dvec3> rows[] = {
-        {"Centroid", m->centroid}, {"Box min", m->bbox.min}, {"Box max", m->bbox.max}, {"Box size", e}};
-    for (const auto& [label, v] : rows) {
-      ImGui::TableNextRow();
-      ImGui::TableSetColumnIndex(0);
-      ImGui::TextDisabled("%s", label);
-      for (int c = 0; c < 3; ++c) {
-        ImGui::TableSetColumnIndex(c + 1);
-        ImGui::Text("%.5g", v[c]);
-      }
     }
     ImGui::EndTable();
   }
-  heading("Inertia tensor about the centroid");
-  if (ImGui::BeginTable("inertia", 3, ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_Borders)) {
-    for (int r = 0; r < 3; ++r) {
-      ImGui::TableNextRow();
-      for (int c = 0; c < 3; ++c) {
-        ImGui::TableSetColumnIndex(c);
-        ImGui::Text("%.5g", m->inertia[c][r]);  // glm is column-major: [column][row]
-      }
-    }
-    ImGui::EndTable();
-  }
-  ImGui::TextDisabled("Products of inertia are negative (tensor convention).");
-  ImGui::TextWrapped(
-      "The volume bound counts every surface voxel as possibly misclassified: the true volume of "
-      "the meshed part lies within it.");
+  vectorTable("vectors", {{"Centroid", m->centroid}, {"Box min", m->bbox.min}, {"Box max", m->bbox.max}}, 1.0);
+  const double f = kg ? density * std::pow(metres, 5.0) : 1.0;
+  heading(kg ? "Inertia about the centroid (kg m^2)" : "Inertia about the centroid (unit density)");
+  vectorTable("inertia",
+              {{"", m->inertia[0]}, {"", m->inertia[1]}, {"", m->inertia[2]}},  // symmetric: columns are rows
+              f);
+  const PrincipalAxes p = principalAxes(m->inertia);
+  heading("Principal moments and axes");
+  vectorTable("moments", {{"Moments", p.moments}}, f);
+  vectorTable("axes", {{"Axis 1", p.axes[0]}, {"Axis 2", p.axes[1]}, {"Axis 3", p.axes[2]}}, 1.0);
+  wrappedColoured(ImGui::GetStyle().Colors[ImGuiCol_TextDisabled],
+                  "Lengths in " + units + ". Products of inertia are negative (tensor convention).");
 }
 
 }  // namespace vox::app

@@ -12,17 +12,16 @@
 namespace vox::app {
 namespace {
 
-const ImVec4 kWarningColour{1.0f, 0.78f, 0.3f, 1.0f};
-
 void meshSection(const AppState& state) {
   const MeshSource& m = *state.doc.mesh;
   heading("Mesh");
   if (beginFactTable("mesh")) {
     tableRow("Triangles", groupDigits(int64_t(m.mesh.triangles.size())) + (m.ascii ? " (ASCII STL)" : " (binary STL)"));
     const MeshTopology& t = m.topology;
-    tableRow("Watertight", t.watertight() ? "yes"
-                                          : "no: " + groupDigits(t.boundary_edges) + " boundary, " +
-                                                groupDigits(t.nonmanifold_edges) + " non-manifold edges");
+    tableRow("Watertight", t.watertight()               ? std::string("yes")
+                           : t.closes_when_noise_welded ? "yes, once exporter noise is welded"
+                                                        : "no: " + groupDigits(t.boundary_edges) + " boundary, " +
+                                                              groupDigits(t.nonmanifold_edges) + " non-manifold edges");
     if (t.degenerate_triangles > 0) tableRow("Degenerate", groupDigits(t.degenerate_triangles) + " triangles");
     if (t.inconsistent_edges > 0) tableRow("Mixed winding", groupDigits(t.inconsistent_edges) + " edges");
     const glm::dvec3 e = m.mesh.bounds().extent();
@@ -36,6 +35,7 @@ void meshSection(const AppState& state) {
     ImGui::EndTable();
   }
   for (const std::string& w : m.warnings) wrappedColoured(kWarningColour, w);
+  for (const std::string& n : m.notes) wrappedColoured(ImGui::GetStyle().Colors[ImGuiCol_TextDisabled], n);
 }
 
 void modelSection(AppState& state) {

@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
 #include <numbers>
 
 #include "grids.h"
@@ -158,6 +162,29 @@ TEST(Mass, emptyGrid) {
   EXPECT_EQ(m.volume, 0.0);
   EXPECT_TRUE(m.bbox.empty());
   EXPECT_EQ(computeMassProperties(VoxelGrid()).filled, 0);
+}
+
+// A tensor built from known moments and axes gives them back, sorted ascending, as a right-handed frame.
+TEST(PrincipalAxes, recoverTheMomentsAndAxesOfARotatedTensor) {
+  const glm::dvec3 moments(1.0, 4.0, 9.0);
+  const glm::dmat3 r = glm::dmat3(glm::rotate(glm::dmat4(1.0), 0.7, glm::normalize(glm::dvec3(1, 2, 3))));
+  const glm::dmat3 tensor =
+      r * glm::dmat3(glm::dvec3(moments[2], 0, 0), glm::dvec3(0, moments[0], 0), glm::dvec3(0, 0, moments[1])) *
+      glm::transpose(r);
+  const PrincipalAxes p = principalAxes(tensor);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(p.moments[i], moments[i], 1e-12) << i;
+  // The axis of the smallest moment (1) is the rotated y axis, of 4 the rotated z, of 9 the rotated x (up to sign).
+  EXPECT_NEAR(std::fabs(glm::dot(p.axes[0], r[1])), 1.0, 1e-12);
+  EXPECT_NEAR(std::fabs(glm::dot(p.axes[1], r[2])), 1.0, 1e-12);
+  EXPECT_NEAR(std::fabs(glm::dot(p.axes[2], r[0])), 1.0, 1e-12);
+  EXPECT_NEAR(glm::dot(glm::cross(p.axes[0], p.axes[1]), p.axes[2]), 1.0, 1e-12);
+}
+
+TEST(Materials, densitiesByNameIgnoringCase) {
+  EXPECT_EQ(materialDensity("Steel"), 7850.0);
+  EXPECT_EQ(materialDensity("aluminum"), 2700.0);
+  EXPECT_EQ(materialDensity("nylon"), 1010.0);
+  EXPECT_FALSE(materialDensity("unobtainium").has_value());
 }
 
 }  // namespace
