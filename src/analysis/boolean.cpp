@@ -13,7 +13,6 @@
 namespace vox {
 namespace {
 
-
 std::string vecText(const glm::dvec3& v) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "(%.9g, %.9g, %.9g)", v.x, v.y, v.z);

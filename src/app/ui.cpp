@@ -17,7 +17,6 @@ std::string groupDigits(int64_t n) {
   return n < 0 ? "-" + out : out;
 }
 
-
 std::string formatSeconds(double s) {
   char buf[32];
   if (s < 1.0) {

@@ -34,9 +34,6 @@ namespace {
 
 std::string baseName(const std::string& name) { return std::filesystem::path(name).filename().string(); }
 
-
-
-
 Status checkDims(const Dims& d, const std::string& name) {
   const int32_t k = VoxelGrid::kMaxDim;
   if (d.nx < 1 || d.ny < 1 || d.nz < 1 || d.nx > k || d.ny > k || d.nz > k) {
@@ -52,11 +49,11 @@ Status checkLayerMemory(const Dims& d, int64_t layers, const std::string& name, 
   const Dims one{d.nx, d.ny, 1};
   const uint64_t layer_bytes = estimateGridBytes(one) - estimateGridBytes(Dims{d.nx, d.ny, 0});
   const uint64_t need = layer_bytes * uint64_t(layers + 1) + extra;  // + the shared zero layer
-  const uint64_t have = limit > 0 ? limit : physicalMemoryBytes();  // 0: unknown, no limit
+  const uint64_t have = limit > 0 ? limit : physicalMemoryBytes();   // 0: unknown, no limit
   if (have > 0 && need > have) {
     return makeError(ErrorCode::kLimit, name + ": grid " + dimsText(d) + " with " + std::to_string(layers) +
-                                            " occupied layers needs " + formatBytes(need) + " of memory; the limit is " +
-                                            formatBytes(have));
+                                            " occupied layers needs " + formatBytes(need) +
+                                            " of memory; the limit is " + formatBytes(have));
   }
   return Ok{};
 }

@@ -61,10 +61,7 @@ std::optional<FillMode> parseFillMode(const std::string& s) {
   return std::nullopt;
 }
 
-
 namespace {
-
-
 
 // Bytes of the results alive at the peak: the grid, and in vote mode the disputed voxels, at most a grid's words and a
 // word per row (the parities along X and Y only ever exist one layer at a time, along Z as toggle lists).

@@ -91,5 +91,4 @@ ModeChoice resolveAutoMode(const MeshTopology& topology);
 Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizeParams& params,
                                      const ProgressFn& progress = {}, const MeshTopology* topology = nullptr);
 
-
 }  // namespace vox

@@ -45,7 +45,8 @@ TEST(Boolean, differentLatticesAreRefusedWithTheReason) {
     EXPECT_FALSE(r.ok());
     return r.ok() ? std::string() : r.error().message;
   };
-  EXPECT_NE(msg(VoxelGrid(Dims{10, 10, 11}, a.frame())).find("dimensions: 10 x 10 x 10 vs 10 x 10 x 11"), std::string::npos);
+  EXPECT_NE(msg(VoxelGrid(Dims{10, 10, 11}, a.frame())).find("dimensions: 10 x 10 x 10 vs 10 x 10 x 11"),
+            std::string::npos);
   EXPECT_NE(msg(VoxelGrid(Dims{10, 10, 10}, GridFrame{glm::dvec3(0), 0.5, "mm", ""})).find("voxel size"),
             std::string::npos);
   EXPECT_NE(msg(VoxelGrid(Dims{10, 10, 10}, GridFrame{glm::dvec3(0, 1, 0), 1.0, "mm", ""})).find("origin"),

@@ -128,8 +128,8 @@ TEST_P(MalformedFile, isRefusedWithItsMessage) {
   EXPECT_EQ(int(e.code), int(c.code)) << e.message;
   if (std::string(c.message) == "<memory>") {
     // The limit depends on this machine's memory; the message names the grid and the need.
-    EXPECT_EQ(e.message.rfind(std::string(c.file) + ": grid 16384 x 16384 x 16384 with 16384 occupied layers needs ", 0),
-              0u)
+    EXPECT_EQ(
+        e.message.rfind(std::string(c.file) + ": grid 16384 x 16384 x 16384 with 16384 occupied layers needs ", 0), 0u)
         << e.message;
   } else {
     EXPECT_EQ(e.message, c.message);
