@@ -117,6 +117,12 @@ struct XrayUi {
   XrayParams params;
 };
 
+// Voxels picked for measuring (app/measure.h), on the lattice of `dims`.
+struct MeasureUi {
+  std::vector<glm::ivec3> picks;
+  Dims dims{0, 0, 0};
+};
+
 // The Mass panel's material: a density in kg/m^3 (0: unit density) and the name it came from.
 struct MassUi {
   std::string material = "unit density";
@@ -254,6 +260,7 @@ struct AppState {
   SkinUi skin;
   XrayUi xray;
   MassUi mass_ui;
+  MeasureUi measure;
   VoxelizeDialog voxelize;
   FileBrowser browser;
 

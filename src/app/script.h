@@ -16,6 +16,7 @@
 //   panel NAME                       show a panel: model|section|skin|xray|mass
 //   view YAW PITCH | view NAME       camera angles in degrees, or iso|+x|-x|+y|-y|+z|-z; refits the model
 //   zoom FACTOR                      > 1 zooms in
+//   measure I J K | measure clear    pick voxel (I, J, K) for measuring, as a click does (two: their distance)
 //   lit on|off, round on|off, disputed on|off, cut on|off, lod on|off
 //   undo | redo
 //   save PATH                        save the model (.vxm or .binvox)

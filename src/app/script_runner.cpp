@@ -9,6 +9,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "app/measure.h"
 #include "app/operations.h"
 #include "app/viewport.h"
 #include "vox/io/file_util.h"
@@ -251,6 +252,19 @@ Step execute(Context& c) {
       s.view.camera.setStandardView(it->second);
     }
     s.view.fit_pending = true;
+    return Step::kDone;
+  }
+  if (name == "measure") {  // measure I J K picks a voxel as a click would; measure clear
+    if (args.size() == 1 && args[0] == "clear") {
+      clearMeasure(s);
+      return Step::kDone;
+    }
+    double v[3];
+    if (args.size() != 3 || !parseNumber(args[0], v[0]) || !parseNumber(args[1], v[1]) || !parseNumber(args[2], v[2]))
+      return c.fail("measure takes I J K (a voxel index) or 'clear'");
+    const glm::ivec3 voxel{int(v[0]), int(v[1]), int(v[2])};
+    if (!s.model.inBounds(voxel.x, voxel.y, voxel.z)) return c.fail("measure: voxel outside the model's grid");
+    addMeasurePick(s, voxel);
     return Step::kDone;
   }
   if (name == "zoom") {

@@ -86,4 +86,25 @@ void wrappedColoured(const ImVec4& colour, const std::string& text) {
   ImGui::PopStyleColor();
 }
 
+void drawScaleBar(ImVec2 at, float pixels_per_unit, const std::string& units, float max_px) {
+  if (!(pixels_per_unit > 0.0f) || !(max_px > 8.0f)) return;
+  // The longest round length (1, 2 or 5 times a power of ten) that fits in max_px.
+  const double most = double(max_px) / double(pixels_per_unit);
+  const double mag = std::pow(10.0, std::floor(std::log10(most)));
+  double length = mag;
+  for (double m : {2.0, 5.0}) {
+    if (m * mag <= most) length = m * mag;
+  }
+  const float px = float(length) * pixels_per_unit;
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImU32 ink = ImGui::GetColorU32(ImGuiCol_Text);
+  const float y = at.y + ImGui::GetTextLineHeight() * 0.5f;
+  dl->AddLine(ImVec2(at.x, y), ImVec2(at.x + px, y), ink, 2.0f);
+  dl->AddLine(ImVec2(at.x, y - 4.0f), ImVec2(at.x, y + 4.0f), ink, 2.0f);
+  dl->AddLine(ImVec2(at.x + px, y - 4.0f), ImVec2(at.x + px, y + 4.0f), ink, 2.0f);
+  char label[64];
+  std::snprintf(label, sizeof label, "%g %s", length, units == "model" ? "model units" : units.c_str());
+  dl->AddText(ImVec2(at.x + px + 6.0f, at.y), ink, label);
+}
+
 }  // namespace vox::app

@@ -38,4 +38,8 @@ void markCell(ImVec2 area_min, ImVec2 area_max, ImVec2 cell_min, ImVec2 cell_max
 // Wrapped text in a colour (warnings, errors).
 void wrappedColoured(const ImVec4& colour, const std::string& text);
 
+// A scale bar at `at` (top left of a text line): the longest round length (1, 2 or 5 x 10^k) that fits in max_px,
+// labelled with its length and units.
+void drawScaleBar(ImVec2 at, float pixels_per_unit, const std::string& units, float max_px);
+
 }  // namespace vox::app

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include <glm/mat4x4.hpp>
 #include <imgui.h>
 
 #include "app/actions.h"
+#include "app/measure.h"
 #include "app/operations.h"
 #include "app/ui.h"
 #include "vox/io/image_io.h"
@@ -92,6 +94,31 @@ void syncRenderers(AppState& state) {
     if (overlay) vp.overlay->setGrid(*overlay);
     vp.overlay_key = key;
     vp.dirty = true;
+  }
+}
+
+// The picked voxels as rings at their centres, lettered, and what they measure, at the view's top left.
+void drawMeasureOverlay(const AppState& state, ImDrawList* dl, ImVec2 pos, int w, int h, double aspect) {
+  const std::vector<glm::ivec3>& picks = measurePicks(state);
+  if (picks.empty() || !state.model_bounds) return;
+  const glm::dmat4 vp = state.view.camera.viewProjection(aspect, *state.model_bounds);
+  std::vector<ImVec2> screen;
+  for (size_t i = 0; i < picks.size(); ++i) {
+    const glm::dvec4 c = vp * glm::dvec4(glm::dvec3(picks[i]) + 0.5, 1.0);
+    if (c.w <= 0.0) continue;
+    const ImVec2 p(pos.x + float((c.x / c.w + 1.0) * 0.5 * w), pos.y + float((1.0 - c.y / c.w) * 0.5 * h));
+    screen.push_back(p);
+    dl->AddCircle(p, 7.0f, IM_COL32(0, 0, 0, 255), 0, 4.0f);
+    dl->AddCircle(p, 7.0f, IM_COL32(255, 220, 60, 255), 0, 2.0f);
+    const char label[2] = {char('A' + i), 0};
+    dl->AddText(ImVec2(p.x + 9.0f, p.y - 18.0f), IM_COL32(255, 220, 60, 255), label);
+  }
+  if (screen.size() == 2) dl->AddLine(screen[0], screen[1], IM_COL32(255, 220, 60, 200), 1.5f);
+  float y = pos.y + 30.0f;
+  for (const std::string& line : measureLines(state)) {
+    dl->AddText(ImVec2(pos.x + 9.0f, y + 1.0f), IM_COL32(0, 0, 0, 255), line.c_str());
+    dl->AddText(ImVec2(pos.x + 8.0f, y), IM_COL32(255, 220, 60, 255), line.c_str());
+    y += ImGui::GetTextLineHeightWithSpacing();
   }
 }
 
@@ -261,6 +288,18 @@ void drawViewport(AppState& state) {
   if (ImGui::IsItemHovered()) {
     if (io.MouseWheel != 0.0f) state.view.camera.zoom(std::pow(kZoomPerWheelStep, double(io.MouseWheel)));
     if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) state.view.fit_pending = true;
+    // Ctrl+click (a click, not a drag) picks the voxel under the cursor for measuring.
+    if (io.KeyCtrl && ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f &&
+        state.model_bounds) {
+      const glm::dmat4 inv = glm::inverse(state.view.camera.viewProjection(aspect, *state.model_bounds));
+      const double nx = 2.0 * double(io.MousePos.x - pos.x) / double(w) - 1.0;
+      const double ny = 1.0 - 2.0 * double(io.MousePos.y - pos.y) / double(h);
+      const auto unproject = [&](double z) {
+        const glm::dvec4 p = inv * glm::dvec4(nx, ny, z, 1.0);
+        return glm::dvec3(p) / p.w;
+      };
+      if (const auto v = pickVoxel(state.model, unproject(-1.0), unproject(1.0))) addMeasurePick(state, *v);
+    }
   }
   fitIfPending(state, aspect);
   vp.interacting = vp.interacting || dragging;
@@ -298,6 +337,7 @@ void drawViewport(AppState& state) {
                   vp.draw_ms);
     dl->AddText(ImVec2(pos.x + 8.0f, pos.y + float(h) - ImGui::GetFontSize() - 6.0f), IM_COL32(200, 200, 200, 255),
                 info);
+    drawMeasureOverlay(state, dl, pos, w, h, aspect);
     drawAxisTriad(state.view.camera, ImVec2(pos.x + 40.0f, pos.y + float(h) - 60.0f), 28.0f);
     if (vp.overlay_key != 0) {
       const bool core = vp.overlay_key % 4 == 1;

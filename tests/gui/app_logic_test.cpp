@@ -11,6 +11,7 @@
 #include "app/actions.h"
 #include "app/app_state.h"
 #include "app/job.h"
+#include "app/measure.h"
 #include "app/operations.h"
 #include "app/script.h"
 #include "app/settings.h"
@@ -446,6 +447,23 @@ TEST(AppDocument, modelUnitsAreSetForTheWholeDocument) {
   auto back = io::loadVxm(dir / "inches.vxm");
   ASSERT_TRUE(back.ok());
   EXPECT_EQ(back->frame().units, "in");
+}
+
+// Two picks give the distance between their centres in model units; a third starts again.
+TEST(AppMeasure, twoPicksGiveTheDistanceAndAThirdStartsAgain) {
+  AppState state;
+  VoxelGrid g(Dims{10, 10, 10}, GridFrame{.origin = glm::dvec3(0.0), .voxel_size = 0.5, .units = "mm", .source = ""});
+  state.model = g;
+  addMeasurePick(state, glm::ivec3(1, 2, 3));
+  addMeasurePick(state, glm::ivec3(4, 6, 3));
+  const std::vector<std::string> lines = measureLines(state);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0], "A  voxel (1, 2, 3)  at (0.75, 1.25, 1.75) mm");
+  EXPECT_EQ(lines[2], "distance 2.5 mm  (dx 1.5, dy 2, dz 0; centre to centre)");
+  addMeasurePick(state, glm::ivec3(0, 0, 0));
+  EXPECT_EQ(measurePicks(state).size(), 1u);
+  state.model = VoxelGrid(Dims{20, 20, 20}, GridFrame{});  // another lattice: the picks no longer apply
+  EXPECT_TRUE(measurePicks(state).empty());
 }
 
 // A save that fails (here: a path below a regular file, which even root cannot create) reports the path, keeps the

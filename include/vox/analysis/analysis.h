@@ -162,6 +162,12 @@ struct Material {
 const std::vector<Material>& commonMaterials();
 std::optional<double> materialDensity(const std::string& name);  // by name, case-insensitive
 
+// ---- Measure ----
+// The first filled voxel on the segment from `from` to `to`, in voxel-index space (voxel (i, j, k) occupies
+// [i, i + 1) x [j, j + 1) x [k, k + 1)): what a click in the 3D view points at. Nothing when the segment meets no
+// material.
+std::optional<glm::ivec3> pickVoxel(const VoxelGrid& grid, const glm::dvec3& from, const glm::dvec3& to);
+
 // ---- Booleans (thesis 7.2) ----
 enum class BoolOp { kUnion, kIntersection, kDifference };
 // Both grids must have the same dims and frame (same lattice); otherwise an error says what differs.

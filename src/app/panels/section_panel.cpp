@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "app/actions.h"
+#include "app/measure.h"
 #include "app/operations.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
@@ -165,8 +166,23 @@ void drawSectionImage(AppState& state) {
     state.widget_rects.push_back({"section_image", r0.x, r0.y, r1.x, r1.y});
   }
   const bool hovered = ImGui::IsItemHovered();
+  const bool clicked = ImGui::IsItemClicked(ImGuiMouseButton_Left);
   ImGui::SetCursorScreenPos(ImVec2(origin.x + size.x - 40.0f, origin.y + size.y + 2.0f));
   ImGui::Text("%s >", kAxisNames[ax.right]);
+  drawScaleBar(ImVec2(origin.x, origin.y + size.y + 2.0f), scale / float(state.model.voxelSize()), units,
+               std::min(size.x * 0.4f, size.x - 60.0f));
+  // Picked voxels in this section: rings at their cells (the 3D view says what they measure).
+  const auto cellOf = [&](const glm::ivec3& v) {
+    return ImVec2(origin.x + (float(v[ax.right]) + 0.5f) * scale, origin.y + (float(ih - 1 - v[ax.up]) + 0.5f) * scale);
+  };
+  const std::vector<glm::ivec3>& picks = measurePicks(state);
+  for (size_t i = 0; i < picks.size(); ++i) {
+    if (picks[i][int(section->axis)] != section->index) continue;
+    const ImVec2 c = cellOf(picks[i]);
+    ImGui::GetWindowDrawList()->AddCircle(c, std::max(5.0f, scale), IM_COL32(255, 220, 60, 255), 0, 2.0f);
+    const char label[2] = {char('A' + i), 0};
+    ImGui::GetWindowDrawList()->AddText(ImVec2(c.x + 7.0f, c.y - 16.0f), IM_COL32(255, 220, 60, 255), label);
+  }
 
   if (hovered) {
     const ImVec2 m = ImGui::GetIO().MousePos;
@@ -180,9 +196,10 @@ void drawSectionImage(AppState& state) {
     const glm::dvec3 c = state.model.frame().voxelCentre(voxel[0], voxel[1], voxel[2]);
     const ImVec2 cell(origin.x + float(u) * scale, origin.y + float(row) * scale);
     markCell(origin, ImVec2(origin.x + size.x, origin.y + size.y), cell, ImVec2(cell.x + scale, cell.y + scale));
-    ImGui::SetTooltip("voxel (%d, %d, %d): %s\ncentre (%.4g, %.4g, %.4g) %s", voxel[0], voxel[1], voxel[2],
-                      section->mask.at(u, row) ? "material" : "empty", c.x, c.y, c.z,
+    ImGui::SetTooltip("voxel (%d, %d, %d): %s\ncentre (%.4g, %.4g, %.4g) %s\nclick to measure", voxel[0], voxel[1],
+                      voxel[2], section->mask.at(u, row) ? "material" : "empty", c.x, c.y, c.z,
                       units == "model" ? "model units" : units.c_str());
+    if (clicked) addMeasurePick(state, glm::ivec3(voxel[0], voxel[1], voxel[2]));
   }
 }
 

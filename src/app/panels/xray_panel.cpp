@@ -183,6 +183,8 @@ void drawXrayImage(AppState& state) {
     dl->AddText(ImVec2(unit_x, ty - text_h * 0.5f), ink, units_label);
     last_y = ty - text_h * 0.5f;
   }
+  drawScaleBar(ImVec2(map0.x, map0.y + size.y + 2.0f), fit / float(x->voxel_size), state.model.frame().units,
+               std::min(size.x * 0.5f, size.x - 40.0f));
   // Image axes: "right" under the map's bottom-right corner, "up" beside its top-left corner.
   const std::string right = legend.right_axis + " >";
   dl->AddText(ImVec2(map0.x + size.x - ImGui::CalcTextSize(right.c_str()).x, map0.y + size.y + 2.0f), ink,
