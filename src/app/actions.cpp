@@ -293,6 +293,13 @@ const Action kActions[] = {
      nullptr},
     {ActionId::kPeelReset, "Skin", "Reset skin", {}, [](AppState& s) { peelTo(s, 0); }, canPeelBack, nullptr},
 
+    {ActionId::kControls,
+     "Help",
+     "Mouse and keyboard",
+     {GLFW_KEY_F1, 0},
+     [](AppState& s) { s.show_controls = true; },
+     nullptr,
+     nullptr},
     {ActionId::kAbout, "Help", "About voxmod", {}, [](AppState& s) { s.show_about = true; }, nullptr, nullptr},
 };
 
@@ -326,6 +333,8 @@ std::string shortcutText(const Shortcut& s) {
   switch (s.key) {
     case GLFW_KEY_ESCAPE:
       return t + "Esc";
+    case GLFW_KEY_F1:
+      return t + "F1";
     case GLFW_KEY_SPACE:
       return t + "Space";
     case GLFW_KEY_PAGE_UP:

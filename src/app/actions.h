@@ -48,6 +48,7 @@ enum class ActionId {
   kPeelBack,
   kPeelCore,
   kPeelReset,
+  kControls,
   kAbout,
 };
 

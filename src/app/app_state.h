@@ -193,9 +193,11 @@ struct LoadedFile {
 struct Viewport {
   std::unique_ptr<render::PointRenderer> renderer;  // the model
   std::unique_ptr<render::PointRenderer> overlay;   // disputed voxels or the core, drawn over the model
+  std::unique_ptr<render::PointRenderer> ghost;     // the whole part, faint, around a peeled model
   render::Framebuffer framebuffer;
   uint64_t uploaded_version = 0;        // model_version the renderer holds
   uint64_t overlay_key = 0;             // what the overlay holds (see viewport.cpp)
+  uint64_t ghost_key = 0;               // base_id of the model the ghost holds while peeled, else 0
   bool dirty = true;                    // draw again on the next frame
   std::vector<double> drawn_signature;  // what the framebuffer shows (see viewport.cpp)
   bool interacting = false;             // the mouse is dragging the view or a slider: coarse points
@@ -296,6 +298,7 @@ struct AppState {
   bool quit_requested = false;
   bool release_memory = false;  // a document was closed: give freed memory back to the system after the next frame
   bool show_about = false;
+  bool show_controls = false;  // Help > Mouse and keyboard
   bool close_dialogs = false;  // the script's "dialog close": every open dialog closes itself on the next frame
 
   // Frame bookkeeping.

@@ -27,7 +27,7 @@
 //   wait N | wait frames N           draw N frames
 //   hover WIDGET [FX FY]             move the pointer to a widget recorded by `state` (e.g. xray_image), at
 //                                    fractions FX, FY of its width and height (default the centre)
-//   dialog voxelize|open|save|about|close   open one of the dialogs, or close whichever is open
+//   dialog voxelize|open|save|about|controls|close   open one of the dialogs, or close whichever is open
 //   wait-file PATH [SECONDS]         keep drawing until PATH exists (a test driver's signal), default 60 s
 //   expect-error TEXT                the next command must fail with an error containing TEXT (its error dialog
 //                                    stays up); any other outcome fails the script

@@ -9,6 +9,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "app/actions.h"
 #include "app/measure.h"
 #include "app/operations.h"
 #include "app/viewport.h"
@@ -356,10 +357,12 @@ Step execute(Context& c) {
       openBrowser(s, BrowserPurpose::kSaveModel);
     } else if (args[0] == "about") {
       s.show_about = true;
+    } else if (args[0] == "controls") {
+      dispatch(s, ActionId::kControls);
     } else if (args[0] == "close") {
       s.close_dialogs = true;
     } else {
-      return c.fail("dialog takes voxelize, open, save, about or close");
+      return c.fail("dialog takes voxelize, open, save, about, controls or close");
     }
     return Step::kDone;
   }

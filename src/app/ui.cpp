@@ -107,4 +107,10 @@ void drawScaleBar(ImVec2 at, float pixels_per_unit, const std::string& units, fl
   dl->AddText(ImVec2(at.x + px + 6.0f, at.y), ink, label);
 }
 
+void peeledNotice(const AppState& state) {
+  if (!state.doc.model || state.doc.model->peeled <= 0) return;
+  wrappedColoured(kWarningColour, "On the model peeled by " + std::to_string(state.doc.model->peeled) +
+                                      " skin layers (Skin > Reset skin for the whole part).");
+}
+
 }  // namespace vox::app

@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "app/app_state.h"
 #include "vox/core/text.h"
 
 namespace vox::app {
@@ -41,5 +42,8 @@ void wrappedColoured(const ImVec4& colour, const std::string& text);
 // A scale bar at `at` (top left of a text line): the longest round length (1, 2 or 5 x 10^k) that fits in max_px,
 // labelled with its length and units.
 void drawScaleBar(ImVec2 at, float pixels_per_unit, const std::string& units, float max_px);
+
+// Under the Section and X-ray panels' controls: a line saying the model is peeled, when it is.
+void peeledNotice(const AppState& state);
 
 }  // namespace vox::app

@@ -19,6 +19,7 @@ namespace {
 
 constexpr Rgba8 kBackground{46, 50, 58, 255};
 constexpr glm::vec3 kCoreColour{1.0f, 0.2f, 0.85f};
+constexpr float kGhostOpacity = 0.14f;  // the whole part around a peeled one: visible, never in the way
 constexpr glm::vec3 kDisputedColour{1.0f, 0.85f, 0.1f};
 constexpr double kOrbitDegreesPerPixel = 0.4;
 constexpr double kZoomPerWheelStep = 1.15;
@@ -85,6 +86,13 @@ void syncRenderers(AppState& state) {
       state.model_bounds.reset();
     }
     vp.uploaded_version = state.model_version;
+    vp.dirty = true;
+  }
+  // A peeled model is drawn inside a faint ghost of the whole part, so the core never floats alone.
+  const uint64_t ghost = state.doc.model && state.doc.model->peeled > 0 ? state.doc.model->base_id : 0;
+  if (ghost != vp.ghost_key) {
+    if (ghost) vp.ghost->setGrid(state.doc.model->base);
+    vp.ghost_key = ghost;
     vp.dirty = true;
   }
   VoxelGrid scratch;
@@ -165,6 +173,11 @@ void renderView(AppState& state, int w, int h, bool coarse) {
   if (!state.model.empty()) {
     const render::DrawParams params = drawParams(state, coarse);
     vp.stats = vp.renderer->draw(state.view.camera, w, h, params);
+    if (vp.ghost_key != 0) {
+      render::DrawParams faint = params;
+      faint.opacity = kGhostOpacity;
+      vp.ghost->draw(state.view.camera, w, h, faint);
+    }
     if (vp.overlay_key != 0) {
       // Drawn over the model regardless of depth, so the core (deep inside) or a disputed voxel shows through.
       glClear(GL_DEPTH_BUFFER_BIT);
@@ -231,6 +244,9 @@ Status initViewport(AppState& state) {
   if (!main_renderer) return main_renderer.error();
   auto overlay = render::PointRenderer::create();
   if (!overlay) return overlay.error();
+  auto ghost = render::PointRenderer::create();
+  if (!ghost) return ghost.error();
+  state.viewport.ghost = std::move(ghost).value();
   state.viewport.renderer = std::move(main_renderer).value();
   state.viewport.overlay = std::move(overlay).value();
   return Ok{};
@@ -239,6 +255,7 @@ Status initViewport(AppState& state) {
 void shutdownViewport(AppState& state) {
   state.viewport.renderer.reset();
   state.viewport.overlay.reset();
+  state.viewport.ghost.reset();
   state.viewport.framebuffer = render::Framebuffer();
 }
 

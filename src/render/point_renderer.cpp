@@ -265,8 +265,17 @@ DrawStats PointRenderer::draw(const Camera& camera, int32_t width, int32_t heigh
 
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_BLEND);
+  if (params.opacity < 1.0f) {
+    // A see-through pass (a ghost of the whole part around a peeled one): blended with what is drawn, tested
+    // against its depth but leaving it as it is.
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendColor(0.0f, 0.0f, 0.0f, std::clamp(params.opacity, 0.0f, 1.0f));
+    glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+  } else {
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+  }
   glEnable(GL_PROGRAM_POINT_SIZE);
 
   // Group culling, then adjacent visible groups merged into one range each.
@@ -314,6 +323,8 @@ DrawStats PointRenderer::draw(const Camera& camera, int32_t width, int32_t heigh
   }
   glBindVertexArray(0);
   glUseProgram(0);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
   return stats;
 }
 

@@ -38,6 +38,7 @@ struct DrawParams {
   double point_size_px = 0.0;  // > 0: fixed point diameter in pixels; 0: closedPointSize (shading.h), which keeps
                                // the surface closed
   bool round_points = false;   // thesis "point smooth": round instead of square points
+  float opacity = 1.0f;        // < 1: blended over what is drawn, depth-tested but not written (a ghost)
   bool cull_back_groups = true;
   // Level of detail: draw a 2^k-downsampled point set (k >= 1, the smallest whose point count fits
   // lod_point_budget) with 2^k-times larger points. For camera motion on a software rasteriser (llvmpipe draws

@@ -253,6 +253,45 @@ void drawUnsavedPrompt(AppState& state) {
   ImGui::EndPopup();
 }
 
+void drawControlsDialog(AppState& state) {
+  if (state.show_controls) {
+    state.show_controls = false;
+    ImGui::OpenPopup("Mouse and keyboard");
+  }
+  centreNextWindow();
+  if (!ImGui::BeginPopupModal("Mouse and keyboard", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  static constexpr const char* kMouse[][2] = {
+      {"Left drag", "orbit the 3D view"},
+      {"Right or middle drag, Shift+left drag", "pan"},
+      {"Wheel", "zoom"},
+      {"Double-click", "fit the model in the view"},
+      {"Ctrl+click in the 3D view", "pick a voxel to measure (two: their distance)"},
+      {"Click in the section image", "pick a voxel to measure"},
+      {"Hover the section or X-ray image", "read the voxel or ray under the cursor"},
+  };
+  const auto row = [](const char* what, const std::string& does) {  // unwrapped: the window sizes itself to fit
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::TextDisabled("%s", what);
+    ImGui::TableSetColumnIndex(1);
+    ImGui::TextUnformatted(does.c_str());
+  };
+  if (ImGui::BeginTable("controls", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+    for (const auto& r : kMouse) row(r[0], r[1]);
+    // Every shortcut from the action table, so the list is never out of date.
+    for (const Action& a : actionTable()) {
+      const std::string sc = shortcutText(a.shortcut);
+      if (!sc.empty()) row(sc.c_str(), std::string(a.menu) + " > " + a.label);
+    }
+    ImGui::EndTable();
+  }
+  if (ImGui::Button("Close", ImVec2(120.0f, 0.0f)) || state.close_dialogs ||
+      ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
 void drawAboutDialog(AppState& state) {
   if (state.show_about) {
     state.show_about = false;

@@ -237,6 +237,7 @@ void drawFrame(AppState& state) {
   drawFileBrowser(state);
   drawUnsavedPrompt(state);
   drawAboutDialog(state);
+  drawControlsDialog(state);
   drawErrorDialog(state);  // last: an error raised by another dialog this frame shows on top of it
   state.close_dialogs = false;
   handleShortcuts(state);

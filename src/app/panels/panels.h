@@ -36,6 +36,7 @@ void drawFileBrowser(AppState& state);
 void drawErrorDialog(AppState& state);
 void drawUnsavedPrompt(AppState& state);
 void drawAboutDialog(AppState& state);
+void drawControlsDialog(AppState& state);  // Help > Mouse and keyboard
 // Progress of the running load or voxelization, with Cancel.
 void drawJobWindow(AppState& state);
 

@@ -53,6 +53,7 @@ void drawSectionPanel(AppState& state) {
     ImGui::TextWrapped("Open a voxel file or voxelize a mesh to see its sections.");
     return;
   }
+  peeledNotice(state);
   SectionUi& s = state.section;
   int axis = int(s.axis);
   ImGui::TextUnformatted("Normal to");

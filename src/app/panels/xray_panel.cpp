@@ -21,6 +21,7 @@ void drawXrayPanel(AppState& state) {
     ImGui::TextWrapped("Open a voxel file or voxelize a mesh to X-ray it.");
     return;
   }
+  peeledNotice(state);
   XrayParams& p = state.xray.params;
   int axis = int(p.axis);
   ImGui::TextUnformatted("Rays along");
