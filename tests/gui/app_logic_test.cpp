@@ -219,6 +219,16 @@ VoxelGrid block() {
   return g;
 }
 
+// block.vxm written to `dir`, opened, and peeled by one layer: a document with an unsaved change.
+void openBlockPeeledOnce(AppState& state, const test::TempDir& dir) {
+  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
+  startOpen(state, dir / "block.vxm");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  state.panel = Panel::kSkin;
+  peelTo(state, 1);
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model->peeled == 1; }));
+}
+
 TEST(AppDocument, openPeelUndoRedoAndTheUnsavedState) {
   test::TempDir dir;
   ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
@@ -310,13 +320,8 @@ TEST(AppDocument, unsavedChangesAskBeforeQuitting) {
 // and nothing more: the quit belonged to the browsing that failed.
 TEST(AppDocument, aQuitWhoseSaveFailedDoesNotComeBackWithALaterSave) {
   test::TempDir dir;
-  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
   AppState state;
-  startOpen(state, dir / "block.vxm");
-  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
-  state.panel = Panel::kSkin;
-  peelTo(state, 1);
-  ASSERT_TRUE(pump(state, [&] { return state.doc.model->peeled == 1; }));
+  ASSERT_NO_FATAL_FAILURE(openBlockPeeledOnce(state, dir));
   state.doc.save_path.clear();  // as for a model voxelized from a mesh: no file to save to yet
   requestQuit(state);
   ASSERT_TRUE(state.after_unsaved_prompt);
@@ -337,13 +342,8 @@ TEST(AppDocument, aQuitWhoseSaveFailedDoesNotComeBackWithALaterSave) {
 // The prompt's Save that succeeds in its own browser does continue (here: quits).
 TEST(AppDocument, aQuitWhoseSaveSucceedsQuits) {
   test::TempDir dir;
-  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
   AppState state;
-  startOpen(state, dir / "block.vxm");
-  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
-  state.panel = Panel::kSkin;
-  peelTo(state, 1);
-  ASSERT_TRUE(pump(state, [&] { return state.doc.model->peeled == 1; }));
+  ASSERT_NO_FATAL_FAILURE(openBlockPeeledOnce(state, dir));
   state.doc.save_path.clear();
   requestQuit(state);
   auto quit = std::move(state.after_unsaved_prompt);
@@ -432,13 +432,8 @@ TEST(AppDocument, theVoxelizeDialogProposesAResolutionThatFitsComfortably) {
 
 TEST(AppDocument, modelUnitsAreSetForTheWholeDocument) {
   test::TempDir dir;
-  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
   AppState state;
-  startOpen(state, dir / "block.vxm");
-  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
-  state.panel = Panel::kSkin;
-  peelTo(state, 1);
-  ASSERT_TRUE(pump(state, [&] { return state.doc.model->peeled == 1; }));
+  ASSERT_NO_FATAL_FAILURE(openBlockPeeledOnce(state, dir));
   setModelUnits(state, "in");
   EXPECT_EQ(state.model.frame().units, "in");
   undo(state);
@@ -470,13 +465,8 @@ TEST(AppMeasure, twoPicksGiveTheDistanceAndAThirdStartsAgain) {
 // model and its unsaved state, and a save elsewhere then succeeds.
 TEST(AppDocument, aFailedSaveKeepsTheModelAndAnotherPlaceWorks) {
   test::TempDir dir;
-  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
   AppState state;
-  startOpen(state, dir / "block.vxm");
-  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
-  state.panel = Panel::kSkin;
-  peelTo(state, 1);
-  ASSERT_TRUE(pump(state, [&] { return state.doc.model->peeled == 1; }));
+  ASSERT_NO_FATAL_FAILURE(openBlockPeeledOnce(state, dir));
   ASSERT_TRUE(hasUnsavedChanges(state));
 
   const auto bad = dir / "block.vxm" / "sub.vxm";
