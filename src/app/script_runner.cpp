@@ -12,7 +12,7 @@
 #include "app/actions.h"
 #include "app/measure.h"
 #include "app/operations.h"
-#include "app/viewport.h"
+#include "app/view_export.h"
 #include "vox/io/file_util.h"
 
 namespace vox::app {

@@ -11,6 +11,7 @@
 #include "app/measure.h"
 #include "app/operations.h"
 #include "app/ui.h"
+#include "app/view_export.h"
 #include "vox/io/image_io.h"
 #include "vox/render/gl.h"
 

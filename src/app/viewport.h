@@ -3,8 +3,6 @@
 // image, with orbit (left drag), pan (right or middle drag, or Shift + left drag) and zoom (wheel). The image is
 // redrawn only when something it shows changed, so an idle window costs nothing and moving a slider costs one
 // point render per frame.
-#include <filesystem>
-
 #include "app/app_state.h"
 #include "vox/core/result.h"
 
@@ -17,8 +15,5 @@ void shutdownViewport(AppState& state);
 
 // Panel function: draws the view into the current ImGui window's remaining area.
 void drawViewport(AppState& state);
-
-// Renders the view at full detail and writes it as PNG; false (and an error dialog) on failure.
-bool exportViewPng(AppState& state, const std::filesystem::path& path);
 
 }  // namespace vox::app

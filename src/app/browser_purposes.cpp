@@ -1,0 +1,133 @@
+#include "app/browser_purposes.h"
+
+#include <system_error>
+
+#include "app/document.h"
+#include "app/exports.h"
+#include "app/messages.h"
+#include "app/view_export.h"
+
+namespace vox::app {
+
+std::vector<std::string> browserExtensions(BrowserPurpose purpose) {
+  switch (purpose) {
+    case BrowserPurpose::kOpen:
+      return {".stl", ".vxm", ".binvox"};
+    case BrowserPurpose::kSaveModel:
+      return {".vxm", ".binvox"};
+    case BrowserPurpose::kExportBinvox:
+      return {".binvox"};
+    case BrowserPurpose::kExportViewPng:
+    case BrowserPurpose::kExportSectionPng:
+    case BrowserPurpose::kExportXrayPng:
+      return {".png"};
+    case BrowserPurpose::kExportXrayCsv:
+      return {".csv"};
+  }
+  return {};
+}
+
+const char* browserTitle(BrowserPurpose purpose) {
+  switch (purpose) {
+    case BrowserPurpose::kOpen:
+      return "Open a mesh or voxel file";
+    case BrowserPurpose::kSaveModel:
+      return "Save the model as";
+    case BrowserPurpose::kExportBinvox:
+      return "Export binvox";
+    case BrowserPurpose::kExportViewPng:
+      return "Export the 3D view as PNG";
+    case BrowserPurpose::kExportSectionPng:
+      return "Export the section image as PNG";
+    case BrowserPurpose::kExportXrayPng:
+      return "Export the X-ray image as PNG";
+    case BrowserPurpose::kExportXrayCsv:
+      return "Export the X-ray thickness as CSV";
+  }
+  return "";
+}
+
+void openBrowser(AppState& state, BrowserPurpose purpose) {
+  FileBrowser& b = state.browser;
+  b.open_requested = true;
+  b.then = nullptr;  // a continuation belongs to the browsing that set it (saveThen), never to a later one
+  b.purpose = purpose;
+  b.error.clear();
+  std::error_code ec;
+  std::filesystem::path dir = state.settings.last_directory;
+  if (dir.empty() || !std::filesystem::is_directory(dir, ec)) dir = std::filesystem::current_path(ec);
+  b.directory = dir;
+  const std::string stem = state.doc.path.empty() ? std::string("model") : state.doc.path.stem().string();
+  switch (purpose) {
+    case BrowserPurpose::kOpen:
+      b.file_name.clear();
+      break;
+    case BrowserPurpose::kSaveModel:
+      b.file_name = stem + ".vxm";
+      break;
+    case BrowserPurpose::kExportBinvox:
+      b.file_name = stem + ".binvox";
+      break;
+    case BrowserPurpose::kExportViewPng:
+      b.file_name = stem + "_view.png";
+      break;
+    case BrowserPurpose::kExportSectionPng:
+      b.file_name = stem + "_section_" + axisName(state.section.axis) + std::to_string(state.section.index) + ".png";
+      break;
+    case BrowserPurpose::kExportXrayPng:
+      b.file_name =
+          stem + "_xray_" + axisName(state.xray.params.axis) + "_" + xrayModeName(state.xray.params.mode) + ".png";
+      break;
+    case BrowserPurpose::kExportXrayCsv:
+      b.file_name =
+          stem + "_xray_" + axisName(state.xray.params.axis) + "_" + xrayModeName(state.xray.params.mode) + ".csv";
+      break;
+  }
+}
+
+bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::filesystem::path& path) {
+  if (path.filename().empty()) {
+    reportError(state, "no file name given", path);
+    return false;
+  }
+  bool ok = false;
+  switch (purpose) {
+    case BrowserPurpose::kOpen:
+      // Refuse a missing file here, where the browser can stay open, rather than after the unsaved prompt.
+      if (std::error_code ec; !std::filesystem::is_regular_file(path, ec)) {
+        reportError(state, path.string() + ": no such file");
+        return false;
+      }
+      requestOpen(state, path);
+      ok = true;
+      break;
+    case BrowserPurpose::kSaveModel:
+      ok = saveModel(state, path);
+      break;
+    case BrowserPurpose::kExportBinvox:
+      ok = exportBinvox(state, path);
+      break;
+    case BrowserPurpose::kExportViewPng:
+      ok = exportViewPng(state, path);
+      break;
+    case BrowserPurpose::kExportSectionPng:
+      ok = exportSectionPng(state, path);
+      break;
+    case BrowserPurpose::kExportXrayPng:
+      ok = exportXrayPng(state, path);
+      break;
+    case BrowserPurpose::kExportXrayCsv:
+      ok = exportXrayCsv(state, path);
+      break;
+  }
+  if (ok) {
+    state.settings.last_directory = std::filesystem::absolute(path).parent_path().string();
+    if (auto then = std::move(state.browser.then)) {
+      state.browser.then = nullptr;
+      then(state);
+    }
+  }
+  return ok;
+}
+
+}  // namespace vox::app

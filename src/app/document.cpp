@@ -1,0 +1,257 @@
+#include "app/document.h"
+
+#include <algorithm>
+#include <cctype>
+#include <utility>
+
+#include "app/browser_purposes.h"
+#include "app/messages.h"
+#include "app/model_jobs.h"
+#include "app/update.h"
+#include "vox/io/stl.h"
+#include "vox/io/voxel_file.h"
+
+namespace vox::app {
+namespace {
+
+std::string lowerExtension(const std::filesystem::path& p) {
+  std::string e = p.extension().string();
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return e;
+}
+
+// A new grid (re-voxelized, or undo / redo across a voxelization) may lie on another lattice; the camera lives in
+// voxel-index space, so it is carried over to the new lattice to keep showing the same part of the model. A first
+// model is fitted instead.
+void keepTheView(AppState& state, const GridFrame& before, bool had_model) {
+  const GridFrame& now = state.model.frame();
+  if (!had_model) {
+    state.view.fit_pending = true;
+  } else if (now.voxel_size != before.voxel_size || now.origin != before.origin) {
+    if (before.voxel_size > 0 && now.voxel_size > 0) {
+      state.view.camera =
+          render::reframed(state.view.camera, before.origin, before.voxel_size, now.origin, now.voxel_size);
+    } else {
+      state.view.fit_pending = true;
+    }
+  }
+}
+
+}  // namespace
+
+void setModel(AppState& state, ModelSnapshot snapshot, bool undoable) {
+  const bool had_model = state.doc.model.has_value();
+  const GridFrame before = state.model.frame();
+  if (undoable && state.doc.model) {
+    state.doc.undo_stack.push_back(std::move(*state.doc.model));
+    state.doc.redo_stack.clear();
+  }
+  state.doc.model = std::move(snapshot);
+  state.model = state.doc.model->grid;
+  state.model_version = state.doc.model->version;
+  state.viewport.dirty = true;
+  keepTheView(state, before, had_model);
+  // Keep the section where it was when it still fits; start in the middle otherwise.
+  const int32_t n = axisLength(state, state.section.axis);
+  if (state.section.index < 0 || state.section.index >= n) state.section.index = n / 2;
+}
+
+uint64_t takeId(AppState& state) { return state.next_id++; }
+
+ModelSnapshot newBase(AppState& state, VoxelGrid grid, std::shared_ptr<const ModelOrigin> origin, std::string label) {
+  ModelSnapshot s;
+  s.base_id = takeId(state);
+  s.version = takeId(state);
+  s.base = grid;
+  s.grid = std::move(grid);
+  s.peeled = 0;
+  s.origin = std::move(origin);
+  s.label = std::move(label);
+  return s;
+}
+
+void applyLoaded(AppState& state, LoadedFile loaded) {
+  Document& doc = state.doc;
+  doc = Document{};
+  state.voxelize_job.abandon();  // a voxelization of the previous document's mesh must not land in this one
+  // Results derived from the previous document can never be asked for again: free them now.
+  state.depth.clear();
+  state.surface_stats.clear();
+  state.mass.clear();
+  state.xray_result.clear();
+  state.skin.pending_peel.reset();
+  state.model = VoxelGrid{};
+  state.model_version = 0;
+  state.section.index = -1;
+  state.section.playing = false;
+  state.view.fit_pending = true;
+  state.viewport.dirty = true;
+  state.release_memory = true;
+  doc.path = loaded.path;
+  addRecentFile(state.settings, std::filesystem::absolute(loaded.path).lexically_normal().string());
+  state.settings.last_directory = std::filesystem::absolute(loaded.path).parent_path().string();
+  if (loaded.grid) {
+    auto origin = std::make_shared<ModelOrigin>();
+    origin->what = "loaded " + loaded.path.filename().string();
+    origin->load_s = loaded.load_s;
+    VoxelGrid grid = std::move(*loaded.grid);
+    if (grid.frame().source.empty()) grid.frame().source = loaded.path.filename().string();
+    setModel(state, newBase(state, std::move(grid), std::move(origin), "open " + loaded.path.filename().string()),
+             false);
+    doc.save_path = loaded.path;
+    doc.saved_version = doc.model->version;
+    state.panel = Panel::kModel;
+    state.panel_change_requested = true;
+  } else {
+    doc.mesh = std::move(loaded.mesh);
+    doc.saved_version = 0;
+    state.panel = Panel::kModel;
+    state.panel_change_requested = true;
+    if (state.voxelize_after_load || !state.screenshot_on_idle.empty()) {
+      // Voxelized without being asked (the bundled part at start-up).
+      startVoxelize(state, state.voxelize.params);
+    } else if (!state.script) {
+      // A mesh is voxelized at the resolution the user picks: show the plan first (a script voxelizes itself).
+      state.voxelize.open_requested = true;
+    }
+  }
+  state.voxelize_after_load = false;
+}
+
+// ---- Files ----
+
+void requestOpen(AppState& state, const std::filesystem::path& path) {
+  guardUnsaved(state, [path](AppState& s) { startOpen(s, path); });
+}
+
+void startOpen(AppState& state, const std::filesystem::path& path) {
+  state.voxelize_job.abandon();
+  state.job_started = nowSeconds();
+  state.load_job.start("Opening " + path.filename().string(), [path](const ProgressFn&) -> Result<LoadedFile> {
+    const double t0 = nowSeconds();
+    LoadedFile out;
+    out.path = path;
+    if (io::isVoxelFile(path)) {
+      auto grid = io::loadVoxelFile(path);
+      if (!grid) return grid.error();
+      out.grid = std::move(grid).value();
+    } else {
+      auto stl = io::loadStl(path);
+      if (!stl) return stl.error();
+      auto mesh = std::make_shared<MeshSource>();
+      mesh->path = path;
+      mesh->mesh = std::move(stl->mesh);
+      mesh->topology = stl->topology;
+      mesh->ascii = stl->ascii;
+      mesh->warnings = std::move(stl->warnings);
+      mesh->notes = std::move(stl->notes);
+      mesh->volume = signedVolume(mesh->mesh);
+      mesh->load_s = nowSeconds() - t0;
+      out.mesh = std::move(mesh);
+    }
+    out.load_s = nowSeconds() - t0;
+    return out;
+  });
+}
+
+bool saveModel(AppState& state, const std::filesystem::path& path) {
+  if (!state.doc.model) {
+    reportError(state, "there is no model to save yet: voxelize the mesh first", path);
+    return false;
+  }
+  const std::string ext = lowerExtension(path);
+  if (ext != ".vxm" && ext != ".binvox") {
+    reportError(state, "models are saved as .vxm (voxmod) or .binvox; choose one of those extensions", path);
+    return false;
+  }
+  if (Status s = io::saveVoxelFile(state.model, path); !s) {
+    reportError(state, describe(s.error(), path), path);
+    return false;
+  }
+  state.doc.save_path = path;
+  state.doc.saved_version = state.doc.model->version;
+  addRecentFile(state.settings, std::filesystem::absolute(path).lexically_normal().string());
+  return true;
+}
+
+void saveOrAsk(AppState& state) {
+  if (!state.doc.save_path.empty()) {
+    saveModel(state, state.doc.save_path);
+  } else {
+    openBrowser(state, BrowserPurpose::kSaveModel);
+  }
+}
+
+// ---- Unsaved changes ----
+
+bool hasUnsavedChanges(const AppState& state) {
+  return state.doc.model && state.doc.model->version != state.doc.saved_version;
+}
+
+void guardUnsaved(AppState& state, std::function<void(AppState&)> then) {
+  if (!hasUnsavedChanges(state)) {
+    then(state);
+    return;
+  }
+  state.after_unsaved_prompt = std::move(then);
+  state.unsaved_prompt_requested = true;
+}
+
+void saveThen(AppState& state, std::function<void(AppState&)> then) {
+  if (!state.doc.save_path.empty()) {
+    if (saveModel(state, state.doc.save_path) && then) then(state);
+    return;
+  }
+  openBrowser(state, BrowserPurpose::kSaveModel);
+  state.browser.then = std::move(then);  // runs only if a save from this browser succeeds
+}
+
+void requestQuit(AppState& state) {
+  guardUnsaved(state, [](AppState& s) { s.quit_requested = true; });
+}
+
+std::string windowTitle(const AppState& state) {
+  std::string t = "voxmod";
+  if (!state.doc.path.empty()) {
+    t += " - " + state.doc.path.filename().string();
+    if (hasUnsavedChanges(state)) t += " *";
+  }
+  return t;
+}
+
+// ---- Model ----
+
+void setModelUnits(AppState& state, const std::string& units) {
+  if (!state.doc.model || state.model.frame().units == units) return;
+  // A statement about what the numbers mean, for the whole document: every snapshot shares it.
+  const auto set = [&](ModelSnapshot& s) {
+    s.grid.frame().units = units;
+    s.base.frame().units = units;
+  };
+  set(*state.doc.model);
+  for (ModelSnapshot& s : state.doc.undo_stack) set(s);
+  for (ModelSnapshot& s : state.doc.redo_stack) set(s);
+  state.model.frame().units = units;
+  state.doc.saved_version = 0;  // the file on disk says otherwise now: worth saving
+}
+
+bool canUndo(const AppState& state) { return !state.doc.undo_stack.empty() && !modelBusy(state); }
+bool canRedo(const AppState& state) { return !state.doc.redo_stack.empty() && !modelBusy(state); }
+
+void undo(AppState& state) {
+  if (!canUndo(state)) return;
+  ModelSnapshot prev = std::move(state.doc.undo_stack.back());
+  state.doc.undo_stack.pop_back();
+  state.doc.redo_stack.push_back(std::move(*state.doc.model));
+  setModel(state, std::move(prev), false);
+}
+
+void redo(AppState& state) {
+  if (!canRedo(state)) return;
+  ModelSnapshot next = std::move(state.doc.redo_stack.back());
+  state.doc.redo_stack.pop_back();
+  state.doc.undo_stack.push_back(std::move(*state.doc.model));
+  setModel(state, std::move(next), false);
+}
+
+}  // namespace vox::app

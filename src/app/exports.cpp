@@ -1,0 +1,68 @@
+#include "app/exports.h"
+
+#include <algorithm>
+
+#include "app/messages.h"
+#include "app/update.h"
+#include "vox/io/figure.h"
+#include "vox/io/file_util.h"
+#include "vox/io/image_io.h"
+#include "vox/io/voxel_file.h"
+
+namespace vox::app {
+
+bool exportBinvox(AppState& state, const std::filesystem::path& path) {
+  if (state.model.empty()) {
+    reportError(state, "there is no model to export", path);
+    return false;
+  }
+  if (Status s = io::saveBinvox(state.model, path); !s) {
+    reportError(state, describe(s.error(), path), path);
+    return false;
+  }
+  return true;
+}
+
+bool exportSectionPng(AppState& state, const std::filesystem::path& path) {
+  const Section* section = currentSection(state);
+  if (!section) {
+    reportError(state, "there is no section to export", path);
+    return false;
+  }
+  if (Status s = io::savePng(renderSection(*section, 1), path); !s) {
+    reportError(state, describe(s.error(), path), path);
+    return false;
+  }
+  return true;
+}
+
+bool exportXrayPng(AppState& state, const std::filesystem::path& path) {
+  const XrayResult* x = currentXray(state);
+  if (!x) {
+    reportError(state, "there is no X-ray image to export (open the X-ray panel first)", path);
+    return false;
+  }
+  // Independent of the window: about 512 pixels across the longer side of the map.
+  const int32_t longest = std::max({x->thickness.width, x->thickness.height, 1});
+  const int32_t scale = std::clamp((512 + longest - 1) / longest, 1, 8);
+  if (Status s = io::savePng(io::drawScalarMapFigure(x->thickness, x->max, xrayLegend(*x), scale).image, path); !s) {
+    reportError(state, describe(s.error(), path), path);
+    return false;
+  }
+  return true;
+}
+
+bool exportXrayCsv(AppState& state, const std::filesystem::path& path) {
+  const XrayResult* x = currentXray(state);
+  if (!x) {
+    reportError(state, "there is no X-ray to export (open the X-ray panel first)", path);
+    return false;
+  }
+  if (Status s = io::writeFileAtomic(path, xrayCsv(*x)); !s) {
+    reportError(state, describe(s.error(), path), path);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace vox::app

@@ -1,0 +1,91 @@
+#include "app/model_jobs.h"
+
+#include <algorithm>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "app/document.h"
+#include "app/messages.h"
+#include "vox/core/text.h"
+
+namespace vox::app {
+
+Result<VoxelizePlan> planFor(const AppState& state, const VoxelizeParams& params) {
+  if (!state.doc.mesh) return makeError(ErrorCode::kInvalidArgument, "no mesh is open");
+  return planVoxelization(state.doc.mesh->mesh.bounds(), params);
+}
+
+uint64_t comfortableVoxelizeBytes() {
+  const uint64_t physical = physicalMemoryBytes();
+  return physical == 0 ? uint64_t(4) << 30 : std::min(uint64_t(4) << 30, physical / 4);
+}
+
+void proposeResolution(AppState& state) {
+  VoxelizeDialog& d = state.voxelize;
+  d.proposal_note.clear();
+  if (!state.doc.mesh || d.by_voxel_size) return;
+  const auto need = [&](int64_t r) {
+    VoxelizeParams p = d.params;
+    p.resolution = r;
+    auto plan = planFor(state, p);
+    return plan ? plan->bytes : UINT64_MAX;
+  };
+  const uint64_t last = need(d.params.resolution);
+  if (last <= comfortableVoxelizeBytes()) return;
+  for (int64_t r : {1000, 400, 200, 100}) {
+    if (r < d.params.resolution && need(r) <= comfortableVoxelizeBytes()) {
+      d.proposal_note = "Proposed R = " + std::to_string(r) + ": the last one used, " +
+                        std::to_string(d.params.resolution) + ", would need " + formatBytes(last) + " for this part.";
+      d.params.resolution = r;
+      return;
+    }
+  }
+}
+
+void startVoxelize(AppState& state, const VoxelizeParams& params) {
+  if (!state.doc.mesh) {
+    reportError(state, "there is no mesh to voxelize: open an STL file first", state.doc.path);
+    return;
+  }
+  state.settings.resolution = params.resolution;
+  state.settings.fill_mode = fillModeName(params.mode);
+  state.voxelize_job_params = params;
+  state.job_started = nowSeconds();
+  auto mesh = state.doc.mesh;
+  state.voxelize_job.start("Voxelizing " + mesh->path.filename().string(),
+                           [mesh, params](const ProgressFn& progress) -> Result<VoxelizeResult> {
+                             return voxelizeSolid(mesh->mesh, params, progress, &mesh->topology);
+                           });
+}
+
+void cancelJobs(AppState& state) {
+  state.load_job.cancel();
+  state.voxelize_job.cancel();
+}
+
+bool modelBusy(const AppState& state) { return state.load_job.active() || state.voxelize_job.active(); }
+
+void applyVoxelized(AppState& state, VoxelizeResult result, const VoxelizeParams& params, double seconds) {
+  auto origin = std::make_shared<ModelOrigin>();
+  origin->mode_used = fillModeName(result.mode_used);
+  origin->mode_reason = result.mode_reason;
+  origin->resolution = std::max({result.grid.nx(), result.grid.ny(), result.grid.nz()});
+  origin->voxelize_s = seconds;
+  origin->load_s = state.doc.mesh ? state.doc.mesh->load_s : 0.0;
+  origin->warnings = result.warnings;
+  origin->disputed_count = result.disputed_count;
+  if (result.disputed) origin->disputed = std::make_shared<const SparseVoxels>(std::move(*result.disputed));
+  const std::string res_text =
+      params.voxel_size > 0 ? "h=" + std::to_string(params.voxel_size) : "R=" + std::to_string(params.resolution);
+  origin->what = "voxelized at " + res_text + " (" + origin->mode_used + ")";
+  VoxelGrid grid = std::move(result.grid);
+  if (state.doc.mesh) grid.frame().source = state.doc.mesh->path.filename().string();
+  // Voxelizing alone loses nothing the user could not redo in a moment: when nothing was unsaved before, nothing
+  // is after (a peel, later, is a change worth a prompt).
+  const bool nothing_to_lose = !hasUnsavedChanges(state);
+  setModel(state, newBase(state, std::move(grid), std::move(origin), "voxelize " + res_text), true);
+  if (nothing_to_lose) state.doc.saved_version = state.doc.model->version;
+}
+
+}  // namespace vox::app

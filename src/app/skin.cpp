@@ -1,0 +1,58 @@
+#include "app/skin.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "app/document.h"
+#include "vox/core/text.h"
+
+namespace vox::app {
+
+uint64_t skinLayersMemoryLimit() { return physicalMemoryBytes() / 5 * 4; }
+
+std::string skinLayersMemoryProblem(const VoxelGrid& grid) {
+  const uint64_t need = estimateDepthMapBytes(grid) + grid.memoryBytes();
+  const uint64_t limit = skinLayersMemoryLimit();
+  if (limit == 0 || need <= limit) return {};
+  return "the skin layers of this " + std::to_string(grid.nx()) + " x " + std::to_string(grid.ny()) + " x " +
+         std::to_string(grid.nz()) + " model need up to " + formatBytes(need) + " with the model, more than " +
+         formatBytes(limit) +
+         " (80% of this machine's memory): voxelize at a lower resolution to peel in the window, "
+         "or peel with 'voxmod peel FILE --layers N' (about three copies of the grid)";
+}
+
+const DepthMap* currentDepthMap(const AppState& state) {
+  if (!state.doc.model) return nullptr;
+  const auto* d = state.depth.get(state.doc.model->base_id);
+  return d ? d->get() : nullptr;
+}
+
+int32_t peelLayersAvailable(const AppState& state) {
+  const DepthMap* d = currentDepthMap(state);
+  return d ? d->layers() : -1;
+}
+
+void peelTo(AppState& state, int32_t layers) {
+  if (!state.doc.model) return;
+  const DepthMap* depth = currentDepthMap(state);
+  if (!depth) {
+    state.skin.pending_peel = layers;  // applied by updateDocument when the depth map arrives
+    return;
+  }
+  state.skin.pending_peel.reset();
+  // The core (the last layer) stays: peeling it too would leave nothing to look at.
+  const int32_t k = std::clamp(layers, 0, std::max(depth->layers() - 1, 0));
+  const ModelSnapshot& cur = *state.doc.model;
+  if (k == cur.peeled) return;
+  ModelSnapshot next;
+  next.base_id = cur.base_id;
+  next.base = cur.base;
+  next.version = takeId(state);
+  next.peeled = k;
+  next.grid = depth->remainingAfter(k);
+  next.origin = cur.origin;
+  next.label = k == 0 ? "reset skin" : "peel to layer " + std::to_string(k);
+  setModel(state, std::move(next), true);
+}
+
+}  // namespace vox::app

@@ -1,0 +1,117 @@
+#include "app/update.h"
+
+#include <algorithm>
+#include <memory>
+#include <utility>
+
+#include "app/document.h"
+#include "app/messages.h"
+#include "app/model_jobs.h"
+#include "app/skin.h"
+
+namespace vox::app {
+
+const Section* currentSection(AppState& state) {
+  if (state.model.empty()) return nullptr;
+  const int32_t n = axisLength(state, state.section.axis);
+  state.section.index = std::clamp(state.section.index, 0, std::max(n - 1, 0));
+  const SectionKey key{state.model_version, state.section.axis, state.section.index};
+  if (!(key == state.section_key)) {
+    state.section_key = key;
+    auto s = computeSection(state.model, SectionParams{state.section.axis, state.section.index});
+    if (s) {
+      state.section_result = std::move(s).value();
+      state.section_error.clear();
+    } else {
+      state.section_result.reset();
+      state.section_error = s.error().message;
+    }
+    state.section_texture.reset();  // re-uploaded by the panel when shown
+  }
+  return state.section_result ? &*state.section_result : nullptr;
+}
+
+void updateDocument(AppState& state) {
+  if (auto loaded = state.load_job.take()) {
+    if (loaded->ok()) {
+      applyLoaded(state, std::move(*loaded).value());
+    } else if (loaded->error().code != ErrorCode::kCancelled) {
+      reportError(state, loaded->error().message);
+    }
+  }
+  if (auto result = state.voxelize_job.take()) {
+    if (result->ok()) {
+      applyVoxelized(state, std::move(*result).value(), state.voxelize_job_params, nowSeconds() - state.job_started);
+    } else if (result->error().code != ErrorCode::kCancelled) {
+      reportError(state, result->error().message, state.doc.path);
+    }
+  }
+  state.depth.poll();
+  state.surface_stats.poll();
+  state.mass.poll();
+  state.xray_result.poll();
+  if (!state.doc.model) return;
+
+  const ModelSnapshot& m = *state.doc.model;
+  // The depth map of the base: needed by the Skin panel and by queued peels.
+  // (Each request runs only when its key has nothing yet: the grid copies for the workers are made only then.)
+  if ((state.panel == Panel::kSkin || state.skin.pending_peel) && state.depth.wants(m.base_id)) {
+    VoxelGrid base = m.base;
+    state.depth.request(m.base_id, "Computing skin layers", [base](const ProgressFn& progress) {
+      // Refused before anything is allocated when it could run the machine out of memory (it would take the
+      // window, and the user's work, with it).
+      if (const std::string why = skinLayersMemoryProblem(base); !why.empty()) {
+        return Result<std::shared_ptr<const DepthMap>>(makeError(ErrorCode::kLimit, why));
+      }
+      auto d = computeDepthMap(base, progress);
+      if (!d) return Result<std::shared_ptr<const DepthMap>>(d.error());
+      return Result<std::shared_ptr<const DepthMap>>(std::make_shared<const DepthMap>(std::move(d).value()));
+    });
+  }
+  if (const Error* e = state.depth.error(m.base_id); e && state.skin.pending_peel) {
+    state.skin.pending_peel.reset();
+    reportError(state, "skin removal failed: " + e->message, state.doc.path);
+  }
+  if (state.skin.pending_peel && currentDepthMap(state)) peelTo(state, *state.skin.pending_peel);
+
+  const VoxelGrid& grid = state.model;
+  if (state.surface_stats.wants(state.model_version)) {
+    state.surface_stats.request(state.model_version, "Counting surface voxels",
+                                [grid](const ProgressFn&) { return Result<SurfaceStats>(computeSurfaceStats(grid)); });
+  }
+  if (state.panel == Panel::kMass && state.mass.wants(state.model_version)) {
+    state.mass.request(state.model_version, "Mass properties",
+                       [grid](const ProgressFn&) { return Result<MassProperties>(computeMassProperties(grid)); });
+  }
+  const XrayKey xray_key{state.model_version, state.xray.params.axis, state.xray.params.mode};
+  if (state.panel == Panel::kXray && state.xray_result.wants(xray_key)) {
+    const XrayKey& key = xray_key;
+    const XrayParams params = state.xray.params;
+    state.xray_result.request(key, "X-ray", [grid, params](const ProgressFn&) {
+      auto x = computeXray(grid, params);
+      if (!x) return Result<std::shared_ptr<const XrayResult>>(x.error());
+      return Result<std::shared_ptr<const XrayResult>>(std::make_shared<const XrayResult>(std::move(x).value()));
+    });
+  }
+}
+
+const XrayResult* currentXray(const AppState& state) {
+  const XrayKey key{state.model_version, state.xray.params.axis, state.xray.params.mode};
+  const auto* x = state.xray_result.get(key);
+  return x ? x->get() : nullptr;
+}
+
+int32_t axisLength(const AppState& state, Axis axis) {
+  if (state.model.empty()) return 0;
+  switch (axis) {
+    case Axis::kX:
+      return state.model.nx();
+    case Axis::kY:
+      return state.model.ny();
+    case Axis::kZ:
+      return state.model.nz();
+  }
+  return 0;
+}
+
+}  // namespace vox::app

@@ -1,0 +1,20 @@
+#pragma once
+// What the document does each frame, and the derived results the panels show: the section and the X-ray. No ImGui
+// and no GL here.
+#include <cstdint>
+
+#include "app/app_state.h"
+
+namespace vox::app {
+
+// Moves finished background results in, applies queued peels, asks for the derived results the open panel needs,
+// and recomputes the section when its key changed.
+void updateDocument(AppState& state);
+// The section for the current params (null when there is no model).
+const Section* currentSection(AppState& state);
+// The X-ray for the current params, once computed (null before, and without a model).
+const XrayResult* currentXray(const AppState& state);
+// Number of voxels along an axis of the model (0 without one).
+int32_t axisLength(const AppState& state, Axis axis);
+
+}  // namespace vox::app
