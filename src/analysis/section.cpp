@@ -138,32 +138,4 @@ Result<Section> computeSection(const VoxelGrid& grid, const SectionParams& param
   return s;
 }
 
-ImageRgb renderSection(const Section& section, int32_t scale) {
-  scale = std::max(1, scale);
-  const Image2D<uint8_t>& m = section.mask;
-  ImageRgb img(m.width * scale, m.height * scale);
-  // Steel blue material, a darker outline so thin walls stay visible, light grey empty space: readable in print
-  // and for the common forms of colour blindness (the outline differs in lightness, not only in hue).
-  constexpr Rgb8 kMaterial{70, 130, 180};
-  constexpr Rgb8 kOutline{20, 45, 85};
-  constexpr Rgb8 kEmpty{232, 232, 232};
-  auto filled = [&](int32_t x, int32_t y) {
-    return x >= 0 && y >= 0 && x < m.width && y < m.height && m.at(x, y) != 0;
-  };
-  for (int32_t y = 0; y < m.height; ++y) {
-    for (int32_t x = 0; x < m.width; ++x) {
-      Rgb8 c = kEmpty;
-      if (filled(x, y)) {
-        const bool outline = !filled(x - 1, y) || !filled(x + 1, y) || !filled(x, y - 1) || !filled(x, y + 1);
-        c = outline ? kOutline : kMaterial;
-      }
-      for (int32_t dy = 0; dy < scale; ++dy) {
-        Rgb8* out = &img.at(x * scale, y * scale + dy);
-        std::fill(out, out + scale, c);
-      }
-    }
-  }
-  return img;
-}
-
 }  // namespace vox

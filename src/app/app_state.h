@@ -299,6 +299,9 @@ struct AppState {
   bool release_memory = false;  // a document was closed: give freed memory back to the system after the next frame
   bool show_about = false;
   bool show_controls = false;  // Help > Mouse and keyboard
+  std::string status_message;  // e.g. "Wrote /home/me/part.png", in the status bar for a few seconds
+  double status_since = 0.0;
+  int32_t export_width = 0, export_height = 0;  // size of an exported 3D view in pixels; 0: the view's own
   bool close_dialogs = false;  // the script's "dialog close": every open dialog closes itself on the next frame
 
   // Frame bookkeeping.

@@ -122,6 +122,11 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
   }
   if (ok) {
     state.settings.last_directory = std::filesystem::absolute(path).parent_path().string();
+    // Say where a file went (the name typed may have been relative, or the directory not the one in mind).
+    if (purpose != BrowserPurpose::kOpen) {
+      state.status_message = "Wrote " + std::filesystem::absolute(path).lexically_normal().string();
+      state.status_since = nowSeconds();
+    }
     if (auto then = std::move(state.browser.then)) {
       state.browser.then = nullptr;
       then(state);

@@ -29,7 +29,7 @@ bool exportSectionPng(AppState& state, const std::filesystem::path& path) {
     reportError(state, "there is no section to export", path);
     return false;
   }
-  if (Status s = io::savePng(renderSection(*section, 1), path); !s) {
+  if (Status s = io::savePng(io::sectionPicture(section->mask, 1), path); !s) {
     reportError(state, describe(s.error(), path), path);
     return false;
   }

@@ -15,7 +15,7 @@ struct Signature {
 };
 
 // Argument counts per command; the meaning of each is checked when it runs (see script.h).
-constexpr std::array<Signature, 30> kSignatures = {{
+constexpr std::array<Signature, 31> kSignatures = {{
     {"open", 1, -1},        {"voxelize", 1, 2},     {"section", 1, 2},
     {"sweep", 1, 2},        {"peel", 1, 1},         {"xray", 2, 2},
     {"panel", 1, 1},        {"view", 1, 2},         {"zoom", 1, 1},
@@ -26,6 +26,7 @@ constexpr std::array<Signature, 30> kSignatures = {{
     {"state", 1, -1},       {"wait", 1, 2},         {"wait-file", 1, 2},
     {"quit", 0, 0},         {"lod", 1, 1},          {"expect-error", 1, -1},
     {"hover", 1, 3},        {"dialog", 1, 1},       {"measure", 1, 3},
+    {"export-size", 2, 2},
 }};
 
 const Signature* findSignature(const std::string& name) {

@@ -20,7 +20,8 @@
 //   lit on|off, round on|off, disputed on|off, cut on|off, lod on|off
 //   undo | redo
 //   save PATH                        save the model (.vxm or .binvox)
-//   export-view PATH | export-section PATH | export-xray PATH | export-csv PATH
+//   export-view PATH | export-section PATH | export-xray PATH | export-csv PATH   as File > Export does
+//   export-size W H                  size of an exported 3D view in pixels (0 0: as the view is shown)
 //   screenshot PATH                  the whole window as PNG, after the next frame is drawn
 //   state PATH                       once background work has finished, write the window's state as "key = value"
 //                                    lines (widget rectangles in window pixels, section index, peel level, ...)

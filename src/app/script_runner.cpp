@@ -292,12 +292,20 @@ Step execute(Context& c) {
   if (name == "save") return saveModel(s, c.cmd.rest) ? Step::kDone : Step::kFail;
   if (name == "export-view" || name == "export-section" || name == "export-xray" || name == "export-csv") {
     if (Step w = waitSettled(c, 1); w != Step::kDone) return w;  // export what the window shows
-    const std::filesystem::path path = c.cmd.rest;
-    const bool ok = name == "export-view"      ? exportViewPng(s, path)
-                    : name == "export-section" ? exportSectionPng(s, path)
-                    : name == "export-xray"    ? exportXrayPng(s, path)
-                                               : exportXrayCsv(s, path);
-    return ok ? Step::kDone : Step::kFail;
+    // The path the file browser's Save takes, so a script exports exactly as a user does.
+    const BrowserPurpose purpose = name == "export-view"      ? BrowserPurpose::kExportViewPng
+                                   : name == "export-section" ? BrowserPurpose::kExportSectionPng
+                                   : name == "export-xray"    ? BrowserPurpose::kExportXrayPng
+                                                              : BrowserPurpose::kExportXrayCsv;
+    return acceptBrowserPath(s, purpose, c.cmd.rest) ? Step::kDone : Step::kFail;
+  }
+  if (name == "export-size") {  // export-size W H: the 3D view's export size (0 0: as shown)
+    double w = 0, h = 0;
+    if (!parseNumber(args[0], w) || !parseNumber(args[1], h) || w < 0 || h < 0 || w > 8192 || h > 8192)
+      return c.fail("export-size takes a width and a height in pixels, 0 to 8192");
+    s.export_width = int32_t(w);
+    s.export_height = int32_t(h);
+    return Step::kDone;
   }
   if (name == "screenshot") {
     if (!r.screenshot_requested) {

@@ -374,7 +374,10 @@ bool exportViewPng(AppState& state, const std::filesystem::path& path) {
     return false;
   }
   syncRenderers(state);
-  renderView(state, int(vp.width), int(vp.height), false);
+  // At the size asked for (the same view: the camera keeps its framing, the aspect follows the picture), or as shown.
+  const int w = state.export_width > 0 && state.export_height > 0 ? state.export_width : int(vp.width);
+  const int h = state.export_width > 0 && state.export_height > 0 ? state.export_height : int(vp.height);
+  renderView(state, w, h, false);
   vp.drawn_signature.clear();  // the panel redraws its own (possibly coarse) image next frame
   ImageRgba image = vp.framebuffer.readPixels();
   if (Status s = io::savePng(image, path); !s) {

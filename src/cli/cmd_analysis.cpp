@@ -49,7 +49,7 @@ int runSection(const SectionOptions& o) {
   p.index = o.index;
   auto section = computeSection(model->grid, p);
   if (!section) return out.fail(section.error());
-  if (auto s = io::savePng(renderSection(*section, o.scale), o.out); !s) return out.fail(s.error());
+  if (auto s = io::savePng(io::sectionPicture(section->mask, o.scale), o.out); !s) return out.fail(s.error());
   auto& d = out.data();
   d["axis"] = o.axis;
   d["index"] = o.index;

@@ -461,6 +461,20 @@ TEST(AppMeasure, twoPicksGiveTheDistanceAndAThirdStartsAgain) {
   EXPECT_TRUE(measurePicks(state).empty());
 }
 
+// An export through the browser says where it wrote, as an absolute path (a relative name is easy to lose).
+TEST(AppDocument, anExportSaysWhereItWrote) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
+  AppState state;
+  startOpen(state, dir / "block.vxm");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  state.panel = Panel::kSection;
+  ASSERT_TRUE(pump(state, [&] { return currentSection(state) != nullptr; }));
+  ASSERT_TRUE(acceptBrowserPath(state, BrowserPurpose::kExportSectionPng, dir / "cut.png"));
+  EXPECT_EQ(state.status_message, "Wrote " + (dir / "cut.png").string());
+  EXPECT_TRUE(std::filesystem::exists(dir / "cut.png"));
+}
+
 // A save that fails (here: a path below a regular file, which even root cannot create) reports the path, keeps the
 // model and its unsaved state, and a save elsewhere then succeeds.
 TEST(AppDocument, aFailedSaveKeepsTheModelAndAnotherPlaceWorks) {

@@ -49,9 +49,6 @@ struct Section {
 Result<Section> computeSection(const VoxelGrid& grid, const SectionParams& params);
 // Filled voxels in one section, without building the image. O(section words).
 int64_t sectionCount(const VoxelGrid& grid, Axis axis, int32_t index);
-// A picture of the section: material in a solid colour, outline voxels (material with an empty in-plane
-// neighbour) darker, empty space light grey; `scale` pixels per voxel.
-ImageRgb renderSection(const Section& section, int32_t scale = 1);
 
 // ---- Skin removal (thesis 5.2.2) ----
 // Every filled voxel with at least one empty face neighbour (6-connectivity) is removed at once, decided on the

@@ -25,6 +25,10 @@ int textLineHeight(int scale);
 // Draws `text` with its top-left corner at (x, y), clipped to the image.
 void drawText(ImageRgb& image, int x, int y, std::string_view text, Rgb8 colour, int scale);
 
+// A picture of a section's filled mask (0 or 1, row 0 at the top): material in a solid colour, outline voxels
+// (material with an empty in-plane neighbour) darker, empty space light grey; `scale` pixels per voxel.
+ImageRgb sectionPicture(const Image2D<uint8_t>& mask, int32_t scale = 1);
+
 struct PixelRect {
   int32_t x = 0, y = 0, width = 0, height = 0;
 };

@@ -110,7 +110,9 @@ void drawFileBrowser(AppState& state) {
     b.needs_listing = true;
   }
 
-  const float footer = ImGui::GetFrameHeightWithSpacing() * 2.0f + ImGui::GetStyle().ItemSpacing.y;
+  const float footer =
+      ImGui::GetFrameHeightWithSpacing() * (b.purpose == BrowserPurpose::kExportViewPng ? 3.0f : 2.0f) +
+      ImGui::GetStyle().ItemSpacing.y;
   bool activate = false;
   if (ImGui::BeginChild("##entries", ImVec2(0.0f, -footer), true)) {
     if (!b.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", b.error.c_str());
@@ -150,6 +152,15 @@ void drawFileBrowser(AppState& state) {
     ImGui::CloseCurrentPopup();
   } else if (activate && !b.file_name.empty()) {
     accept(state);
+  }
+  if (b.purpose == BrowserPurpose::kExportViewPng) {
+    // The picture's own size, whatever the window's (e.g. 3840 x 2160 for a slide); 0 x 0 is the view as shown.
+    int size[2] = {state.export_width, state.export_height};
+    ImGui::SetNextItemWidth(160.0f);
+    if (ImGui::InputInt2("pixels (0: as shown)", size)) {
+      state.export_width = std::clamp(size[0], 0, 8192);
+      state.export_height = std::clamp(size[1], 0, 8192);
+    }
   }
   std::error_code ec;
   if (isSave(b.purpose) && !b.file_name.empty() && std::filesystem::exists(b.directory / b.file_name, ec)) {

@@ -175,6 +175,8 @@ void drawStatusBar(AppState& state) {
     ImGui::TextUnformatted(label.c_str());
     ImGui::SameLine();
     ImGui::ProgressBar(float(p), ImVec2(200.0f, 0.0f));
+  } else if (!state.status_message.empty() && nowSeconds() - state.status_since < 8.0) {
+    ImGui::TextUnformatted(state.status_message.c_str());
   } else if (!state.model.empty()) {
     const VoxelGrid& g = state.model;
     const SurfaceStats* stats = state.surface_stats.get(state.model_version);

@@ -12,6 +12,7 @@
 #include "app/operations.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
+#include "vox/io/figure.h"
 
 namespace vox::app {
 namespace {
@@ -142,7 +143,7 @@ void drawSectionImage(AppState& state) {
     ImGui::TextWrapped("%s", state.section_error.empty() ? "No section." : state.section_error.c_str());
     return;
   }
-  if (state.section_texture.empty()) state.section_texture.upload(renderSection(*section, 1));
+  if (state.section_texture.empty()) state.section_texture.upload(io::sectionPicture(section->mask, 1));
   const std::string units = state.model.frame().units;
   ImGui::Text("Section %s = %s, index %d: %s voxels", kAxisNames[int(section->axis)],
               formatLength(section->position, units).c_str(), section->index, groupDigits(section->filled).c_str());

@@ -103,9 +103,10 @@ TEST(DocImages, writeAnalysisPictures) {
   {
     auto s = computeSection(rocker, SectionParams{Axis::kX, mid_x});
     ASSERT_TRUE(s.ok());
-    save(captioned(renderSection(*s, 2), "ROCKER ARM R=256: SECTION X INDEX " + std::to_string(mid_x) + " (" +
-                                             positionText(*s) + "), " + std::to_string(s->filled) + " VOXELS"),
-         out / "section_rocker_arm_x.png");
+    save(
+        captioned(io::sectionPicture(s->mask, 2), "ROCKER ARM R=256: SECTION X INDEX " + std::to_string(mid_x) + " (" +
+                                                      positionText(*s) + "), " + std::to_string(s->filled) + " VOXELS"),
+        out / "section_rocker_arm_x.png");
   }
 
   // Peel sequence: the same section after successive skin layers, from the depth map (thesis 6.4).
@@ -118,7 +119,7 @@ TEST(DocImages, writeAnalysisPictures) {
     for (int32_t k = 0; k < d->layers(); k += step) {
       auto s = computeSection(d->remainingAfter(k), SectionParams{Axis::kX, mid_x});
       ASSERT_TRUE(s.ok());
-      images.push_back(renderSection(*s, 2));
+      images.push_back(io::sectionPicture(s->mask, 2));
       captions.push_back(std::to_string(k) + " LAYERS: " + std::to_string(s->filled) + " VOX");
     }
     save(

@@ -2,6 +2,7 @@
 
 #include "grids.h"
 #include "vox/analysis/analysis.h"
+#include "vox/io/figure.h"
 
 namespace vox {
 namespace {
@@ -82,7 +83,7 @@ TEST(Section, renderShowsMaterialOutlineAndEmpty) {
   const VoxelGrid g = boxGrid(Dims{5, 5, 1}, {1, 1, 0}, {4, 4, 1});  // 3 x 3 square: one interior voxel
   auto s = computeSection(g, {Axis::kZ, 0});
   ASSERT_TRUE(s.ok());
-  const ImageRgb img = renderSection(*s, 3);
+  const ImageRgb img = io::sectionPicture(s->mask, 3);
   ASSERT_EQ(img.width, 15);
   ASSERT_EQ(img.height, 15);
   const Rgb8 empty = img.at(0, 0), outline = img.at(3, 3), material = img.at(7, 7);
