@@ -349,9 +349,13 @@ void drawViewport(AppState& state) {
     dl->AddText(ImVec2(pos.x + (float(w) - ts.x) * 0.5f, pos.y + (float(h) - ts.y) * 0.5f),
                 IM_COL32(220, 220, 220, 255), msg);
   } else {
-    char info[160];
+    char info[256];
     std::snprintf(info, sizeof info, "%s points%s  |  %.0f ms", groupDigits(vp.stats.points_drawn).c_str(),
-                  vp.stats.lod_level > 0 ? ("  |  coarse x" + std::to_string(1 << vp.stats.lod_level)).c_str() : "",
+                  vp.stats.lod_level > 0
+                      ? ("  |  coarse x" + std::to_string(1 << vp.stats.lod_level) +
+                         (vp.interacting ? " while moving" : " (a voxel is under half a pixel: zoom in for every one)"))
+                            .c_str()
+                      : "",
                   vp.draw_ms);
     dl->AddText(ImVec2(pos.x + 8.0f, pos.y + float(h) - ImGui::GetFontSize() - 6.0f), IM_COL32(200, 200, 200, 255),
                 info);
