@@ -176,7 +176,7 @@ void drawXrayImage(AppState& state) {
   for (size_t i = ticks.size(); i-- > 0;) {  // from the maximum down, so the maximum always gets its label
     const float f = x->max > 0 ? float(ticks[i]) / float(x->max) : 0.0f;
     const float ty = bar0.y + (1.0f - f) * bar_h;
-    if (i + 1 != ticks.size() && ty - text_h * 0.5f < last_y + text_h) continue;  // would overlap the label above
+    if (i + 1 != ticks.size() && ty - text_h * 0.5f < last_y + text_h + 3.0f) continue;  // would touch the label above
     dl->AddLine(ImVec2(bar0.x + bar_w, ty), ImVec2(bar0.x + bar_w + 5.0f, ty), ink);
     char units_label[32];
     std::snprintf(units_label, sizeof units_label, "%.4g", double(ticks[i]) * legend.units_per_value);
