@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "support/test_support.h"
 #include "test_meshes.h"
 #include "vox/core/bits.h"
 
@@ -489,6 +490,28 @@ TEST(VoxelizeControl, badParametersAreRejectedWithReasons) {
   ASSERT_FALSE(empty.ok());
   EXPECT_EQ(empty.error().code, ErrorCode::kParse);
   EXPECT_NE(empty.error().message.find("no triangles"), std::string::npos);
+}
+
+// The voxelize dialog says what auto will use from this function, before voxelizing (it said "vote" for meshes that
+// close once exporter noise is welded, which auto voxelizes with nonzero).
+TEST(VoxelizeAuto, resolvesAsVoxelizeSolidDoesAndSaysWhy) {
+  MeshTopology closed;
+  closed.edges = 18;
+  EXPECT_EQ(resolveAutoMode(closed).mode, FillMode::kNonzero);
+  MeshTopology noise;
+  noise.edges = 18;
+  noise.boundary_edges = 576;
+  noise.unbalanced_edges = 576;
+  noise.closes_when_noise_welded = true;
+  const ModeChoice n = resolveAutoMode(noise);
+  EXPECT_EQ(n.mode, FillMode::kNonzero);
+  EXPECT_NE(n.reason.find("closes when vertices within 1e-9"), std::string::npos) << n.reason;
+  noise.closes_when_noise_welded = false;
+  EXPECT_EQ(resolveAutoMode(noise).mode, FillMode::kVote);
+  // voxelizeSolid reports the same choice and words.
+  auto r = voxelizeSolid(test::unitCubeMesh(), VoxelizeParams{.resolution = 4});
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(r->mode_reason, resolveAutoMode(analyzeTopology(test::unitCubeMesh())).reason);
 }
 
 }  // namespace
