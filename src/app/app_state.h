@@ -241,6 +241,7 @@ struct WidgetRect {
 // Shown one at a time in a modal dialog; each names the file and the problem.
 struct ErrorQueue {
   std::vector<std::string> messages;
+  int shown_frame = -1;  // the ImGui frame the dialog opened on: the key press that raised the error must not close it
 };
 
 struct AppState {

@@ -25,6 +25,8 @@ std::string lowerExtension(const std::filesystem::path& p) {
 // model is fitted instead.
 void keepTheView(AppState& state, const GridFrame& before, bool had_model) {
   const GridFrame& now = state.model.frame();
+  // Picked voxels mean nothing on another lattice.
+  if (!had_model || now.voxel_size != before.voxel_size || now.origin != before.origin) state.measure.picks.clear();
   if (!had_model) {
     state.view.fit_pending = true;
   } else if (now.voxel_size != before.voxel_size || now.origin != before.origin) {
@@ -87,6 +89,7 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
   state.view.fit_pending = true;
   state.viewport.dirty = true;
   state.release_memory = true;
+  state.measure.picks.clear();
   doc.path = loaded.path;
   addRecentFile(state.settings, std::filesystem::absolute(loaded.path).lexically_normal().string());
   state.settings.last_directory = std::filesystem::absolute(loaded.path).parent_path().string();

@@ -50,6 +50,7 @@ void peelTo(AppState& state, int32_t layers) {
   next.version = takeId(state);
   next.peeled = k;
   next.grid = depth->remainingAfter(k);
+  next.grid.frame() = cur.base.frame();  // the depth map keeps the frame it was computed with; units may differ now
   next.origin = cur.origin;
   next.label = k == 0 ? "reset skin" : "peel to layer " + std::to_string(k);
   setModel(state, std::move(next), true);

@@ -436,6 +436,9 @@ TEST(AppDocument, modelUnitsAreSetForTheWholeDocument) {
   ASSERT_NO_FATAL_FAILURE(openBlockPeeledOnce(state, dir));
   setModelUnits(state, "in");
   EXPECT_EQ(state.model.frame().units, "in");
+  peelTo(state, 2);  // from the depth map, computed when the units were still the file's
+  EXPECT_EQ(state.doc.model->peeled, 2);
+  EXPECT_EQ(state.model.frame().units, "in");
   undo(state);
   EXPECT_EQ(state.model.frame().units, "in");  // every step of the document
   ASSERT_TRUE(saveModel(state, dir / "inches.vxm"));

@@ -192,7 +192,10 @@ void drawJobWindow(AppState& state) {
 
 void drawErrorDialog(AppState& state) {
   if (state.errors.messages.empty()) return;
-  if (!ImGui::IsPopupOpen("Error")) ImGui::OpenPopup("Error");
+  if (!ImGui::IsPopupOpen("Error")) {
+    ImGui::OpenPopup("Error");
+    state.errors.shown_frame = ImGui::GetFrameCount();
+  }
   centreNextWindow();
   ImGui::SetNextWindowSizeConstraints(ImVec2(360.0f, 0.0f), ImVec2(720.0f, 600.0f));
   if (ImGui::BeginPopupModal("Error", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
@@ -201,8 +204,11 @@ void drawErrorDialog(AppState& state) {
     ImGui::PopTextWrapPos();
     if (state.errors.messages.size() > 1) ImGui::TextDisabled("(%zu more)", state.errors.messages.size() - 1);
     ImGui::Spacing();
-    if (ImGui::Button("OK", ImVec2(120.0f, 0.0f)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
-        ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+    // Enter or Escape close it, but not the very press that raised the error (Enter in a file name field).
+    const bool keys = ImGui::GetFrameCount() > state.errors.shown_frame &&
+                      (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
+                       ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false));
+    if (ImGui::Button("OK", ImVec2(120.0f, 0.0f)) || keys) {
       state.errors.messages.erase(state.errors.messages.begin());
       ImGui::CloseCurrentPopup();
     }

@@ -77,6 +77,8 @@ void accept(AppState& state) {
 
 }  // namespace
 
+bool fileBrowserOpen() { return ImGui::IsPopupOpen(kPopup); }
+
 void drawFileBrowser(AppState& state) {
   FileBrowser& b = state.browser;
   if (b.open_requested) {
@@ -146,8 +148,9 @@ void drawFileBrowser(AppState& state) {
   ImGui::SameLine();
   if (ImGui::Button(isSave(b.purpose) ? "Save" : "Open", ImVec2(80.0f, 0.0f))) activate = true;
   ImGui::SameLine();
-  if (ImGui::Button("Cancel", ImVec2(80.0f, 0.0f)) || state.close_dialogs ||
-      ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+  // Escape closes the browser, unless it is closing an error shown over it.
+  const bool escape = state.errors.messages.empty() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+  if (ImGui::Button("Cancel", ImVec2(80.0f, 0.0f)) || state.close_dialogs || escape) {
     b.then = nullptr;
     ImGui::CloseCurrentPopup();
   } else if (activate && !b.file_name.empty()) {
@@ -170,6 +173,9 @@ void drawFileBrowser(AppState& state) {
     for (const std::string& e : browserExtensions(b.purpose)) exts += (exts.empty() ? "" : ", ") + e;
     ImGui::TextDisabled("Showing %s", b.show_all_files ? "all files" : exts.c_str());
   }
+  // An error raised here (a file that cannot be written) opens over the browser, inside its popup: opened at the
+  // top level it would close the browser, and the name typed with it.
+  drawErrorDialog(state);
   ImGui::EndPopup();
 }
 

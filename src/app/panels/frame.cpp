@@ -240,7 +240,8 @@ void drawFrame(AppState& state) {
   drawUnsavedPrompt(state);
   drawAboutDialog(state);
   drawControlsDialog(state);
-  drawErrorDialog(state);  // last: an error raised by another dialog this frame shows on top of it
+  // Last: an error raised by another dialog this frame shows on top of it; the file browser shows its own errors.
+  if (!fileBrowserOpen()) drawErrorDialog(state);
   state.close_dialogs = false;
   handleShortcuts(state);
 }

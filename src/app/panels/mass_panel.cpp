@@ -1,6 +1,7 @@
 // Mass properties panel (thesis 2.6.1): volume, centroid, inertia tensor, principal moments and axes, bounding box,
 // each voxel a solid cube. With the model's units and a density (or a common material) it gives the mass in kg and
 // the inertia in kg m^2. Computed in the background whenever the model changes while the panel is open.
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -34,8 +35,11 @@ void materialControls(AppState& state) {
     for (const Material& m : commonMaterials()) {
       if (ImGui::Selectable(m.name, ui.material == m.name)) ui = MassUi{m.name, m.density_kg_m3};
     }
+    if (ImGui::Selectable("custom", ui.material == "custom"))
+      ui = MassUi{"custom", ui.density > 0 ? ui.density : 1000.0};
     ImGui::EndCombo();
   }
+  if (ui.density <= 0.0) return;  // unit density: no kg/m^3 to show
   ImGui::SetNextItemWidth(120.0f);
   if (ImGui::InputDouble("kg/m^3", &ui.density, 0.0, 0.0, "%.6g")) {
     ui.density = std::max(ui.density, 0.0);
@@ -43,11 +47,12 @@ void materialControls(AppState& state) {
   }
 }
 
-void vectorTable(const char* id, std::initializer_list<std::pair<const char*, glm::dvec3>> rows, double f) {
+void vectorTable(const char* id, std::initializer_list<std::pair<const char*, glm::dvec3>> rows, double f,
+                 std::array<const char*, 3> columns = {"x", "y", "z"}) {
   // One number to a cell, so that no number is broken across lines.
   if (!ImGui::BeginTable(id, 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame)) return;
   ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 90.0f);
-  for (const char* axis : {"x", "y", "z"}) ImGui::TableSetupColumn(axis);
+  for (const char* c : columns) ImGui::TableSetupColumn(c);
   ImGui::TableHeadersRow();
   for (const auto& [label, v] : rows) {
     ImGui::TableNextRow();
@@ -87,8 +92,10 @@ void drawMassPanel(AppState& state) {
   char buf[160];
   if (beginFactTable("mass")) {
     tableRow("Filled voxels", groupDigits(m->filled));
-    std::snprintf(buf, sizeof buf, "%.6g %s^3 (+/- %.3g)", m->volume, units.c_str(), m->volume_error_bound);
+    std::snprintf(buf, sizeof buf, "%.6g %s^3", m->volume, units.c_str());
     tableRow("Volume", buf);
+    std::snprintf(buf, sizeof buf, "+/- %.3g", m->volume_error_bound);
+    tableRow("Volume bound", buf);
     if (kg) {
       std::snprintf(buf, sizeof buf, "%.6g kg", m->volume * std::pow(metres, 3.0) * density);
       tableRow("Mass", buf);
@@ -108,7 +115,7 @@ void drawMassPanel(AppState& state) {
               f);
   const PrincipalAxes p = principalAxes(m->inertia);
   heading("Principal moments and axes");
-  vectorTable("moments", {{"Moments", p.moments}}, f);
+  vectorTable("moments", {{"Moments", p.moments}}, f, {"1", "2", "3"});
   vectorTable("axes", {{"Axis 1", p.axes[0]}, {"Axis 2", p.axes[1]}, {"Axis 3", p.axes[2]}}, 1.0);
   wrappedColoured(ImGui::GetStyle().Colors[ImGuiCol_TextDisabled],
                   "Lengths in " + units + ". Products of inertia are negative (tensor convention).");

@@ -33,6 +33,7 @@ ImVec2 xrayLegendSize();
 // Dialogs.
 void drawVoxelizeDialog(AppState& state);
 void drawFileBrowser(AppState& state);
+bool fileBrowserOpen();  // the file browser's popup is open (it then draws the error dialog itself)
 void drawErrorDialog(AppState& state);
 void drawUnsavedPrompt(AppState& state);
 void drawAboutDialog(AppState& state);

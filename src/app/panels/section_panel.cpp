@@ -12,6 +12,7 @@
 #include "app/operations.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
+#include "vox/core/units.h"
 #include "vox/io/figure.h"
 
 namespace vox::app {
@@ -114,7 +115,8 @@ void drawSectionPanel(AppState& state) {
     if (beginFactTable("section_facts")) {
       tableRow("Filled voxels", groupDigits(section->filled));
       char area[64];
-      std::snprintf(area, sizeof area, "%.5g (voxels x voxel size^2)", double(section->filled) * h * h);
+      std::snprintf(area, sizeof area, "%.5g %s^2", double(section->filled) * h * h,
+                    unitsLabel(state.model.frame().units).c_str());
       tableRow("Area", area);
       const ImageAxes ax = imageAxes(s.axis);
       tableRow("Image", std::string(kAxisNames[ax.right]) + " to the right, " + kAxisNames[ax.up] + " up");
@@ -152,7 +154,7 @@ void drawSectionImage(AppState& state) {
   const int32_t iw = section->mask.width, ih = section->mask.height;
   const float label_h = ImGui::GetTextLineHeightWithSpacing();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
-  const float room_w = std::max(1.0f, avail.x - 24.0f), room_h = std::max(1.0f, avail.y - 2.0f * label_h);
+  const float room_w = std::max(1.0f, avail.x - 24.0f), room_h = std::max(1.0f, avail.y - 3.0f * label_h);
   float scale = std::min(room_w / float(iw), room_h / float(ih));
   if (scale >= 1.0f) scale = std::floor(scale);  // whole pixels per voxel keep the voxel grid regular
   const ImVec2 size(float(iw) * scale, float(ih) * scale);
@@ -171,8 +173,10 @@ void drawSectionImage(AppState& state) {
   const bool clicked = ImGui::IsItemClicked(ImGuiMouseButton_Left);
   ImGui::SetCursorScreenPos(ImVec2(origin.x + size.x - 40.0f, origin.y + size.y + 2.0f));
   ImGui::Text("%s >", kAxisNames[ax.right]);
-  drawScaleBar(ImVec2(origin.x, origin.y + size.y + 2.0f), scale / float(state.model.voxelSize()), units,
-               std::min(size.x * 0.4f, size.x - 60.0f));
+  // The scale bar on its own line, under the axis label, so the two never run into each other.
+  drawScaleBar(ImVec2(origin.x, origin.y + size.y + 2.0f + label_h), scale / float(state.model.voxelSize()), units,
+               std::max(size.x * 0.5f, 60.0f));
+  ImGui::Dummy(ImVec2(0.0f, label_h));
   // Picked voxels in this section: rings at their cells (the 3D view says what they measure).
   const auto cellOf = [&](const glm::ivec3& v) {
     return ImVec2(origin.x + (float(v[ax.right]) + 0.5f) * scale, origin.y + (float(ih - 1 - v[ax.up]) + 0.5f) * scale);

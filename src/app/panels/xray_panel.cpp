@@ -96,7 +96,7 @@ void drawXrayPanel(AppState& state) {
 ImVec2 xrayLegendSize() {
   // Title above the map, the colour bar with two columns of labels beside it, the read-out below.
   const float line = ImGui::GetTextLineHeightWithSpacing();
-  return ImVec2(ImGui::CalcTextSize("0000000  000.00000").x + 64.0f, 3.5f * line + 8.0f);
+  return ImVec2(ImGui::CalcTextSize("0000000  000.00000").x + 64.0f, 5.0f * line + 8.0f);
 }
 
 void drawXrayImage(AppState& state) {
@@ -124,14 +124,14 @@ void drawXrayImage(AppState& state) {
   }
 
   ImGui::TextUnformatted(legend.title.c_str());
-  ImGui::Dummy(ImVec2(0.0f, ImGui::GetTextLineHeight() * 0.5f));  // room for the colour bar's column headers
+  ImGui::Dummy(ImVec2(0.0f, ImGui::GetTextLineHeight() * 1.2f));  // room for the colour bar's column headers
   // Room left of the map for the "up" axis label.
   const float axis_w = std::max(ImGui::CalcTextSize(legend.up_axis.c_str()).x, ImGui::CalcTextSize("^").x) + 6.0f;
   ImGui::SetCursorPosX(ImGui::GetCursorPosX() + axis_w);
   const ImVec2 legend_size = xrayLegendSize();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const float line = ImGui::GetTextLineHeightWithSpacing();
-  float fit = std::min((avail.x - legend_size.x - axis_w) / float(tw), (avail.y - 2.0f * line - 4.0f) / float(th));
+  float fit = std::min((avail.x - legend_size.x - axis_w) / float(tw), (avail.y - 3.0f * line - 4.0f) / float(th));
   if (fit >= 1.0f) fit = std::floor(fit);  // whole pixels per ray keep every ray the same square
   fit = std::max(fit, 0.05f);
   const ImVec2 size(float(tw) * fit, float(th) * fit);
@@ -184,8 +184,9 @@ void drawXrayImage(AppState& state) {
     dl->AddText(ImVec2(unit_x, ty - text_h * 0.5f), ink, units_label);
     last_y = ty - text_h * 0.5f;
   }
-  drawScaleBar(ImVec2(map0.x, map0.y + size.y + 2.0f), fit / float(x->voxel_size), state.model.frame().units,
-               std::min(size.x * 0.5f, size.x - 40.0f));
+  // The scale bar on its own line, under the axis label, so the two never run into each other.
+  drawScaleBar(ImVec2(map0.x, map0.y + size.y + 2.0f + line), fit / float(x->voxel_size), state.model.frame().units,
+               std::max(size.x * 0.5f, 60.0f));
   // Image axes: "right" under the map's bottom-right corner, "up" beside its top-left corner.
   const std::string right = legend.right_axis + " >";
   dl->AddText(ImVec2(map0.x + size.x - ImGui::CalcTextSize(right.c_str()).x, map0.y + size.y + 2.0f), ink,
@@ -193,7 +194,7 @@ void drawXrayImage(AppState& state) {
   dl->AddText(ImVec2(map0.x - ImGui::CalcTextSize("^").x - 4.0f, map0.y), ink, "^");
   dl->AddText(ImVec2(map0.x - ImGui::CalcTextSize(legend.up_axis.c_str()).x - 4.0f, map0.y + text_h), ink,
               legend.up_axis.c_str());
-  ImGui::Dummy(ImVec2(0.0f, std::max(0.0f, bar_h - size.y) + line * 0.5f));
+  ImGui::Dummy(ImVec2(0.0f, std::max(0.0f, bar_h - size.y) + line * 1.5f));
 
   // Hover read-out: the ray under the mouse, found from where the map was drawn.
   std::string readout = "Hover the map to read the thickness of one ray.";
