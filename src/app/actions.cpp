@@ -18,6 +18,8 @@ constexpr int kShift = GLFW_MOD_SHIFT;
 bool hasModel(const AppState& s) { return s.doc.model.has_value() && !modelBusy(s); }
 bool hasMesh(const AppState& s) { return s.doc.mesh != nullptr && !s.load_job.active(); }
 bool hasSection(const AppState& s) { return !s.model.empty(); }
+// An X-ray export needs the X-ray computed (the X-ray panel computes it); until then the menu item is off.
+bool hasXray(const AppState& s) { return currentXray(s) != nullptr; }
 
 void showPanel(AppState& s, Panel p) {
   s.panel = p;
@@ -85,14 +87,14 @@ const Action kActions[] = {
      "Export X-ray PNG...",
      {},
      [](AppState& s) { openBrowser(s, BrowserPurpose::kExportXrayPng); },
-     hasModel,
+     hasXray,
      nullptr},
     {ActionId::kExportXrayCsv,
      "File",
      "Export X-ray CSV...",
      {},
      [](AppState& s) { openBrowser(s, BrowserPurpose::kExportXrayCsv); },
-     hasModel,
+     hasXray,
      nullptr},
     {ActionId::kQuit, "File", "Quit", {GLFW_KEY_Q, kCtrl}, requestQuit, nullptr, nullptr},
 
