@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "analysis/parallel.h"
+#include "vox/core/parallel.h"
 #include "vox/core/text.h"
 #include "vox/analysis/analysis.h"
 
@@ -53,8 +53,8 @@ Result<VoxelGrid> booleanOp(const VoxelGrid& a, const VoxelGrid& b, BoolOp op) {
 
   VoxelGrid out = op == BoolOp::kIntersection ? VoxelGrid(a.dims(), a.frame()) : a;  // shares a's layers
   const int64_t n = a.wordsPerLayer();
-  const int threads = analysis_detail::threadsFor(b.allocatedLayers() * n);
-  analysis_detail::parallelChunks(0, a.nz(), 4, threads, [&](int, int64_t z0, int64_t z1) {
+  const int threads = threadsFor(b.allocatedLayers() * n);
+  parallelChunks(0, a.nz(), 4, threads, [&](int, int64_t z0, int64_t z1) {
     for (int32_t z = int32_t(z0); z < int32_t(z1); ++z) {
       const bool ha = a.layerAllocated(z), hb = b.layerAllocated(z);
       if (!hb) continue;  // union and difference keep a's layer; intersection stays empty

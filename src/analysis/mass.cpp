@@ -15,7 +15,7 @@
 #include <cctype>
 
 #include "analysis/layer_ops.h"
-#include "analysis/parallel.h"
+#include "vox/core/parallel.h"
 #include "vox/analysis/analysis.h"
 
 namespace vox {
@@ -83,9 +83,9 @@ MassProperties computeMassProperties(const VoxelGrid& grid) {
   MassProperties mp;
   if (grid.empty()) return mp;
   const int64_t wpr = grid.wordsPerRow();
-  const int threads = analysis_detail::threadsFor(grid.allocatedLayers() * grid.wordsPerLayer());
+  const int threads = threadsFor(grid.allocatedLayers() * grid.wordsPerLayer());
   std::vector<Sums> partial(static_cast<size_t>(threads));
-  analysis_detail::parallelChunks(0, grid.nz(), 4, threads, [&](int t, int64_t z0, int64_t z1) {
+  parallelChunks(0, grid.nz(), 4, threads, [&](int t, int64_t z0, int64_t z1) {
     Sums& s = partial[size_t(t)];
     for (int32_t z = int32_t(z0); z < int32_t(z1); ++z) {
       if (!grid.layerAllocated(z)) continue;

@@ -21,7 +21,7 @@
 #include <utility>
 
 #include "analysis/layer_ops.h"
-#include "analysis/parallel.h"
+#include "vox/core/parallel.h"
 #include "vox/analysis/analysis.h"
 
 namespace vox {
@@ -85,13 +85,13 @@ class Peeler {
     }
     if (z_lo >= z_hi) return 0;
 
-    const int threads = analysis_detail::threadsFor(work);
+    const int threads = threadsFor(work);
     std::vector<int64_t> removed(size_t(threads), 0);
     std::vector<int> plane_bits;
     for (int b = 0; b < 31; ++b) {
       if ((depth >> b) & 1) plane_bits.push_back(b);
     }
-    analysis_detail::parallelChunks(z_lo, z_hi, 1, threads, [&](int t, int64_t zb, int64_t ze) {
+    parallelChunks(z_lo, z_hi, 1, threads, [&](int t, int64_t zb, int64_t ze) {
       for (int32_t z = int32_t(zb); z < int32_t(ze); ++z) removed[size_t(t)] += peelLayer(z, ny, planes, plane_bits);
     });
     std::swap(cur_, next_);
@@ -183,8 +183,8 @@ double removedFraction(int64_t removed, int64_t filled) { return filled > 0 ? do
 template <class F>
 VoxelGrid buildByLayer(const VoxelGrid& like, F&& f) {
   VoxelGrid out(like.dims(), like.frame());
-  const int threads = analysis_detail::threadsFor(like.allocatedLayers() * like.wordsPerLayer());
-  analysis_detail::parallelChunks(0, like.nz(), 2, threads, [&](int, int64_t z0, int64_t z1) {
+  const int threads = threadsFor(like.allocatedLayers() * like.wordsPerLayer());
+  parallelChunks(0, like.nz(), 2, threads, [&](int, int64_t z0, int64_t z1) {
     for (int32_t z = int32_t(z0); z < int32_t(z1); ++z) {
       if (like.layerAllocated(z)) f(z, out.mutableLayerWords(z));
     }

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "analysis/layer_ops.h"
-#include "analysis/parallel.h"
+#include "vox/core/parallel.h"
 #include "vox/analysis/analysis.h"
 
 namespace vox {
@@ -46,9 +46,9 @@ int64_t sectionCount(const VoxelGrid& grid, Axis axis, int32_t index) {
       const int64_t xp = int64_t(index) + 1;
       const int64_t word = xp >> 6;
       const int shift = int(xp & 63);
-      const int threads = analysis_detail::threadsFor(grid.allocatedLayers() * grid.ny());
+      const int threads = threadsFor(grid.allocatedLayers() * grid.ny());
       std::vector<int64_t> counts(static_cast<size_t>(threads), 0);
-      analysis_detail::parallelChunks(0, grid.nz(), 16, threads, [&](int t, int64_t z0, int64_t z1) {
+      parallelChunks(0, grid.nz(), 16, threads, [&](int t, int64_t z0, int64_t z1) {
         int64_t c = 0;
         for (int32_t z = int32_t(z0); z < int32_t(z1); ++z) {
           if (!grid.layerAllocated(z)) continue;
@@ -115,9 +115,9 @@ Result<Section> computeSection(const VoxelGrid& grid, const SectionParams& param
       s.mask = Image2D<uint8_t>(grid.ny(), grid.nz(), 0);
       const int64_t xp = int64_t(params.index) + 1;
       const int shift = int(xp & 63);
-      const int threads = analysis_detail::threadsFor(grid.allocatedLayers() * grid.ny());
+      const int threads = threadsFor(grid.allocatedLayers() * grid.ny());
       std::vector<int64_t> counts(static_cast<size_t>(threads), 0);
-      analysis_detail::parallelChunks(0, grid.nz(), 16, threads, [&](int t, int64_t z0, int64_t z1) {
+      parallelChunks(0, grid.nz(), 16, threads, [&](int t, int64_t z0, int64_t z1) {
         int64_t c = 0;
         for (int32_t z = int32_t(z0); z < int32_t(z1); ++z) {
           if (!grid.layerAllocated(z)) continue;

@@ -5,7 +5,7 @@
 #include <bit>
 
 #include "analysis/layer_ops.h"
-#include "analysis/parallel.h"
+#include "vox/core/parallel.h"
 #include "vox/analysis/analysis.h"
 #include "vox/core/neighbour_code.h"
 
@@ -19,10 +19,10 @@ SurfaceStats computeSurfaceStats(const VoxelGrid& grid) {
   const int64_t wpr = grid.wordsPerRow();
   const int64_t w_begin = analysis_detail::firstRowWord(grid);
   const int64_t w_end = analysis_detail::endRowWord(grid);
-  const int threads = analysis_detail::threadsFor(grid.allocatedLayers() * grid.wordsPerLayer());
+  const int threads = threadsFor(grid.allocatedLayers() * grid.wordsPerLayer());
   std::vector<SurfaceStats> partial(static_cast<size_t>(threads));
 
-  analysis_detail::parallelChunks(0, grid.nz(), 4, threads, [&](int t, int64_t z0, int64_t z1) {
+  parallelChunks(0, grid.nz(), 4, threads, [&](int t, int64_t z0, int64_t z1) {
     SurfaceStats& s = partial[size_t(t)];
     for (int32_t z = int32_t(z0); z < int32_t(z1); ++z) {
       if (!grid.layerAllocated(z)) continue;

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "analysis/layer_ops.h"
-#include "analysis/parallel.h"
+#include "vox/core/parallel.h"
 #include "vox/analysis/analysis.h"
 
 namespace vox {
@@ -39,8 +39,8 @@ struct Accumulate {
 // Rays along X: one per row (y, z). Image x right = y, up = z.
 void raysAlongX(const VoxelGrid& g, Accumulate acc, Image2D<int32_t>& img) {
   const int64_t wpr = g.wordsPerRow();
-  const int threads = analysis_detail::threadsFor(g.allocatedLayers() * g.wordsPerLayer());
-  analysis_detail::parallelChunks(0, g.nz(), 4, threads, [&](int, int64_t z0, int64_t z1) {
+  const int threads = threadsFor(g.allocatedLayers() * g.wordsPerLayer());
+  parallelChunks(0, g.nz(), 4, threads, [&](int, int64_t z0, int64_t z1) {
     for (int32_t z = int32_t(z0); z < int32_t(z1); ++z) {
       if (!g.layerAllocated(z)) continue;
       int32_t* out = &img.at(0, g.nz() - 1 - z);
@@ -76,9 +76,9 @@ void raysAlongX(const VoxelGrid& g, Accumulate acc, Image2D<int32_t>& img) {
 // every run). Image x right = x, up = z.
 void raysAlongY(const VoxelGrid& g, Accumulate acc, Image2D<int32_t>& img) {
   const int64_t wpr = g.wordsPerRow();
-  const int threads = analysis_detail::threadsFor(g.allocatedLayers() * g.wordsPerLayer());
+  const int threads = threadsFor(g.allocatedLayers() * g.wordsPerLayer());
   std::vector<std::vector<int32_t>> start_buf(static_cast<size_t>(threads)), value_buf(static_cast<size_t>(threads));
-  analysis_detail::parallelChunks(0, g.nz(), 4, threads, [&](int t, int64_t z0, int64_t z1) {
+  parallelChunks(0, g.nz(), 4, threads, [&](int t, int64_t z0, int64_t z1) {
     std::vector<int32_t>& start = start_buf[size_t(t)];
     std::vector<int32_t>& value = value_buf[size_t(t)];
     start.assign(size_t(wpr) * 64, 0);
@@ -113,8 +113,8 @@ void raysAlongZ(const VoxelGrid& g, Accumulate acc, Image2D<int32_t>& img) {
   const int64_t wpr = g.wordsPerRow();
   const int64_t bits = wpr * 64;
   constexpr int64_t kRowsPerChunk = 32;
-  const int threads = analysis_detail::threadsFor(g.allocatedLayers() * g.wordsPerLayer());
-  analysis_detail::parallelChunks(0, g.ny(), kRowsPerChunk, threads, [&](int, int64_t y0, int64_t y1) {
+  const int threads = threadsFor(g.allocatedLayers() * g.wordsPerLayer());
+  parallelChunks(0, g.ny(), kRowsPerChunk, threads, [&](int, int64_t y0, int64_t y1) {
     const int64_t rows = y1 - y0;
     std::vector<int32_t> start(size_t(rows * bits), 0), value(size_t(rows * bits), 0);
     for (int32_t z = 0; z <= g.nz(); ++z) {

@@ -1,13 +1,6 @@
 #include "app/app_state.h"
 
-#include <chrono>
-
 namespace vox::app {
-
-double nowSeconds() {
-  using namespace std::chrono;
-  return duration<double>(steady_clock::now().time_since_epoch()).count();
-}
 
 const char* panelName(Panel p) {
   switch (p) {

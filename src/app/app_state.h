@@ -23,6 +23,7 @@
 #include "vox/render/framebuffer.h"
 #include "vox/render/point_renderer.h"
 #include "vox/voxelize/voxelize.h"
+#include "vox/core/text.h"
 
 struct GLFWwindow;
 
@@ -321,8 +322,5 @@ struct AppState {
   std::string screenshot_on_idle;        // --screenshot PATH: write once everything has settled, then quit
   int exit_code = 0;
 };
-
-// Seconds since an arbitrary start (steady clock).
-double nowSeconds();
 
 }  // namespace vox::app

@@ -14,6 +14,7 @@
 #include "app/operations.h"
 #include "app/view_export.h"
 #include "vox/io/file_util.h"
+#include "vox/core/text.h"
 
 namespace vox::app {
 namespace {
@@ -33,12 +34,6 @@ struct Context {
     return Step::kFail;
   }
 };
-
-template <class T>
-bool parseNumber(const std::string& s, T& out) {
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-  return ec == std::errc() && end == s.data() + s.size();
-}
 
 bool parseOnOff(const std::string& s, bool& out) {
   if (s == "on" || s == "1" || s == "true") return out = true, true;

@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "vox/io/file_util.h"
+#include "vox/core/text.h"
 
 namespace vox::app {
 namespace {
@@ -17,13 +18,6 @@ std::string trim(const std::string& s) {
   if (b == std::string::npos) return {};
   const size_t e = s.find_last_not_of(" \t\r");
   return s.substr(b, e - b + 1);
-}
-
-template <class T>
-void parseNumber(const std::string& text, T& out) {
-  T v{};
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec == std::errc() && end == text.data() + text.size()) out = v;
 }
 
 void parseBool(const std::string& text, bool& out) {

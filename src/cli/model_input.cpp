@@ -2,7 +2,6 @@
 
 #include <unistd.h>
 
-#include <chrono>
 #include <cstdio>
 #include <memory>
 
@@ -31,11 +30,6 @@ void addMeshOptions(CLI::App& sub, MeshOptions& options, const std::string& mode
   sub.add_option("--memory-limit", options.memory_limit_mib,
                  "Refuse grids needing more than this many MiB (default: 80% of physical memory)")
       ->check(CLI::PositiveNumber);
-}
-
-double nowSeconds() {
-  using namespace std::chrono;
-  return duration<double>(steady_clock::now().time_since_epoch()).count();
 }
 
 ProgressFn terminalProgress(const std::string& label) {

@@ -8,6 +8,7 @@
 
 #include "cli/output.h"
 #include "vox/core/mesh.h"
+#include "vox/core/text.h"
 #include "vox/core/voxel_grid.h"
 #include "vox/voxelize/voxelize.h"
 
@@ -42,9 +43,6 @@ struct LoadedModel {
 
 // Reads FILE; messages and warnings go through `out`. Progress goes to stderr when it is a terminal.
 Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptions& options, Output& out);
-
-// Seconds since an arbitrary start (steady clock).
-double nowSeconds();
 
 // Progress printer for a terminal: "voxelizing  42%" on stderr, rewritten in place; silent otherwise.
 ProgressFn terminalProgress(const std::string& label);

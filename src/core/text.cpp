@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <cinttypes>
 #include <cstdio>
 
@@ -24,6 +25,11 @@ std::string formatBytes(uint64_t bytes) {
 
 std::string dimsText(const Dims& d) {
   return std::to_string(d.nx) + " x " + std::to_string(d.ny) + " x " + std::to_string(d.nz);
+}
+
+double nowSeconds() {
+  using namespace std::chrono;
+  return duration<double>(steady_clock::now().time_since_epoch()).count();
 }
 
 uint64_t physicalMemoryBytes() {

@@ -28,7 +28,7 @@
 #endif
 
 #include "voxelize/exact_predicates.h"
-#include "voxelize/parallel.h"
+#include "vox/core/parallel.h"
 
 namespace vox::voxelize_detail {
 namespace {

@@ -7,7 +7,7 @@
 #include "vox/core/bits.h"
 #include "vox/core/surface.h"
 #include "vox/core/voxel_grid.h"
-#include "voxelize/parallel.h"
+#include "vox/core/parallel.h"
 #include "voxelize/passes.h"
 
 namespace vox::voxelize_detail {

@@ -15,7 +15,7 @@
 #include "vox/core/bits.h"
 #include "vox/core/sparse_voxels.h"
 #include "vox/voxelize/voxelize.h"
-#include "voxelize/parallel.h"
+#include "vox/core/parallel.h"
 #include "voxelize/passes.h"
 #include "voxelize/ray_caster.h"
 

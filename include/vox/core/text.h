@@ -1,8 +1,11 @@
 #pragma once
-// Small helpers every module writes messages with, kept in one place: byte sizes, grid dimensions, the machine's
-// memory (for the limits the voxelizer, the file readers and the window enforce).
+// Small helpers shared by the modules, kept in one place: byte sizes, grid dimensions and numbers for messages and
+// their parsing, the machine's memory (for the limits the voxelizer, the file readers and the window enforce), and
+// a clock for timings.
+#include <charconv>
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 #include "vox/core/voxel_grid.h"
 
@@ -14,5 +17,18 @@ std::string formatBytes(uint64_t bytes);
 std::string dimsText(const Dims& dims);
 // Physical memory of this machine in bytes (0 if unknown).
 uint64_t physicalMemoryBytes();
+// Seconds since an arbitrary start (the steady clock): for timing work.
+double nowSeconds();
+
+// The whole of `text` as a number (std::from_chars: no locale, no leading '+' or spaces); `out` is left as it was
+// when the text is not exactly one number.
+template <class T>
+bool parseNumber(std::string_view text, T& out) {
+  T v{};
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size()) return false;
+  out = v;
+  return true;
+}
 
 }  // namespace vox

@@ -33,7 +33,6 @@ ImageAxes imageAxes(Axis a) {
   }
   return {0, 1};
 }
-constexpr const char* kAxisNames[] = {"x", "y", "z"};
 
 void advancePlayback(AppState& state, int32_t n) {
   SectionUi& s = state.section;
@@ -84,7 +83,7 @@ void drawSectionPanel(AppState& state) {
   const Section* section = currentSection(state);
   const std::string units = state.model.frame().units;
   if (section) {
-    ImGui::Text("%s = %s  (index %d of 0..%d)", kAxisNames[int(s.axis)], formatLength(section->position, units).c_str(),
+    ImGui::Text("%s = %s  (index %d of 0..%d)", axisName(s.axis), formatLength(section->position, units).c_str(),
                 s.index, n - 1);
   }
 
@@ -119,7 +118,7 @@ void drawSectionPanel(AppState& state) {
                     unitsLabel(state.model.frame().units).c_str());
       tableRow("Area", area);
       const ImageAxes ax = imageAxes(s.axis);
-      tableRow("Image", std::string(kAxisNames[ax.right]) + " to the right, " + kAxisNames[ax.up] + " up");
+      tableRow("Image", std::string(axisName(Axis(ax.right))) + " to the right, " + axisName(Axis(ax.up)) + " up");
       ImGui::EndTable();
     }
   } else if (!state.section_error.empty()) {
@@ -147,7 +146,7 @@ void drawSectionImage(AppState& state) {
   }
   if (state.section_texture.empty()) state.section_texture.upload(io::sectionPicture(section->mask, 1));
   const std::string units = state.model.frame().units;
-  ImGui::Text("Section %s = %s, index %d: %s voxels", kAxisNames[int(section->axis)],
+  ImGui::Text("Section %s = %s, index %d: %s voxels", axisName(section->axis),
               formatLength(section->position, units).c_str(), section->index, groupDigits(section->filled).c_str());
 
   const ImageAxes ax = imageAxes(section->axis);
@@ -159,7 +158,7 @@ void drawSectionImage(AppState& state) {
   if (scale >= 1.0f) scale = std::floor(scale);  // whole pixels per voxel keep the voxel grid regular
   const ImVec2 size(float(iw) * scale, float(ih) * scale);
 
-  ImGui::TextUnformatted(kAxisNames[ax.up]);
+  ImGui::TextUnformatted(axisName(Axis(ax.up)));
   ImGui::SameLine();
   ImGui::TextDisabled("^");
   const ImVec2 origin(ImGui::GetCursorScreenPos().x + 20.0f, ImGui::GetCursorScreenPos().y);
@@ -172,7 +171,7 @@ void drawSectionImage(AppState& state) {
   const bool hovered = ImGui::IsItemHovered();
   const bool clicked = ImGui::IsItemClicked(ImGuiMouseButton_Left);
   ImGui::SetCursorScreenPos(ImVec2(origin.x + size.x - 40.0f, origin.y + size.y + 2.0f));
-  ImGui::Text("%s >", kAxisNames[ax.right]);
+  ImGui::Text("%s >", axisName(Axis(ax.right)));
   // The scale bar on its own line, under the axis label, so the two never run into each other.
   drawScaleBar(ImVec2(origin.x, origin.y + size.y + 2.0f + label_h), scale / float(state.model.voxelSize()), units,
                std::max(size.x * 0.5f, 60.0f));
