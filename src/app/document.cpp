@@ -1,7 +1,5 @@
 #include "app/document.h"
 
-#include <algorithm>
-#include <cctype>
 #include <utility>
 
 #include "app/browser_purposes.h"
@@ -9,16 +7,11 @@
 #include "app/model_jobs.h"
 #include "app/update.h"
 #include "vox/io/stl.h"
+#include "vox/io/file_util.h"
 #include "vox/io/voxel_file.h"
 
 namespace vox::app {
 namespace {
-
-std::string lowerExtension(const std::filesystem::path& p) {
-  std::string e = p.extension().string();
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return e;
-}
 
 // A new grid (re-voxelized, or undo / redo across a voxelization) may lie on another lattice; the camera lives in
 // voxel-index space, so it is carried over to the new lattice to keep showing the same part of the model. A first
@@ -162,7 +155,7 @@ bool saveModel(AppState& state, const std::filesystem::path& path) {
     reportError(state, "there is no model to save yet: voxelize the mesh first", path);
     return false;
   }
-  const std::string ext = lowerExtension(path);
+  const std::string ext = io::lowerExtension(path);
   if (ext != ".vxm" && ext != ".binvox") {
     reportError(state, "models are saved as .vxm (voxmod) or .binvox; choose one of those extensions", path);
     return false;

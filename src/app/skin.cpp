@@ -8,15 +8,14 @@
 
 namespace vox::app {
 
-uint64_t skinLayersMemoryLimit() { return physicalMemoryBytes() / 5 * 4; }
+uint64_t skinLayersMemoryLimit() { return defaultMemoryLimitBytes(); }
 
 std::string skinLayersMemoryProblem(const VoxelGrid& grid) {
   const uint64_t need = estimateDepthMapBytes(grid) + grid.memoryBytes();
   const uint64_t limit = skinLayersMemoryLimit();
-  if (limit == 0 || need <= limit) return {};
-  return "the skin layers of this " + std::to_string(grid.nx()) + " x " + std::to_string(grid.ny()) + " x " +
-         std::to_string(grid.nz()) + " model need up to " + formatBytes(need) + " with the model, more than " +
-         formatBytes(limit) +
+  if (need <= limit) return {};
+  return "the skin layers of this " + dimsText(grid.dims()) + " model need up to " + formatBytes(need) +
+         " with the model, more than " + formatBytes(limit) +
          " (80% of this machine's memory): voxelize at a lower resolution to peel in the window, "
          "or peel with 'voxmod peel FILE --layers N' (about three copies of the grid)";
 }

@@ -29,6 +29,12 @@ void addCommon(CLI::App& sub, Common& c, const std::string& mode_names = "--mode
   addMeshOptions(sub, c.mesh, mode_names);
 }
 
+std::string materialNames() {
+  std::string names;
+  for (const Material& m : commonMaterials()) names += std::string(names.empty() ? "" : ", ") + m.name;
+  return names;
+}
+
 CLI::Validator axisCheck() { return CLI::IsMember({"x", "y", "z"}); }
 
 // ---- section ----
@@ -162,11 +168,7 @@ int runMass(const MassOptions& o) {
   double density = o.density;
   if (!o.material.empty()) {
     const auto d = materialDensity(o.material);
-    if (!d) {
-      std::string names;
-      for (const Material& m : commonMaterials()) names += std::string(names.empty() ? "" : ", ") + m.name;
-      return out.fail(kExitUsage, "unknown material '" + o.material + "' (known: " + names + ")");
-    }
+    if (!d) return out.fail(kExitUsage, "unknown material '" + o.material + "' (known: " + materialNames() + ")");
     density = *d;
   }
   auto model = loadModel(o.c.file, o.c.mesh, out);
@@ -184,15 +186,13 @@ int runMass(const MassOptions& o) {
   d["volume"] = m.volume;
   d["volume_error_bound"] = m.volume_error_bound;
   d["units"] = units;
-  if (density > 0) {
-    d["density_kg_m3"] = density;
-    d["mass_kg"] = m.volume * metres * metres * metres * density;
-  }
   out.say("volume   " + significant(m.volume) + " (+/- " + significant(m.volume_error_bound, 3) + ") " +
           unitsLabel(units) + "^3");
   if (density > 0) {
-    out.say("mass     " + significant(m.volume * metres * metres * metres * density) + " kg (density " +
-            significant(density) + " kg/m^3)");
+    const double kg = m.volume * metres * metres * metres * density;
+    d["density_kg_m3"] = density;
+    d["mass_kg"] = kg;
+    out.say("mass     " + significant(kg) + " kg (density " + significant(density) + " kg/m^3)");
   }
   if (m.filled == 0) {
     // An empty model has no centroid, inertia or bounding box: null, never a made-up number.
@@ -286,9 +286,8 @@ void addMassCommand(CLI::App& sub, CommandContext& ctx) {
   addCommon(sub, o->c);
   auto* density = sub.add_option("--density", o->density, "Density in kg/m^3, for the mass in kg (needs --units)")
                       ->check(CLI::PositiveNumber);
-  std::string names;
-  for (const Material& m : commonMaterials()) names += std::string(names.empty() ? "" : ", ") + m.name;
-  sub.add_option("--material", o->material, "A common material's density instead: " + names)->excludes(density);
+  sub.add_option("--material", o->material, "A common material's density instead: " + materialNames())
+      ->excludes(density);
   sub.callback([o, &ctx] { ctx.exit_code = runMass(*o); });
 }
 

@@ -38,10 +38,9 @@ int runVoxelize(const VoxelizeOptions& o) {
   for (const std::string& w : stl->warnings) out.warn(w);
   for (const std::string& n : stl->notes) out.note(n);
 
-  VoxelizeParams params = o.mesh_options.params;
-  params.mode = parseFillMode(o.mesh_options.mode_text).value_or(FillMode::kAuto);
-  if (o.mesh_options.memory_limit_mib > 0) params.memory_limit_bytes = uint64_t(o.mesh_options.memory_limit_mib) << 20;
-  auto result = voxelizeSolid(stl->mesh, params, terminalProgress("voxelizing"), &stl->topology);
+  auto params = voxelizeParams(o.mesh_options);
+  if (!params) return out.fail(params.error());
+  auto result = voxelizeSolid(stl->mesh, *params, terminalProgress("voxelizing"), &stl->topology);
   if (!result) return out.fail(Error{result.error().code, o.mesh + ": " + result.error().message});
   const double t_voxelized = nowSeconds();
   for (const std::string& w : result->warnings) out.warn(w);

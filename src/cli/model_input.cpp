@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "vox/core/units.h"
 #include "vox/io/stl.h"
 #include "vox/io/voxel_file.h"
 
@@ -24,7 +25,7 @@ void addMeshOptions(CLI::App& sub, MeshOptions& options, const std::string& mode
   sub.add_option("--units", options.units,
                  "Length units of the model's coordinates: mm, cm, m, in (STL files carry none; default: the "
                  "voxel file's, or 'model')")
-      ->check(CLI::IsMember({"model", "mm", "cm", "m", "in"}));
+      ->check(CLI::IsMember(std::vector<std::string>(kLengthUnits.begin(), kLengthUnits.end())));
   sub.add_option("--threads", options.params.threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(0, 1024));
   sub.add_option("--memory-limit", options.memory_limit_mib,
@@ -44,6 +45,16 @@ ProgressFn terminalProgress(const std::string& label) {
     }
     return true;
   };
+}
+
+Result<VoxelizeParams> voxelizeParams(const MeshOptions& options) {
+  VoxelizeParams params = options.params;
+  if (!options.units.empty()) params.units = options.units;
+  auto mode = parseFillMode(options.mode_text);
+  if (!mode) return makeError(ErrorCode::kInvalidArgument, "unknown --mode '" + options.mode_text + "'");
+  params.mode = *mode;
+  if (options.memory_limit_mib > 0) params.memory_limit_bytes = uint64_t(options.memory_limit_mib) << 20;
+  return params;
 }
 
 Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptions& options, Output& out) {
@@ -72,14 +83,10 @@ Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptio
   m.triangles = int64_t(stl->mesh.triangles.size());
   m.topology = stl->topology;
 
-  VoxelizeParams params = options.params;
-  if (!options.units.empty()) params.units = options.units;
-  auto mode = parseFillMode(options.mode_text);
-  if (!mode) return makeError(ErrorCode::kInvalidArgument, "unknown --mode '" + options.mode_text + "'");
-  params.mode = *mode;
-  if (options.memory_limit_mib > 0) params.memory_limit_bytes = uint64_t(options.memory_limit_mib) << 20;
+  auto params = voxelizeParams(options);
+  if (!params) return params.error();
   const double t1 = nowSeconds();
-  auto result = voxelizeSolid(stl->mesh, params, terminalProgress("voxelizing"), &stl->topology);
+  auto result = voxelizeSolid(stl->mesh, *params, terminalProgress("voxelizing"), &stl->topology);
   if (!result) {
     return makeError(result.error().code, file.filename().string() + ": " + result.error().message);
   }

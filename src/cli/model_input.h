@@ -41,6 +41,10 @@ struct LoadedModel {
   double load_s = 0.0, voxelize_s = 0.0;
 };
 
+// The voxelizer's params from the options (--mode, --memory-limit, --units on top of --res / --voxel-size /
+// --threads), for every subcommand that voxelizes a mesh.
+Result<VoxelizeParams> voxelizeParams(const MeshOptions& options);
+
 // Reads FILE; messages and warnings go through `out`. Progress goes to stderr when it is a terminal.
 Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptions& options, Output& out);
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
-#include "vox/io/image_io.h"
+#include "vox/io/file_util.h"
 
 namespace vox::cli {
 
@@ -25,7 +25,7 @@ std::string significant(double v, int digits) {
 }
 
 std::string pngOutputProblem(const std::string& path) {
-  if (io::hasExtension(path, ".png")) return {};
+  if (io::lowerExtension(path) == ".png") return {};
   return path + ": unknown image format '" + std::filesystem::path(path).extension().string() +
          "' (voxmod writes PNG images: use a .png file name)";
 }

@@ -27,6 +27,11 @@ std::string dimsText(const Dims& d) {
   return std::to_string(d.nx) + " x " + std::to_string(d.ny) + " x " + std::to_string(d.nz);
 }
 
+uint64_t defaultMemoryLimitBytes() {
+  const uint64_t physical = physicalMemoryBytes();
+  return physical > 0 ? physical / 5 * 4 : UINT64_MAX;
+}
+
 double nowSeconds() {
   using namespace std::chrono;
   return duration<double>(steady_clock::now().time_since_epoch()).count();

@@ -4,6 +4,8 @@
 // file or the complete new one, never a partial write.
 #include "vox/io/file_util.h"
 
+#include <cctype>
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -15,6 +17,12 @@
 #include <random>
 
 namespace vox::io {
+
+std::string lowerExtension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
 
 std::string quoteBytes(std::string_view bytes, size_t max_chars) {
   std::string s = "'";

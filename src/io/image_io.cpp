@@ -6,7 +6,6 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
-#include <cctype>
 #include <climits>
 #include <cstring>
 
@@ -62,15 +61,6 @@ Result<std::vector<uint8_t>> encodePng(const ImageRgb& image, const std::filesys
 }
 Result<std::vector<uint8_t>> encodePng(const ImageRgba& image, const std::filesystem::path& path) {
   return encodePngImpl(image, path);
-}
-
-bool hasExtension(const std::filesystem::path& path, std::string_view ext) {
-  const std::string e = path.extension().string();
-  if (e.size() != ext.size()) return false;
-  for (size_t i = 0; i < e.size(); ++i) {
-    if (std::tolower(static_cast<unsigned char>(e[i])) != ext[i]) return false;
-  }
-  return true;
 }
 
 Result<ImageRgba> loadPng(const std::filesystem::path& path) {

@@ -852,8 +852,7 @@ namespace {
 enum class VoxelFormat { kUnknown, kVxm, kBinvox };
 
 VoxelFormat formatOf(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string ext = lowerExtension(path);
   if (ext == ".vxm") return VoxelFormat::kVxm;
   if (ext == ".binvox") return VoxelFormat::kBinvox;
   return VoxelFormat::kUnknown;

@@ -120,12 +120,7 @@ Result<VoxelizePlan> planVoxelization(const Box3d& bounds, const VoxelizeParams&
   VoxelizePlan plan;
   plan.placement = std::move(placement).value();
   plan.bytes = estimateResultBytes(plan.placement.dims, params.mode);
-  if (params.memory_limit_bytes > 0) {
-    plan.limit_bytes = params.memory_limit_bytes;
-  } else {
-    const uint64_t physical = physicalMemoryBytes();
-    plan.limit_bytes = physical > 0 ? physical / 5 * 4 : UINT64_MAX;
-  }
+  plan.limit_bytes = params.memory_limit_bytes > 0 ? params.memory_limit_bytes : defaultMemoryLimitBytes();
   return plan;
 }
 

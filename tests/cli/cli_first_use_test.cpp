@@ -177,5 +177,12 @@ TEST_F(FirstUse, xrayMillimetreKeysAreMillimetres) {
   EXPECT_NEAR(j["max_mm"].get<double>(), 1.0, 1e-9);
 }
 
+// --units is one of the mesh options every voxelizing subcommand shares: voxelize keeps it in the file too.
+TEST_F(FirstUse, voxelizeKeepsTheUnitsGiven) {
+  ASSERT_EQ(runVoxmod({"voxelize", path("box.stl"), "--res", "8", "--units", "mm", "-o", path("mm.vxm")}).exit_code, 0);
+  const json j = json::parse(runVoxmod({"info", path("mm.vxm"), "--json"}).out);
+  EXPECT_EQ(j["units"], "mm");
+}
+
 }  // namespace
 }  // namespace vox

@@ -17,6 +17,8 @@ std::string formatBytes(uint64_t bytes);
 std::string dimsText(const Dims& dims);
 // Physical memory of this machine in bytes (0 if unknown).
 uint64_t physicalMemoryBytes();
+// The memory a large piece of work may plan for unless told otherwise: 80% of physical memory (no limit if unknown).
+uint64_t defaultMemoryLimitBytes();
 // Seconds since an arbitrary start (the steady clock): for timing work.
 double nowSeconds();
 

@@ -17,6 +17,9 @@ namespace vox::io {
 // UTF-8) shown as '?', at most `max_chars` characters then "...". Messages built from file content stay valid text.
 std::string quoteBytes(std::string_view bytes, size_t max_chars = 40);
 
+// The path's extension in lower case, with its dot: ".png" for "a.PNG", "" without one. Formats go by it.
+std::string lowerExtension(const std::filesystem::path& path);
+
 // Whole file into memory. Errors: "<path>: no such file", "<path>: permission denied", ...
 Result<std::vector<uint8_t>> readFileBytes(const std::filesystem::path& path);
 // Atomic replace (temp file + fsync + rename). Errors name the path and the reason (e.g. "No space left on device").

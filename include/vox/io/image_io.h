@@ -14,8 +14,6 @@ Status savePng(const ImageRgba& image, const std::filesystem::path& path);
 // The PNG bytes, for writing together with other files (writeFilesAtomic); `path` is named in errors.
 Result<std::vector<uint8_t>> encodePng(const ImageRgb& image, const std::filesystem::path& path);
 Result<std::vector<uint8_t>> encodePng(const ImageRgba& image, const std::filesystem::path& path);
-// Whether the path ends in `ext` (lower case, with the dot), ignoring case: ".png" matches "a.PNG".
-bool hasExtension(const std::filesystem::path& path, std::string_view ext);
 // Reads a PNG (for tests and image baselines) as RGBA.
 Result<ImageRgba> loadPng(const std::filesystem::path& path);
 
