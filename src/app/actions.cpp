@@ -2,308 +2,90 @@
 
 #include <algorithm>
 #include <cassert>
-#include <limits>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "app/action_functions.h"
 #include "app/operations.h"
 
 namespace vox::app {
 namespace {
 
+using namespace actions;  // NOLINT(google-build-using-namespace): the table names the functions it runs
+
 constexpr int kCtrl = GLFW_MOD_CONTROL;
 constexpr int kShift = GLFW_MOD_SHIFT;
+constexpr Shortcut kNone{};
 
-bool hasModel(const AppState& s) { return s.doc.model.has_value() && !modelBusy(s); }
-bool hasMesh(const AppState& s) { return s.doc.mesh != nullptr && !s.load_job.active(); }
-bool hasSection(const AppState& s) { return !s.model.empty(); }
-// An X-ray export needs the X-ray computed (the X-ray panel computes it); until then the menu item is off.
-bool hasXray(const AppState& s) { return currentXray(s) != nullptr; }
-
-void showPanel(AppState& s, Panel p) {
-  s.panel = p;
-  s.panel_change_requested = true;
-}
-
-void standardView(AppState& s, render::StandardView v) {
-  s.view.camera.setStandardView(v);
-  s.view.fit_pending = true;
-}
-
-void stepSection(AppState& s, int32_t delta) {
-  s.section.playing = false;
-  s.section.index += delta;  // clamped where the section is computed
-  showPanel(s, Panel::kSection);
-}
-
-// Peel actions are relative to the layer shown now.
-int32_t peeled(const AppState& s) { return s.doc.model ? s.doc.model->peeled : 0; }
-bool canPeel(const AppState& s) {
-  const int32_t layers = peelLayersAvailable(s);
-  return hasModel(s) && (layers < 0 || peeled(s) < layers - 1);
-}
-bool canPeelBack(const AppState& s) { return hasModel(s) && peeled(s) > 0; }
-
+// clang-format off
 const Action kActions[] = {
-    {ActionId::kOpen,
-     "File",
-     "Open...",
-     {GLFW_KEY_O, kCtrl},
-     [](AppState& s) { openBrowser(s, BrowserPurpose::kOpen); },
-     nullptr,
-     nullptr},
-    {ActionId::kSave, "File", "Save", {GLFW_KEY_S, kCtrl}, [](AppState& s) { saveOrAsk(s); }, hasModel, nullptr},
-    {ActionId::kSaveAs,
-     "File",
-     "Save As...",
-     {GLFW_KEY_S, kCtrl | kShift},
-     [](AppState& s) { openBrowser(s, BrowserPurpose::kSaveModel); },
-     hasModel,
-     nullptr},
-    {ActionId::kExportBinvox,
-     "File",
-     "Export binvox...",
-     {},
-     [](AppState& s) { openBrowser(s, BrowserPurpose::kExportBinvox); },
-     hasModel,
-     nullptr},
-    {ActionId::kExportViewPng,
-     "File",
-     "Export 3D view PNG...",
-     {GLFW_KEY_E, kCtrl},
-     [](AppState& s) { openBrowser(s, BrowserPurpose::kExportViewPng); },
-     hasModel,
-     nullptr},
-    {ActionId::kExportSectionPng,
-     "File",
-     "Export section PNG...",
-     {},
-     [](AppState& s) { openBrowser(s, BrowserPurpose::kExportSectionPng); },
-     hasSection,
-     nullptr},
-    {ActionId::kExportXrayPng,
-     "File",
-     "Export X-ray PNG...",
-     {},
-     [](AppState& s) { openBrowser(s, BrowserPurpose::kExportXrayPng); },
-     hasXray,
-     nullptr},
-    {ActionId::kExportXrayCsv,
-     "File",
-     "Export X-ray CSV...",
-     {},
-     [](AppState& s) { openBrowser(s, BrowserPurpose::kExportXrayCsv); },
-     hasXray,
-     nullptr},
-    {ActionId::kQuit, "File", "Quit", {GLFW_KEY_Q, kCtrl}, requestQuit, nullptr, nullptr},
+  // id                       name               menu       label                                 shortcut                   values  run            run_with           enabled      checked
+  {ActionId::kOpen,           "open",            "File",    "Open...",                            {GLFW_KEY_O, kCtrl},         1, -1, open,          openPath,          nullptr,     nullptr},
+  {ActionId::kSave,           "save",            "File",    "Save",                               {GLFW_KEY_S, kCtrl},         1, -1, save,          savePath,          hasModel,    nullptr},
+  {ActionId::kSaveAs,         "save-as",         "File",    "Save As...",                         {GLFW_KEY_S, kCtrl | kShift}, 1, -1, saveAs,       savePath,          hasModel,    nullptr},
+  {ActionId::kExportBinvox,   "export-binvox",   "File",    "Export binvox...",                   kNone,                       1, -1, exportBinvox,  exportBinvoxPath,  hasModel,    nullptr},
+  {ActionId::kExportViewPng,  "export-view",     "File",    "Export 3D view PNG...",              {GLFW_KEY_E, kCtrl},         1, -1, exportView,    exportViewPath,    hasModel,    nullptr},
+  {ActionId::kExportSectionPng, "export-section", "File",   "Export section PNG...",              kNone,                       1, -1, exportSection, exportSectionPath, hasSection,  nullptr},
+  {ActionId::kExportXrayPng,  "export-xray",     "File",    "Export X-ray PNG...",                kNone,                       1, -1, exportXray,    exportXrayPath,    hasXray,     nullptr},
+  {ActionId::kExportXrayCsv,  "export-csv",      "File",    "Export X-ray CSV...",                kNone,                       1, -1, exportCsv,     exportCsvPath,     hasXray,     nullptr},
+  {ActionId::kExportSize,     "export-size",     nullptr,   "3D view export size",                kNone,                       2, 2,  nullptr,       exportSize,        nullptr,     nullptr},
+  {ActionId::kQuit,           "quit",            "File",    "Quit",                               {GLFW_KEY_Q, kCtrl},         0, 0,  requestQuit,   nullptr,           nullptr,     nullptr},
 
-    {ActionId::kUndo, "Edit", "Undo", {GLFW_KEY_Z, kCtrl}, undo, canUndo, nullptr},
-    {ActionId::kRedo, "Edit", "Redo", {GLFW_KEY_Y, kCtrl}, redo, canRedo, nullptr},
+  {ActionId::kUndo,           "undo",            "Edit",    "Undo",                               {GLFW_KEY_Z, kCtrl},         0, 0,  undo,          nullptr,           canUndo,     nullptr},
+  {ActionId::kRedo,           "redo",            "Edit",    "Redo",                               {GLFW_KEY_Y, kCtrl},         0, 0,  redo,          nullptr,           canRedo,     nullptr},
+  {ActionId::kMeasureClear,   "measure-clear",   "Edit",    "Clear measurement",                  kNone,                       0, 0,  measureClear,  nullptr,           hasMeasure,  nullptr},
+  {ActionId::kMeasure,        "measure",         nullptr,   "Pick a voxel to measure",            kNone,                       3, 3,  nullptr,       measureAt,         hasSection,  nullptr},
 
-    {ActionId::kVoxelize,
-     "Model",
-     "Voxelize...",
-     {GLFW_KEY_R, kCtrl},
-     [](AppState& s) { s.voxelize.open_requested = true; },
-     hasMesh,
-     nullptr},
-    {ActionId::kCancelJob,
-     "Model",
-     "Cancel voxelizing / loading",
-     {GLFW_KEY_ESCAPE, 0},
-     cancelJobs,
-     modelBusy,
-     nullptr},
+  {ActionId::kVoxelize,       "voxelize",        "Model",   "Voxelize...",                        {GLFW_KEY_R, kCtrl},         1, 2,  voxelizeDialog, voxelizeAt,       hasMesh,     nullptr},
+  {ActionId::kCancelJob,      "cancel",          "Model",   "Cancel voxelizing / loading",        {GLFW_KEY_ESCAPE, 0},        0, 0,  cancelJobs,    nullptr,           modelBusy,   nullptr},
 
-    {ActionId::kViewFit,
-     "View",
-     "Fit model",
-     {GLFW_KEY_F, 0},
-     [](AppState& s) { s.view.fit_pending = true; },
-     nullptr,
-     nullptr},
-    {ActionId::kViewIso,
-     "View",
-     "Isometric",
-     {GLFW_KEY_0, 0},
-     [](AppState& s) { standardView(s, render::StandardView::kIso); },
-     nullptr,
-     nullptr},
-    {ActionId::kViewPosX,
-     "View",
-     "From +X",
-     {GLFW_KEY_1, 0},
-     [](AppState& s) { standardView(s, render::StandardView::kPosX); },
-     nullptr,
-     nullptr},
-    {ActionId::kViewNegX,
-     "View",
-     "From -X",
-     {GLFW_KEY_1, kShift},
-     [](AppState& s) { standardView(s, render::StandardView::kNegX); },
-     nullptr,
-     nullptr},
-    {ActionId::kViewPosY,
-     "View",
-     "From +Y",
-     {GLFW_KEY_2, 0},
-     [](AppState& s) { standardView(s, render::StandardView::kPosY); },
-     nullptr,
-     nullptr},
-    {ActionId::kViewNegY,
-     "View",
-     "From -Y",
-     {GLFW_KEY_2, kShift},
-     [](AppState& s) { standardView(s, render::StandardView::kNegY); },
-     nullptr,
-     nullptr},
-    {ActionId::kViewPosZ,
-     "View",
-     "From +Z",
-     {GLFW_KEY_3, 0},
-     [](AppState& s) { standardView(s, render::StandardView::kPosZ); },
-     nullptr,
-     nullptr},
-    {ActionId::kViewNegZ,
-     "View",
-     "From -Z",
-     {GLFW_KEY_3, kShift},
-     [](AppState& s) { standardView(s, render::StandardView::kNegZ); },
-     nullptr,
-     nullptr},
-    {ActionId::kViewLit,
-     "View",
-     "Lit shading (off: thesis table)",
-     {GLFW_KEY_L, 0},
-     [](AppState& s) { s.view.lit = !s.view.lit; },
-     nullptr,
-     [](const AppState& s) { return s.view.lit; }},
-    {ActionId::kViewRound,
-     "View",
-     "Round points (smoothing)",
-     {},
-     [](AppState& s) { s.view.round_points = !s.view.round_points; },
-     nullptr,
-     [](const AppState& s) { return s.view.round_points; }},
-    {ActionId::kViewLod,
-     "View",
-     "Coarser points while moving",
-     {},
-     [](AppState& s) { s.view.lod = !s.view.lod; },
-     nullptr,
-     [](const AppState& s) { return s.view.lod; }},
-    {ActionId::kViewDisputed,
-     "View",
-     "Show disputed voxels (vote mode)",
-     {GLFW_KEY_D, 0},
-     [](AppState& s) { s.view.show_disputed = !s.view.show_disputed; },
-     [](const AppState& s) { return s.doc.model && s.doc.model->origin && s.doc.model->origin->disputed != nullptr; },
-     [](const AppState& s) { return s.view.show_disputed; }},
+  {ActionId::kViewFit,        "fit",             "View",    "Fit model",                          {GLFW_KEY_F, 0},             0, 0,  fit,           nullptr,           nullptr,     nullptr},
+  {ActionId::kViewIso,        "view-iso",        "View",    "Isometric",                          {GLFW_KEY_0, 0},             0, 0,  viewIso,       nullptr,           nullptr,     nullptr},
+  {ActionId::kViewPosX,       "view-pos-x",      "View",    "From +X",                            {GLFW_KEY_1, 0},             0, 0,  viewPosX,      nullptr,           nullptr,     nullptr},
+  {ActionId::kViewNegX,       "view-neg-x",      "View",    "From -X",                            {GLFW_KEY_1, kShift},        0, 0,  viewNegX,      nullptr,           nullptr,     nullptr},
+  {ActionId::kViewPosY,       "view-pos-y",      "View",    "From +Y",                            {GLFW_KEY_2, 0},             0, 0,  viewPosY,      nullptr,           nullptr,     nullptr},
+  {ActionId::kViewNegY,       "view-neg-y",      "View",    "From -Y",                            {GLFW_KEY_2, kShift},        0, 0,  viewNegY,      nullptr,           nullptr,     nullptr},
+  {ActionId::kViewPosZ,       "view-pos-z",      "View",    "From +Z",                            {GLFW_KEY_3, 0},             0, 0,  viewPosZ,      nullptr,           nullptr,     nullptr},
+  {ActionId::kViewNegZ,       "view-neg-z",      "View",    "From -Z",                            {GLFW_KEY_3, kShift},        0, 0,  viewNegZ,      nullptr,           nullptr,     nullptr},
+  {ActionId::kViewAngles,     "view",            nullptr,   "Camera angles",                      kNone,                       2, 2,  nullptr,       viewAngles,        nullptr,     nullptr},
+  {ActionId::kZoomIn,         "zoom-in",         "View",    "Zoom in",                            {GLFW_KEY_EQUAL, 0},         0, 0,  zoomIn,        nullptr,           nullptr,     nullptr},
+  {ActionId::kZoomOut,        "zoom-out",        "View",    "Zoom out",                           {GLFW_KEY_MINUS, 0},         0, 0,  zoomOut,       nullptr,           nullptr,     nullptr},
+  {ActionId::kZoom,           "zoom",            nullptr,   "Zoom by a factor",                   kNone,                       1, 1,  nullptr,       zoomBy,            nullptr,     nullptr},
+  {ActionId::kViewLit,        "lit",             "View",    "Lit shading (off: thesis table)",    {GLFW_KEY_L, 0},             0, 0,  toggleLit,     nullptr,           nullptr,     isLit},
+  {ActionId::kViewRound,      "round",           "View",    "Round points (smoothing)",           kNone,                       0, 0,  toggleRound,   nullptr,           nullptr,     isRound},
+  {ActionId::kViewLod,        "lod",             "View",    "Coarser points while moving",        kNone,                       0, 0,  toggleLod,     nullptr,           nullptr,     isLod},
+  {ActionId::kViewCut,        "cut",             "View",    "Cut away at the section",            kNone,                       0, 0,  toggleCut,     nullptr,           nullptr,     isCut},
+  {ActionId::kViewDisputed,   "disputed",        "View",    "Show disputed voxels (vote mode)",   {GLFW_KEY_D, 0},             0, 0,  toggleDisputed, nullptr,          hasDisputed, isDisputed},
 
-    {ActionId::kPanelModel,
-     "View",
-     "Model panel",
-     {GLFW_KEY_1, kCtrl},
-     [](AppState& s) { showPanel(s, Panel::kModel); },
-     nullptr,
-     [](const AppState& s) { return s.panel == Panel::kModel; }},
-    {ActionId::kPanelSection,
-     "View",
-     "Section panel",
-     {GLFW_KEY_2, kCtrl},
-     [](AppState& s) { showPanel(s, Panel::kSection); },
-     nullptr,
-     [](const AppState& s) { return s.panel == Panel::kSection; }},
-    {ActionId::kPanelSkin,
-     "View",
-     "Skin removal panel",
-     {GLFW_KEY_3, kCtrl},
-     [](AppState& s) { showPanel(s, Panel::kSkin); },
-     nullptr,
-     [](const AppState& s) { return s.panel == Panel::kSkin; }},
-    {ActionId::kPanelXray,
-     "View",
-     "X-ray panel",
-     {GLFW_KEY_4, kCtrl},
-     [](AppState& s) { showPanel(s, Panel::kXray); },
-     nullptr,
-     [](const AppState& s) { return s.panel == Panel::kXray; }},
-    {ActionId::kPanelMass,
-     "View",
-     "Mass properties panel",
-     {GLFW_KEY_5, kCtrl},
-     [](AppState& s) { showPanel(s, Panel::kMass); },
-     nullptr,
-     [](const AppState& s) { return s.panel == Panel::kMass; }},
+  {ActionId::kPanelModel,     "panel-model",     "View",    "Model panel",                        {GLFW_KEY_1, kCtrl},         0, 0,  panelModel,    nullptr,           nullptr,     onModel},
+  {ActionId::kPanelSection,   "panel-section",   "View",    "Section panel",                      {GLFW_KEY_2, kCtrl},         0, 0,  panelSection,  nullptr,           nullptr,     onSection},
+  {ActionId::kPanelSkin,      "panel-skin",      "View",    "Skin removal panel",                 {GLFW_KEY_3, kCtrl},         0, 0,  panelSkin,     nullptr,           nullptr,     onSkin},
+  {ActionId::kPanelXray,      "panel-xray",      "View",    "X-ray panel",                        {GLFW_KEY_4, kCtrl},         0, 0,  panelXray,     nullptr,           nullptr,     onXray},
+  {ActionId::kPanelMass,      "panel-mass",      "View",    "Mass properties panel",              {GLFW_KEY_5, kCtrl},         0, 0,  panelMass,     nullptr,           nullptr,     onMass},
 
-    {ActionId::kSectionPrev,
-     "Section",
-     "Previous section",
-     {GLFW_KEY_PAGE_DOWN, 0},
-     [](AppState& s) { stepSection(s, -s.section.step); },
-     hasSection,
-     nullptr},
-    {ActionId::kSectionNext,
-     "Section",
-     "Next section",
-     {GLFW_KEY_PAGE_UP, 0},
-     [](AppState& s) { stepSection(s, s.section.step); },
-     hasSection,
-     nullptr},
-    {ActionId::kSectionPlay,
-     "Section",
-     "Play / pause sections",
-     {GLFW_KEY_SPACE, 0},
-     [](AppState& s) {
-       s.section.playing = !s.section.playing;
-       showPanel(s, Panel::kSection);
-     },
-     hasSection,
-     [](const AppState& s) { return s.section.playing; }},
+  {ActionId::kSectionPrev,    "section-prev",    "Section", "Previous section",                   {GLFW_KEY_PAGE_DOWN, 0},     0, 0,  sectionPrev,   nullptr,           hasSection,  nullptr},
+  {ActionId::kSectionNext,    "section-next",    "Section", "Next section",                       {GLFW_KEY_PAGE_UP, 0},       0, 0,  sectionNext,   nullptr,           hasSection,  nullptr},
+  {ActionId::kSectionPlay,    "section-play",    "Section", "Play / pause sections",              {GLFW_KEY_SPACE, 0},         0, 0,  sectionPlay,   nullptr,           hasSection,  isPlaying},
+  {ActionId::kSectionAt,      "section",         nullptr,   "Section at an index",                kNone,                       2, 2,  nullptr,       sectionAt,         hasSection,  nullptr},
 
-    {ActionId::kPeelOne,
-     "Skin",
-     "Peel one layer",
-     {GLFW_KEY_P, 0},
-     [](AppState& s) { peelTo(s, peeled(s) + 1); },
-     canPeel,
-     nullptr},
-    {ActionId::kPeelN,
-     "Skin",
-     "Peel N layers",
-     {},
-     [](AppState& s) { peelTo(s, peeled(s) + s.skin.peel_count); },
-     canPeel,
-     nullptr},
-    {ActionId::kPeelBack,
-     "Skin",
-     "Back one layer",
-     {GLFW_KEY_P, kShift},
-     [](AppState& s) { peelTo(s, peeled(s) - 1); },
-     canPeelBack,
-     nullptr},
-    {ActionId::kPeelCore,
-     "Skin",
-     "Peel to the core",
-     {GLFW_KEY_C, 0},
-     [](AppState& s) {
-       // Every layer but the last; peelTo clamps, and a queued peel resolves once the layers are known.
-       peelTo(s, std::numeric_limits<int32_t>::max());
-     },
-     canPeel,
-     nullptr},
-    {ActionId::kPeelReset, "Skin", "Reset skin", {}, [](AppState& s) { peelTo(s, 0); }, canPeelBack, nullptr},
+  {ActionId::kPeelOne,        "peel-one",        "Skin",    "Peel one layer",                     {GLFW_KEY_P, 0},             0, 0,  peelOne,       nullptr,           canPeel,     nullptr},
+  {ActionId::kPeelN,          "peel",            "Skin",    "Peel N layers",                      kNone,                       1, 1,  peelN,         peelCount,         canPeel,     nullptr},
+  {ActionId::kPeelBack,       "peel-back",       "Skin",    "Back one layer",                     {GLFW_KEY_P, kShift},        0, 0,  peelBack,      nullptr,           canPeelBack, nullptr},
+  {ActionId::kPeelCore,       "peel-core",       "Skin",    "Peel to the core",                   {GLFW_KEY_C, 0},             0, 0,  peelCore,      nullptr,           canPeel,     nullptr},
+  {ActionId::kPeelReset,      "peel-reset",      "Skin",    "Reset skin",                         kNone,                       0, 0,  peelReset,     nullptr,           canPeelBack, nullptr},
 
-    {ActionId::kControls,
-     "Help",
-     "Mouse and keyboard",
-     {GLFW_KEY_F1, 0},
-     [](AppState& s) { s.show_controls = true; },
-     nullptr,
-     nullptr},
-    {ActionId::kAbout, "Help", "About voxmod", {}, [](AppState& s) { s.show_about = true; }, nullptr, nullptr},
+  {ActionId::kXray,           "xray",            nullptr,   "X-ray along an axis",                kNone,                       2, 2,  nullptr,       xrayAlong,         hasSection,  nullptr},
+
+  {ActionId::kControls,       "controls",        "Help",    "Mouse and keyboard",                 {GLFW_KEY_F1, 0},            0, 0,  controls,      nullptr,           nullptr,     nullptr},
+  {ActionId::kAbout,          "about",           "Help",    "About voxmod",                       kNone,                       0, 0,  about,         nullptr,           nullptr,     nullptr},
+  {ActionId::kCloseDialogs,   "close-dialogs",   nullptr,   "Close the open dialog",              kNone,                       0, 0,  closeDialogs,  nullptr,           nullptr,     nullptr},
 };
+// clang-format on
+
+Error notNow(const Action& a, const std::string& why) {
+  return makeError(ErrorCode::kInvalidArgument, std::string("'") + a.name + "' " + why);
+}
 
 }  // namespace
 
@@ -317,14 +99,42 @@ const Action& action(ActionId id) {
   return kActions[0];
 }
 
+const Action* findAction(const std::string& name) {
+  for (const Action& a : kActions) {
+    if (name == a.name) return &a;
+  }
+  return nullptr;
+}
+
 bool actionEnabled(const AppState& state, const Action& a) { return !a.enabled || a.enabled(state); }
 
-bool dispatch(AppState& state, ActionId id) {
-  const Action& a = action(id);
-  if (!actionEnabled(state, a)) return false;
-  a.run(state);
+bool dispatch(AppState& state, ActionId id) { return dispatch(state, id, ActionArgs{}).ok(); }
+
+Status dispatch(AppState& state, ActionId id, const ActionArgs& args) { return dispatch(state, action(id), args); }
+
+Status dispatch(AppState& state, const Action& a, const ActionArgs& args) {
+  if (!actionEnabled(state, a)) return notNow(a, "is not available now");
+  if (a.checked && args.words.size() == 1) {  // a toggle set on or off
+    const std::string& w = args.words[0];
+    const bool on = w == "on" || w == "1" || w == "true";
+    if (!on && w != "off" && w != "0" && w != "false") return notNow(a, "takes on or off");
+    if (a.checked(state) != on) a.run(state);
+  } else if (args.words.empty() && a.run) {
+    a.run(state);
+  } else if (!a.run_with) {
+    return notNow(a, args.words.empty() ? "needs values" : "takes no values");
+  } else {
+    const int n = int(args.words.size());
+    if (n < a.min_values || (a.max_values >= 0 && n > a.max_values)) return notNow(a, "has the wrong number of values");
+    if (Status s = a.run_with(state, args); !s) return s;
+  }
   state.redraw_frames = std::max(state.redraw_frames, 2);
-  return true;
+  return Ok{};
+}
+
+void dispatchValues(AppState& state, ActionId id, std::vector<std::string> words) {
+  const Status s = dispatch(state, id, ActionArgs{std::move(words), {}});
+  (void)s;
 }
 
 std::string shortcutText(const Shortcut& s) {
@@ -343,6 +153,10 @@ std::string shortcutText(const Shortcut& s) {
       return t + "PgUp";
     case GLFW_KEY_PAGE_DOWN:
       return t + "PgDn";
+    case GLFW_KEY_EQUAL:
+      return t + "=";
+    case GLFW_KEY_MINUS:
+      return t + "-";
     default:
       break;
   }

@@ -1,11 +1,17 @@
 #pragma once
-// The one table of things the user can do (id, menu, label, shortcut, function). The menu bar and the keyboard
-// shortcuts are both generated from it, and panels' buttons dispatch its entries, so a command is defined once.
-// Entries are listed in menu order.
+// The one table of things the user can do (id, name, menu, label, shortcut, function). The menu bar, the keyboard
+// shortcuts and the script (--script) are all generated from it, and panels' buttons dispatch its entries, so a
+// command is defined once and every way of giving it reaches the same function. Entries are listed in menu order.
+//
+// An action runs without values (a menu item, a shortcut, a button: `run`) or with them (a script line, a panel that
+// already has them: `run_with`), e.g. "open" shows the file browser, "open part.stl" opens that file; "peel" peels the
+// Skin panel's N layers, "peel 3" three. A toggle given "on" or "off" is set to that.
 #include <span>
 #include <string>
+#include <vector>
 
 #include "app/app_state.h"
+#include "vox/core/result.h"
 
 namespace vox::app {
 
@@ -18,9 +24,12 @@ enum class ActionId {
   kExportSectionPng,
   kExportXrayPng,
   kExportXrayCsv,
+  kExportSize,
   kQuit,
   kUndo,
   kRedo,
+  kMeasureClear,
+  kMeasure,
   kVoxelize,
   kCancelJob,
   kViewFit,
@@ -31,9 +40,14 @@ enum class ActionId {
   kViewNegY,
   kViewPosZ,
   kViewNegZ,
+  kViewAngles,
+  kZoomIn,
+  kZoomOut,
+  kZoom,
   kViewLit,
   kViewRound,
   kViewLod,
+  kViewCut,
   kViewDisputed,
   kPanelModel,
   kPanelSection,
@@ -43,13 +57,16 @@ enum class ActionId {
   kSectionPrev,
   kSectionNext,
   kSectionPlay,
+  kSectionAt,
   kPeelOne,
   kPeelN,
   kPeelBack,
   kPeelCore,
   kPeelReset,
+  kXray,
   kControls,
   kAbout,
+  kCloseDialogs,
 };
 
 // A key (GLFW_KEY_*) with modifier bits (GLFW_MOD_CONTROL, GLFW_MOD_SHIFT); key 0 = no shortcut.
@@ -58,20 +75,38 @@ struct Shortcut {
   int mods = 0;
 };
 
+// The values an action is given: words, and the text after the action's name (for paths with spaces).
+struct ActionArgs {
+  std::vector<std::string> words;
+  std::string rest;
+};
+
 struct Action {
   ActionId id;
-  const char* menu;   // "File", "Edit", "Model", "View", "Section", "Skin", "Help"
+  const char* name;   // the script's word for it: "open", "peel-core", "view-pos-x"
+  const char* menu;   // "File", "Edit", "Model", "View", "Section", "Skin", "Help"; null: not in a menu
   const char* label;  // menu text; "..." when it opens a dialog
   Shortcut shortcut;
-  void (*run)(AppState&);
-  bool (*enabled)(const AppState&);  // null: always
-  bool (*checked)(const AppState&);  // null: not a toggle
+  int min_values, max_values;                        // how many words `run_with` takes (-1: any)
+  void (*run)(AppState&);                            // without values; null: it needs them
+  Status (*run_with)(AppState&, const ActionArgs&);  // with values; the error says why they do not fit
+  bool (*enabled)(const AppState&);                  // null: always
+  bool (*checked)(const AppState&);                  // null: not a toggle
 };
 
 std::span<const Action> actionTable();
 const Action& action(ActionId id);
-// Runs the action when it is enabled; returns whether it ran.
+// The action a script word names; null when none does.
+const Action* findAction(const std::string& name);
+// Runs the action without values when it is enabled; returns whether it ran.
 bool dispatch(AppState& state, ActionId id);
+// Runs the action with values (none: as dispatch above). Fails, saying why, when the action is not enabled now or
+// the values do not fit. A toggle given on|off runs only when it is not already so.
+Status dispatch(AppState& state, ActionId id, const ActionArgs& args);
+Status dispatch(AppState& state, const Action& a, const ActionArgs& args);
+// From a panel whose values always fit (an axis it lists, an index in range): as dispatch with them; a refusal
+// (the action not enabled now) is ignored, as a disabled menu item's click is.
+void dispatchValues(AppState& state, ActionId id, std::vector<std::string> words);
 bool actionEnabled(const AppState& state, const Action& a);
 // "Ctrl+Shift+S"; empty without a shortcut.
 std::string shortcutText(const Shortcut& s);

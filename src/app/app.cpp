@@ -1,10 +1,12 @@
-// The modeler window: GLFW (X11/GLX) window with an OpenGL 3.3 core context, Dear ImGui for the panels, and the
-// render module's point renderer for the 3D view (shared notes headless-gl.md, section 3a).
+// The modeler window's entry point and frame loop: options, the user's settings, the window (window.cpp), the
+// harness when a script or a screenshot asks for one (harness.h), and one frame after another until quit.
 #include "vox/app/app.h"
 
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
+#include <memory>
 #include <cstdio>
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -26,6 +28,8 @@
 #include "app/panels/panels.h"
 #include "app/script.h"
 #include "app/script_runner.h"
+#include "app/ui.h"
+#include "app/window.h"
 #include "app/viewport.h"
 #include "vox/io/image_io.h"
 
@@ -106,78 +110,8 @@ std::filesystem::path bundledModel() {
   return {};
 }
 
-std::string g_glfw_error;  // GLFW reports errors through a C callback without a user pointer
-void glfwErrorCallback(int code, const char* description) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, " (GLFW error 0x%x)", code);
-  g_glfw_error = std::string(description) + buf;
-}
-
-AppState& stateOf(GLFWwindow* w) { return *static_cast<AppState*>(glfwGetWindowUserPointer(w)); }
-// Any input: draw a few frames so ImGui can settle (hover states, popups opening) before sleeping again.
-void wake(GLFWwindow* w) { stateOf(w).redraw_frames = std::max(stateOf(w).redraw_frames, 3); }
-
-void installCallbacks(GLFWwindow* window) {
-  // Installed before ImGui's GLFW backend, which chains to them.
-  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int, int, int) { wake(w); });
-  glfwSetScrollCallback(window, [](GLFWwindow* w, double, double) { wake(w); });
-  glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
-    if (action == GLFW_PRESS) stateOf(w).key_presses.emplace_back(key, mods);
-    wake(w);
-  });
-  glfwSetCharCallback(window, [](GLFWwindow* w, unsigned int) { wake(w); });
-  glfwSetCursorEnterCallback(window, [](GLFWwindow* w, int) { wake(w); });
-  glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { wake(w); });
-  // Not used by ImGui 1.86's backend (it polls the cursor), so set directly.
-  glfwSetCursorPosCallback(window, [](GLFWwindow* w, double, double) { wake(w); });
-  glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { wake(w); });
-  glfwSetWindowRefreshCallback(window, [](GLFWwindow* w) { wake(w); });
-  glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
-    AppState& s = stateOf(w);
-    for (int i = 0; i < count; ++i) s.dropped_files.emplace_back(paths[i]);
-    wake(w);
-  });
-}
-
-void setUpImGui(GLFWwindow* window, const std::string& ini_path) {
-  IMGUI_CHECKVERSION();
-  ImGui::CreateContext();
-  ImGuiIO& io = ImGui::GetIO();
-  // ImGui keeps the pointer; the string lives in main's frame until DestroyContext.
-  io.IniFilename = ini_path.empty() ? nullptr : ini_path.c_str();
-  const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // fonts-dejavu-core, when installed
-  std::error_code ec;
-  if (std::filesystem::is_regular_file(font, ec)) io.Fonts->AddFontFromFileTTF(font, 15.0f);
-  ImGui::StyleColorsDark();
-  ImGuiStyle& style = ImGui::GetStyle();
-  style.WindowRounding = 0.0f;
-  style.FrameRounding = 3.0f;
-  style.GrabRounding = 3.0f;
-  style.GrabMinSize = 14.0f;
-  style.ItemSpacing = ImVec2(8.0f, 6.0f);
-  // Dialogs over a busy point rendering read better opaque.
-  style.Colors[ImGuiCol_PopupBg].w = 1.0f;
-  style.Colors[ImGuiCol_WindowBg].w = 1.0f;
-  installCallbacks(window);
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
-  ImGui_ImplOpenGL3_Init("#version 330 core");
-}
-
-// The window's back buffer after ImGui has drawn, as the user sees it.
-ImageRgba readWindow(GLFWwindow* window) {
-  int w = 0, h = 0;
-  glfwGetFramebufferSize(window, &w, &h);
-  ImageRgba img(w, h);
-  std::vector<Rgba8> rows(size_t(w) * size_t(h));
-  glReadBuffer(GL_BACK);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
-  for (int y = 0; y < h; ++y) {  // GL rows run bottom-up
-    std::copy_n(rows.begin() + ptrdiff_t(size_t(h - 1 - y) * size_t(w)), w,
-                img.pixels.begin() + ptrdiff_t(size_t(y) * size_t(w)));
-  }
-  for (Rgba8& p : img.pixels) p.a = 255;  // the window's alpha channel is not meaningful
-  return img;
+bool anyWork(const AppState& s) {
+  return modelBusy(s) || s.depth.busy() || s.surface_stats.busy() || s.mass.busy() || s.xray_result.busy();
 }
 
 bool writeScreenshot(AppState& state, GLFWwindow* window, const std::string& path) {
@@ -190,8 +124,174 @@ bool writeScreenshot(AppState& state, GLFWwindow* window, const std::string& pat
   return true;
 }
 
-bool anyWork(const AppState& s) {
-  return modelBusy(s) || s.depth.busy() || s.surface_stats.busy() || s.mass.busy() || s.xray_result.busy();
+// The harness, when a script or a screenshot asks for one; null for a person's session.
+std::unique_ptr<Harness> makeHarness(const Options& options, AppState& state, int& exit_code) {
+  if (options.script.empty() && options.screenshot.empty()) return nullptr;
+  auto h = std::make_unique<Harness>();
+  if (!options.script.empty()) {
+    auto script = loadScript(options.script);
+    if (!script) {
+      std::fprintf(stderr, "voxmod: %s\n", script.error().message.c_str());
+      exit_code = 1;
+      return nullptr;
+    }
+    h->commands = std::move(script).value();
+    h->scripted = true;
+    state.voxelize_dialog_on_open = false;  // a script voxelizes itself
+  }
+  h->screenshot_on_idle = options.screenshot;
+  if (!options.screenshot.empty()) state.voxelize_after_load = true;
+  setWidgetRecorder([raw = h.get()](const std::string& name, ImVec2 a, ImVec2 b) {
+    raw->widget_rects.push_back({name, a.x, a.y, b.x, b.y});
+  });
+  return h;
+}
+
+// Draw continuously only while something moves; while a worker computes, refresh its progress 20 times a second and
+// leave the CPU to it (llvmpipe draws on the same cores); otherwise sleep until an event. Returns whether this frame
+// animates (counts for the frame rate).
+bool waitForFrame(const AppState& state, const Harness* h) {
+  const bool sweeping = h && h->sweep.running;
+  const bool moving = state.section.playing || state.redraw_frames > 0 || state.viewport.interacting || sweeping;
+  const bool working =
+      anyWork(state) || (h && h->scriptRunning() && !sweeping) || (h && !h->screenshot_on_idle.empty());
+  if (moving || (working && !anyWork(state))) {
+    glfwPollEvents();
+  } else if (working) {
+    glfwWaitEventsTimeout(0.05);
+  } else {
+    glfwWaitEventsTimeout(0.5);
+  }
+  return moving || working;
+}
+
+// Closing the window (the unsaved-changes prompt decides, except while a script runs) and files dropped on it.
+void handleWindowEvents(AppState& state, const Harness* h) {
+  if (glfwWindowShouldClose(state.window)) {
+    glfwSetWindowShouldClose(state.window, GLFW_FALSE);
+    if (h && h->scriptRunning()) {
+      state.quit_requested = true;
+    } else {
+      requestQuit(state);
+    }
+  }
+  if (!state.dropped_files.empty()) {
+    const std::string first = state.dropped_files.front();
+    state.dropped_files.clear();
+    requestOpen(state, first);
+  }
+}
+
+// Builds the UI and draws it into the back buffer; returns the times the phases started (build, draw, swap).
+std::array<double, 3> drawUi(AppState& state, bool finish) {
+  std::array<double, 3> t{nowSeconds(), 0.0, 0.0};
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  drawFrame(state);
+  state.key_presses.clear();
+  ImGui::Render();
+  t[1] = nowSeconds();
+  int fb_w = 0, fb_h = 0;
+  glfwGetFramebufferSize(state.window, &fb_w, &fb_h);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fb_w, fb_h);
+  glClearColor(0.1f, 0.1f, 0.12f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  // The section benchmark splits each frame into phases; llvmpipe rasterizes when the work is flushed, so wait for
+  // it there (only then: glFinish would slow every frame of an interactive session for nothing).
+  if (finish) glFinish();
+  t[2] = nowSeconds();
+  return t;
+}
+
+// After the frame is drawn, before it is shown: the screenshots a script or --screenshot asked for.
+void takeScreenshots(Harness& h, AppState& state) {
+  if (!h.screenshot_path.empty()) {
+    writeScreenshot(state, state.window, h.screenshot_path);
+    h.screenshot_path.clear();
+  }
+  if (!h.screenshot_on_idle.empty()) {
+    // Everything loaded and computed, and a few frames drawn since, so the panels show the final numbers.
+    h.idle_frames = (settled(state) && (state.doc.model || state.doc.path.empty())) ? h.idle_frames + 1 : 0;
+    if (h.idle_frames >= 3) {
+      if (!writeScreenshot(state, state.window, h.screenshot_on_idle)) h.exit_code = 2;
+      state.quit_requested = true;
+    }
+  }
+}
+
+// A document was closed (another opened): its grids, depth map and point buffers are gone by now, after this frame
+// drew the new one. Hand the freed heap back to the system, or the process keeps gigabytes it no longer uses
+// (glibc keeps freed memory for reuse).
+void releaseMemory(AppState& state) {
+  if (!state.release_memory) return;
+  state.release_memory = false;
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
+
+// One frame: events, the document's update, the script's step, the UI, the screenshots, the swap.
+void runFrame(AppState& state, Harness* h, double& last, std::string& title) {
+  const bool animate = waitForFrame(state, h);
+  handleWindowEvents(state, h);
+  updateDocument(state);
+  state.viewport.interacting = false;  // set again this frame by drags, a playing section or a script sweep
+  if (h && (!modelBusy(state) || h->started)) stepScript(*h, state);
+  if (state.quit_requested) return;
+  const bool timing = h && h->sweep.running;
+  if (h) h->widget_rects.clear();  // drawn again this frame; a script's `state` reads the last frame's
+  const std::array<double, 3> t = drawUi(state, timing);
+  if (h) takeScreenshots(*h, state);
+  glfwSwapBuffers(state.window);
+  releaseMemory(state);
+  const double now = nowSeconds();
+  if (timing) {
+    h->frame_phase_ms[0] = (t[1] - t[0]) * 1000.0;
+    h->frame_phase_ms[1] = (t[2] - t[1]) * 1000.0;
+    h->frame_phase_ms[2] = (now - t[2]) * 1000.0;
+  }
+  if (const std::string wt = windowTitle(state); wt != title) {
+    glfwSetWindowTitle(state.window, wt.c_str());
+    title = wt;
+  }
+  state.frame_time_s = now - last;
+  last = now;
+  if (animate && state.frame_time_s > 0.0) state.fps = 0.9 * state.fps + 0.1 / state.frame_time_s;
+  ++state.frame;
+  state.redraw_frames = std::max(0, state.redraw_frames - 1);
+}
+
+void saveWindowSettings(AppState& state, const Options& options) {
+  if (state.settings_path.empty()) return;
+  int w = 0, h = 0;
+  glfwGetWindowSize(state.window, &w, &h);
+  if (options.width == 0 && w > 0 && h > 0) {  // a --size for a test run is not the user's choice
+    state.settings.window_width = w;
+    state.settings.window_height = h;
+  }
+  rememberSettings(state);
+  if (Status s = saveSettings(state.settings, state.settings_path); !s) {
+    std::fprintf(stderr, "voxmod: settings not saved: %s\n", s.error().message.c_str());
+  }
+}
+
+// A script (a test, a benchmark, the documentation's screenshots) starts from the defaults and leaves the user's
+// settings alone, so its result does not depend on who ran the window last. Returns ImGui's layout file.
+std::string loadUserSettings(AppState& state, const Options& options) {
+  std::string imgui_ini;
+  const std::filesystem::path config = options.script.empty() ? configDirectory() : std::filesystem::path();
+  if (!config.empty()) {
+    state.settings_path = config / "voxmod.ini";
+    state.settings = loadSettings(state.settings_path);
+    std::error_code ec;
+    std::filesystem::create_directories(config, ec);
+    if (!ec) imgui_ini = (config / "imgui.ini").string();
+  }
+  applySettings(state);
+  return imgui_ini;
 }
 
 }  // namespace
@@ -209,67 +309,28 @@ int runGui(int argc, char** argv) {
   }
 
   AppState state;
-  // A script (a test, a benchmark, the documentation's screenshots) starts from the defaults and leaves the user's
-  // settings alone, so its result does not depend on who ran the window last.
-  const std::filesystem::path config = options.script.empty() ? configDirectory() : std::filesystem::path();
-  std::string imgui_ini;
-  if (!config.empty()) {
-    state.settings_path = config / "voxmod.ini";
-    state.settings = loadSettings(state.settings_path);
-    std::error_code ec;
-    std::filesystem::create_directories(config, ec);
-    if (!ec) imgui_ini = (config / "imgui.ini").string();
-  }
-  applySettings(state);
-  if (!options.script.empty()) {
-    auto script = loadScript(options.script);
-    if (!script) {
-      std::fprintf(stderr, "voxmod: %s\n", script.error().message.c_str());
-      return 1;
-    }
-    state.script.emplace();
-    state.script->commands = std::move(script).value();
-  }
-  state.screenshot_on_idle = options.screenshot;
+  const std::string imgui_ini = loadUserSettings(state, options);
+  int exit_code = 0;
+  std::unique_ptr<Harness> harness = makeHarness(options, state, exit_code);
+  if (exit_code != 0) return exit_code;
 
-  glfwSetErrorCallback(glfwErrorCallback);
-  if (!glfwInit()) {
-    std::fprintf(stderr, "voxmod: cannot open a window: %s\nUse a subcommand to work without one (voxmod --help).\n",
-                 g_glfw_error.c_str());
-    return 3;
-  }
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   const int width = options.width > 0 ? options.width : state.settings.window_width;
   const int height = options.height > 0 ? options.height : state.settings.window_height;
-  GLFWwindow* window = glfwCreateWindow(width, height, "voxmod", nullptr, nullptr);
+  // A script measures frame times, so it must not wait for vertical sync.
+  auto window = openWindow(state, width, height, !(harness && harness->scripted), imgui_ini);
   if (!window) {
-    std::fprintf(stderr, "voxmod: cannot create an OpenGL 3.3 window: %s\n", g_glfw_error.c_str());
-    glfwTerminate();
+    std::fprintf(stderr, "voxmod: %s\n", window.error().message.c_str());
     return 3;
   }
-  state.window = window;
-  glfwSetWindowUserPointer(window, &state);
-  glfwMakeContextCurrent(window);
-  // A script measures frame times, so it must not wait for vertical sync.
-  glfwSwapInterval(state.script ? 0 : 1);
-
-  setUpImGui(window, imgui_ini);
   if (Status s = initViewport(state); !s) {
     std::fprintf(stderr, "voxmod: %s\n", s.error().message.c_str());
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
-    glfwDestroyWindow(window);
-    glfwTerminate();
+    closeWindow(*window);
     return 3;
   }
 
   if (!options.file.empty()) {
     startOpen(state, options.file);
-  } else if (!state.script) {
+  } else if (!(harness && harness->scripted)) {
     if (const std::filesystem::path bundled = bundledModel(); !bundled.empty()) {
       state.voxelize_after_load = true;
       startOpen(state, bundled);
@@ -278,125 +339,16 @@ int runGui(int argc, char** argv) {
 
   double last = nowSeconds();
   std::string title;
-  int idle_frames = 0;
-  while (!state.quit_requested) {
-    // Draw continuously only while something moves; while a worker computes, refresh its progress 20 times a
-    // second and leave the CPU to it (llvmpipe draws on the same cores); otherwise sleep until an event.
-    const bool moving = state.section.playing || state.redraw_frames > 0 || state.viewport.interacting ||
-                        (state.script && state.script->sweeping);
-    const bool working =
-        anyWork(state) || (state.script && !state.script->sweeping) || !state.screenshot_on_idle.empty();
-    const bool animate = moving || working;
-    if (moving || (working && !anyWork(state))) {
-      glfwPollEvents();
-    } else if (working) {
-      glfwWaitEventsTimeout(0.05);
-    } else {
-      glfwWaitEventsTimeout(0.5);
-    }
-    if (glfwWindowShouldClose(window)) {
-      glfwSetWindowShouldClose(window, GLFW_FALSE);  // the unsaved-changes prompt decides
-      if (state.script) {
-        state.quit_requested = true;
-      } else {
-        requestQuit(state);
-      }
-    }
-    if (!state.dropped_files.empty()) {
-      const std::string first = state.dropped_files.front();
-      state.dropped_files.clear();
-      requestOpen(state, first);
-    }
+  while (!state.quit_requested) runFrame(state, harness.get(), last, title);
 
-    updateDocument(state);
-    state.viewport.interacting = false;  // set again this frame by drags, a playing section or a script sweep
-    if (!modelBusy(state) || (state.script && state.script->started)) stepScript(state);
-    if (state.quit_requested) break;
-
-    const double t_build = nowSeconds();
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-    drawFrame(state);
-    state.key_presses.clear();
-    ImGui::Render();
-    const double t_draw = nowSeconds();
-    int fb_w = 0, fb_h = 0;
-    glfwGetFramebufferSize(window, &fb_w, &fb_h);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, fb_w, fb_h);
-    glClearColor(0.1f, 0.1f, 0.12f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    const bool timing = state.script && state.script->sweeping;
-    // The section benchmark splits each frame into phases; llvmpipe rasterizes when the work is flushed, so wait
-    // for it there (only then: glFinish would slow every frame of an interactive session for nothing).
-    if (timing) glFinish();
-    const double t_swap = nowSeconds();
-
-    if (state.script && !state.script->screenshot_path.empty()) {
-      writeScreenshot(state, window, state.script->screenshot_path);
-      state.script->screenshot_path.clear();
-    }
-    if (!state.screenshot_on_idle.empty()) {
-      // Everything loaded and computed, and a few frames drawn since, so the panels show the final numbers.
-      idle_frames = (settled(state) && (state.doc.model || state.doc.path.empty())) ? idle_frames + 1 : 0;
-      if (idle_frames >= 3) {
-        if (!writeScreenshot(state, window, state.screenshot_on_idle)) state.exit_code = 2;
-        state.quit_requested = true;
-      }
-    }
-    glfwSwapBuffers(window);
-    if (state.release_memory) {
-      // A document was closed (another opened): its grids, depth map and point buffers are gone by now, after this
-      // frame drew the new one. Hand the freed heap back to the system, or the process keeps gigabytes it no
-      // longer uses (glibc keeps freed memory for reuse).
-      state.release_memory = false;
-#if defined(__GLIBC__)
-      malloc_trim(0);
-#endif
-    }
-    if (timing) {
-      const double t_end = nowSeconds();
-      state.frame_phase_ms[0] = (t_draw - t_build) * 1000.0;
-      state.frame_phase_ms[1] = (t_swap - t_draw) * 1000.0;
-      state.frame_phase_ms[2] = (t_end - t_swap) * 1000.0;
-    }
-
-    if (const std::string t = windowTitle(state); t != title) {
-      glfwSetWindowTitle(window, t.c_str());
-      title = t;
-    }
-    const double now = nowSeconds();
-    state.frame_time_s = now - last;
-    last = now;
-    if (animate && state.frame_time_s > 0.0) state.fps = 0.9 * state.fps + 0.1 / state.frame_time_s;
-    ++state.frame;
-    state.redraw_frames = std::max(0, state.redraw_frames - 1);
-  }
-
-  if (!state.settings_path.empty()) {
-    int w = 0, h = 0;
-    glfwGetWindowSize(window, &w, &h);
-    if (options.width == 0 && w > 0 && h > 0) {  // a --size for a test run is not the user's choice
-      state.settings.window_width = w;
-      state.settings.window_height = h;
-    }
-    rememberSettings(state);
-    if (Status s = saveSettings(state.settings, state.settings_path); !s) {
-      std::fprintf(stderr, "voxmod: settings not saved: %s\n", s.error().message.c_str());
-    }
-  }
+  saveWindowSettings(state, options);
   cancelJobs(state);
   shutdownViewport(state);
   state.section_texture.reset();
   state.xray_texture.reset();
-  ImGui_ImplOpenGL3_Shutdown();
-  ImGui_ImplGlfw_Shutdown();
-  ImGui::DestroyContext();
-  glfwDestroyWindow(window);
-  glfwTerminate();
-  return state.exit_code;
+  setWidgetRecorder(nullptr);
+  closeWindow(*window);
+  return harness ? harness->exit_code : 0;
 }
 
 }  // namespace vox::app

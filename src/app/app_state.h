@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "app/job.h"
-#include "app/script.h"
 #include "app/settings.h"
 #include "app/texture.h"
 #include "vox/analysis/analysis.h"
@@ -210,39 +209,12 @@ struct Viewport {
   float x = 0, y = 0, width = 0, height = 0;  // where the view sits in the window, pixels
 };
 
-// A script run by --script: the commands and where it stands.
-struct ScriptRun {
-  std::vector<ScriptCommand> commands;
-  size_t next = 0;
-  bool started = false;  // the current command did its first step and is waiting
-  int wait_frames = 0;
-  double deadline = 0.0;        // wait-file / job time-out (seconds, steady clock)
-  int settle_countdown = -1;    // frames still to draw once background work has finished
-  std::string screenshot_path;  // written (and cleared) by the frame loop after this frame is drawn
-  bool screenshot_requested = false;
-  bool failed = false;
-  std::string last_error;    // the last error reported while the script ran
-  std::string expect_error;  // expect-error: the next command must fail with a message containing this
-  // sweep: the section moves one step per frame, as a slider drag does; frame times are collected
-  bool sweeping = false;
-  int32_t sweep_step = 1;
-  std::vector<double> sweep_frame_ms;
-  double sweep_view_ms = 0.0;
-  double sweep_phase_ms[3] = {0.0, 0.0, 0.0};
-  double sweep_last = 0.0;
-};
-
-// Where a widget a test driver needs was drawn (window pixels), e.g. "section_slider"; the `state` script command
-// writes them out.
-struct WidgetRect {
-  std::string name;
-  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-};
-
 // Shown one at a time in a modal dialog; each names the file and the problem.
 struct ErrorQueue {
   std::vector<std::string> messages;
   int shown_frame = -1;  // the ImGui frame the dialog opened on: the key press that raised the error must not close it
+  int64_t reported = 0;  // errors raised since the window opened
+  std::string last_reported;  // the last of them
 };
 
 struct AppState {
@@ -304,23 +276,17 @@ struct AppState {
   std::string status_message;  // e.g. "Wrote /home/me/part.png", in the status bar for a few seconds
   double status_since = 0.0;
   int32_t export_width = 0, export_height = 0;  // size of an exported 3D view in pixels; 0: the view's own
-  bool close_dialogs = false;  // the script's "dialog close": every open dialog closes itself on the next frame
+  bool close_dialogs = false;  // every open dialog closes itself on the next frame (the close-dialogs action)
 
   // Frame bookkeeping.
   int64_t frame = 0;
   double frame_time_s = 0.0;  // duration of the last frame
   double fps = 0.0;           // smoothed
-  // While a script sweeps the section: milliseconds of the last frame spent building the UI (including the section
-  // and the 3D view's draw calls), rasterizing (3D points and UI, up to glFinish) and swapping buffers.
-  double frame_phase_ms[3] = {0.0, 0.0, 0.0};
-  int redraw_frames = 2;  // frames still to draw before sleeping until the next event
+  int redraw_frames = 2;      // frames still to draw before sleeping until the next event
 
-  // Testing and docs.
-  std::optional<ScriptRun> script;
-  bool voxelize_after_load = false;      // the bundled model at start-up: voxelize at once instead of asking
-  std::vector<WidgetRect> widget_rects;  // refilled every frame
-  std::string screenshot_on_idle;        // --screenshot PATH: write once everything has settled, then quit
-  int exit_code = 0;
+  // Opening.
+  bool voxelize_after_load = false;     // the next mesh opened is voxelized at once instead of asking (start-up)
+  bool voxelize_dialog_on_open = true;  // a mesh opened shows the voxelize dialog (off while a script drives)
 };
 
 }  // namespace vox::app

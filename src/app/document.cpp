@@ -103,10 +103,10 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
     doc.saved_version = 0;
     state.panel = Panel::kModel;
     state.panel_change_requested = true;
-    if (state.voxelize_after_load || !state.screenshot_on_idle.empty()) {
+    if (state.voxelize_after_load) {
       // Voxelized without being asked (the bundled part at start-up).
       startVoxelize(state, state.voxelize.params);
-    } else if (!state.script) {
+    } else if (state.voxelize_dialog_on_open) {
       // A mesh is voxelized at the resolution the user picks: show the plan first (a script voxelizes itself).
       state.voxelize.open_requested = true;
     }

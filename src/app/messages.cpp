@@ -1,6 +1,5 @@
 #include "app/messages.h"
 
-#include <cstdio>
 #include <utility>
 
 namespace vox::app {
@@ -10,12 +9,8 @@ void reportError(AppState& state, const std::string& message, const std::filesys
   if (!file.empty() && message.find(file.filename().string()) == std::string::npos) {
     text = file.filename().string() + ": " + message;
   }
-  // A script has nobody to click OK: it fails, and says why on stderr.
-  if (state.script) {
-    std::fprintf(stderr, "voxmod: %s\n", text.c_str());
-    state.script->failed = true;
-    state.script->last_error = text;
-  }
+  ++state.errors.reported;
+  state.errors.last_reported = text;
   state.errors.messages.push_back(std::move(text));
 }
 

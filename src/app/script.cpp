@@ -1,8 +1,11 @@
 #include "app/script.h"
 
+#include <algorithm>
 #include <array>
+#include <optional>
 #include <sstream>
 
+#include "app/actions.h"
 #include "vox/io/file_util.h"
 
 namespace vox::app {
@@ -14,26 +17,30 @@ struct Signature {
   int max_args;  // -1: any (the command uses `rest`)
 };
 
-// Argument counts per command; the meaning of each is checked when it runs (see script.h).
-constexpr std::array<Signature, 31> kSignatures = {{
-    {"open", 1, -1},        {"voxelize", 1, 2},     {"section", 1, 2},
-    {"sweep", 1, 2},        {"peel", 1, 1},         {"xray", 2, 2},
-    {"panel", 1, 1},        {"view", 1, 2},         {"zoom", 1, 1},
-    {"lit", 1, 1},          {"round", 1, 1},        {"disputed", 1, 1},
-    {"cut", 1, 1},          {"undo", 0, 0},         {"redo", 0, 0},
-    {"save", 1, -1},        {"export-view", 1, -1}, {"export-section", 1, -1},
-    {"export-xray", 1, -1}, {"export-csv", 1, -1},  {"screenshot", 1, -1},
-    {"state", 1, -1},       {"wait", 1, 2},         {"wait-file", 1, 2},
-    {"quit", 0, 0},         {"lod", 1, 1},          {"expect-error", 1, -1},
-    {"hover", 1, 3},        {"dialog", 1, 1},       {"measure", 1, 3},
-    {"export-size", 2, 2},
+// The harness's own commands (script.h); every other command is an action of the table (actions.h).
+constexpr std::array<Signature, 9> kHarnessCommands = {{
+    {"echo", 0, -1},
+    {"sweep", 1, 2},
+    {"screenshot", 1, -1},
+    {"state", 1, -1},
+    {"wait", 1, 2},
+    {"wait-file", 1, 2},
+    {"hover", 1, 3},
+    {"expect-error", 1, -1},
+    {"exit", 0, 0},
 }};
 
-const Signature* findSignature(const std::string& name) {
-  for (const Signature& s : kSignatures) {
-    if (name == s.name) return &s;
+// The word counts a command takes: a harness command's, or an action's (none for a menu item's run, on|off for a
+// toggle, its values for run_with).
+std::optional<Signature> findSignature(const std::string& name) {
+  for (const Signature& s : kHarnessCommands) {
+    if (name == s.name) return s;
   }
-  return nullptr;
+  const Action* a = findAction(name);
+  if (!a) return std::nullopt;
+  if (a->checked) return Signature{a->name, 0, 1};
+  if (!a->run_with) return Signature{a->name, 0, 0};
+  return Signature{a->name, a->run ? 0 : a->min_values, a->max_values};
 }
 
 }  // namespace
@@ -58,11 +65,7 @@ Result<std::vector<ScriptCommand>> parseScript(const std::string& text, const st
       c.rest = line.substr(first, last - first + 1);
     }
     const std::string where = name + ":" + std::to_string(number) + ": ";
-    if (c.name == "echo") {
-      commands.push_back(std::move(c));
-      continue;
-    }
-    const Signature* sig = findSignature(c.name);
+    const std::optional<Signature> sig = findSignature(c.name);
     if (!sig) return makeError(ErrorCode::kParse, where + "unknown command '" + c.name + "'");
     const int n = int(c.args.size());
     if (n < sig->min_args || (sig->max_args >= 0 && n > sig->max_args)) {
@@ -75,6 +78,11 @@ Result<std::vector<ScriptCommand>> parseScript(const std::string& text, const st
     commands.push_back(std::move(c));
   }
   return commands;
+}
+
+bool isHarnessCommand(const std::string& name) {
+  return std::any_of(kHarnessCommands.begin(), kHarnessCommands.end(),
+                     [&](const Signature& s) { return name == s.name; });
 }
 
 Result<std::vector<ScriptCommand>> loadScript(const std::filesystem::path& path) {

@@ -1,39 +1,35 @@
 #pragma once
 // `voxmod --script FILE`: line commands that drive the window deterministically, for tests and for the screenshots
-// in docs/. One command per line, '#' starts a comment. Each command does what the matching widget or menu item
-// does (it calls the same operations), and the next command runs only when the previous one has finished: a
-// voxelization, a load or a peel waits for its worker; `screenshot` waits for the frame to be drawn.
+// in docs/. One command per line, '#' starts a comment; the next command runs only when the previous one has
+// finished (its background work done, or its frames drawn).
 //
+// A command is the name of an action (actions.h: the table behind the menus, shortcuts and buttons), with the values
+// it takes, dispatched exactly as a menu item is. For example:
 // clang-format off
-//   open PATH                        open a mesh (.stl) or voxel file (.vxm, .binvox)
-//   voxelize R [MODE]                voxelize the open mesh, R voxels on the longest axis, MODE
-//                                    auto|parity|nonzero|vote
-//   section AXIS INDEX | section off show the section at voxel INDEX along x|y|z (and the Section panel)
-//   sweep AXIS [STEP]                move the section through every STEP-th index along AXIS, one per frame, and
-//                                    print the frame rate (the section-slider benchmark)
-//   peel N | peel core | peel back | peel reset
+//   open PATH | save PATH | save-as PATH | export-view PATH | export-section PATH | export-xray PATH | export-csv PATH
+//   voxelize R [MODE]                voxelize the open mesh (MODE auto|parity|nonzero|vote); no values: the dialog
+//   section AXIS INDEX               the section at voxel INDEX along x|y|z (and the Section panel)
+//   peel N | peel-one | peel-back | peel-core | peel-reset
 //   xray AXIS MODE                   X-ray along x|y|z, MODE min|max|total (and the X-ray panel)
-//   panel NAME                       show a panel: model|section|skin|xray|mass
-//   view YAW PITCH | view NAME       camera angles in degrees, or iso|+x|-x|+y|-y|+z|-z; refits the model
-//   zoom FACTOR                      > 1 zooms in
-//   measure I J K | measure clear    pick voxel (I, J, K) for measuring, as a click does (two: their distance)
-//   lit on|off, round on|off, disputed on|off, cut on|off, lod on|off
-//   undo | redo
-//   save PATH                        save the model (.vxm or .binvox)
-//   export-view PATH | export-section PATH | export-xray PATH | export-csv PATH   as File > Export does
-//   export-size W H                  size of an exported 3D view in pixels (0 0: as the view is shown)
+//   panel-model | panel-section | panel-skin | panel-xray | panel-mass
+//   view YAW PITCH | view-iso | view-pos-x | view-neg-x | ... | zoom FACTOR | zoom-in | zoom-out | fit
+//   measure I J K | measure-clear    pick voxel (I, J, K) for measuring, as a click does (two: their distance)
+//   lit on|off, round on|off, disputed on|off, cut on|off, lod on|off   (no value: toggle)
+//   undo | redo | quit | cancel | export-size W H | about | controls | close-dialogs
+// The harness's own commands look, wait and write what the window shows; they change nothing a user edits:
+//   sweep AXIS [STEP]                the section action once per frame through every STEP-th index along AXIS, then
+//                                    print the frame rate (the section-slider benchmark)
 //   screenshot PATH                  the whole window as PNG, after the next frame is drawn
 //   state PATH                       once background work has finished, write the window's state as "key = value"
 //                                    lines (widget rectangles in window pixels, section index, peel level, ...)
 //   wait N | wait frames N           draw N frames
+//   wait-file PATH [SECONDS]         keep drawing until PATH exists (a test driver's signal), default 60 s
 //   hover WIDGET [FX FY]             move the pointer to a widget recorded by `state` (e.g. xray_image), at
 //                                    fractions FX, FY of its width and height (default the centre)
-//   dialog voxelize|open|save|about|controls|close   open one of the dialogs, or close whichever is open
-//   wait-file PATH [SECONDS]         keep drawing until PATH exists (a test driver's signal), default 60 s
 //   expect-error TEXT                the next command must fail with an error containing TEXT (its error dialog
 //                                    stays up); any other outcome fails the script
 //   echo TEXT                        print TEXT to stdout
-//   quit                             close the window, discarding unsaved changes
+//   exit                             close the window without asking (unsaved changes are dropped)
 // clang-format on
 #include <filesystem>
 #include <string>
@@ -54,5 +50,7 @@ struct ScriptCommand {
 // window opens. Errors read "FILE:LINE: message".
 Result<std::vector<ScriptCommand>> parseScript(const std::string& text, const std::string& name);
 Result<std::vector<ScriptCommand>> loadScript(const std::filesystem::path& path);
+// True for the harness's own commands (echo, sweep, screenshot, state, wait, wait-file, hover, expect-error, exit).
+bool isHarnessCommand(const std::string& name);
 
 }  // namespace vox::app

@@ -113,4 +113,25 @@ void peeledNotice(const AppState& state) {
                                       " skin layers (Skin > Reset skin for the whole part).");
 }
 
+namespace {
+WidgetRecorder& widgetRecorder() {
+  static WidgetRecorder recorder;
+  return recorder;
+}
+}  // namespace
+
+void markWidget(const std::string& name) {
+  if (const WidgetRecorder& r = widgetRecorder()) r(name, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
+}
+
+void setWidgetRecorder(WidgetRecorder recorder) { widgetRecorder() = std::move(recorder); }
+
+void actionCheckbox(AppState& state, ActionId id, const char* label) {
+  const Action& a = action(id);
+  bool on = a.checked && a.checked(state);
+  if (ImGui::Checkbox(label, &on)) dispatch(state, id);
+}
+
+void setToggle(AppState& state, ActionId id, bool on) { dispatchValues(state, id, {on ? "on" : "off"}); }
+
 }  // namespace vox::app

@@ -1,10 +1,12 @@
 #pragma once
 // Small ImGui helpers shared by the panels: number formatting, images from GL textures, tooltips.
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include <imgui.h>
 
+#include "app/actions.h"
 #include "app/app_state.h"
 #include "vox/core/text.h"
 
@@ -42,6 +44,17 @@ void wrappedColoured(const ImVec4& colour, const std::string& text);
 // A scale bar at `at` (top left of a text line): the longest round length (1, 2 or 5 x 10^k) that fits in max_px,
 // labelled with its length and units.
 void drawScaleBar(ImVec2 at, float pixels_per_unit, const std::string& units, float max_px);
+
+// Where the last widget was drawn, for a test driver that clicks it ("section_slider"): given to the recorder set
+// with setWidgetRecorder (the script harness), nothing without one.
+void markWidget(const std::string& name);
+using WidgetRecorder = std::function<void(const std::string& name, ImVec2 min, ImVec2 max)>;
+void setWidgetRecorder(WidgetRecorder recorder);
+
+// A checkbox for a toggle of the action table: shows whether it is on, and a click dispatches it.
+void actionCheckbox(AppState& state, ActionId id, const char* label);
+// Sets a toggle of the action table on or off through dispatch (as a script's "lit off").
+void setToggle(AppState& state, ActionId id, bool on);
 
 // Under the Section and X-ray panels' controls: a line saying the model is peeled, when it is.
 void peeledNotice(const AppState& state);

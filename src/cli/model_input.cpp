@@ -19,8 +19,9 @@ void addMeshOptions(CLI::App& sub, MeshOptions& options, const std::string& mode
   auto* size = sub.add_option("--voxel-size", options.params.voxel_size,
                               "For a mesh FILE: voxel size in model units (instead of --res)");
   res->excludes(size);
-  auto* mode = sub.add_option(mode_names, options.mode_text, "For a mesh FILE: parity|nonzero|vote|auto (default auto)")
-                   ->check(CLI::IsMember({"parity", "nonzero", "vote", "auto"}));
+  auto* mode =
+      sub.add_option(mode_names, options.mode_text, "For a mesh FILE: " + fillModeNames("|") + " (default auto)")
+          ->check(CLI::IsMember(fillModeNameList()));
   options.mesh_only = {res, size, mode};
   sub.add_option("--units", options.units,
                  "Length units of the model's coordinates: mm, cm, m, in (STL files carry none; default: the "

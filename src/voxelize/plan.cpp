@@ -25,10 +25,22 @@ const char* fillModeName(FillMode m) {
 }
 
 std::optional<FillMode> parseFillMode(const std::string& s) {
-  for (FillMode m : {FillMode::kAuto, FillMode::kParity, FillMode::kNonzero, FillMode::kVote}) {
+  for (FillMode m : kFillModes) {
     if (s == fillModeName(m)) return m;
   }
   return std::nullopt;
+}
+
+std::string fillModeNames(const char* separator) {
+  std::string names;
+  for (FillMode m : kFillModes) names += (names.empty() ? "" : separator) + std::string(fillModeName(m));
+  return names;
+}
+
+std::vector<std::string> fillModeNameList() {
+  std::vector<std::string> names;
+  for (FillMode m : kFillModes) names.emplace_back(fillModeName(m));
+  return names;
 }
 
 namespace voxelize_detail {

@@ -3,6 +3,7 @@
 // display are needed; the GUI itself is tested under Xvfb by gui_test.sh and files_test.sh.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <set>
@@ -14,6 +15,7 @@
 #include "app/measure.h"
 #include "app/operations.h"
 #include "app/script.h"
+#include "app/script_runner.h"
 #include "app/settings.h"
 #include "support/test_support.h"
 #include "vox/io/stl.h"
@@ -48,6 +50,24 @@ TEST(AppScript, rejectsWrongArgumentCounts) {
   EXPECT_NE(s.error().message.find("t.script:1: 'xray' takes 2 arguments, found 1"), std::string::npos)
       << s.error().message;
   EXPECT_FALSE(parseScript("quit now\n", "t").ok());
+}
+
+// Every script command is an action of the table or one of the harness's own commands, never both, and every
+// action can be named in a script.
+TEST(AppScript, everyCommandIsAnActionOrAHarnessCommand) {
+  for (const char* h : {"echo", "sweep", "screenshot", "state", "wait", "wait-file", "hover", "expect-error", "exit"}) {
+    EXPECT_TRUE(isHarnessCommand(h)) << h;
+    EXPECT_EQ(findAction(h), nullptr) << h << " is both an action and a harness command";
+  }
+  for (const Action& a : actionTable()) {
+    EXPECT_FALSE(isHarnessCommand(a.name)) << a.name;
+    std::string line = a.name;
+    if (!a.run) {
+      for (int i = 0; i < a.min_values; ++i) line += " 1";
+    }
+    EXPECT_TRUE(parseScript(line + "\n", "t").ok()) << line;
+  }
+  EXPECT_FALSE(parseScript("dialog open\n", "t").ok());  // the old spelling is no command now
 }
 
 // ---- Settings ----
@@ -186,12 +206,16 @@ TEST(AppActions, everyActionIsInTheTableOnceAndShortcutsAreUnique) {
   std::set<std::pair<int, int>> shortcuts;
   for (const Action& a : actionTable()) {
     EXPECT_TRUE(ids.insert(int(a.id)).second) << a.label;
-    EXPECT_NE(a.run, nullptr) << a.label;
+    EXPECT_TRUE(a.run || a.run_with) << a.label;
+    if (a.menu) {
+      EXPECT_NE(a.run, nullptr) << a.label << ": a menu item runs without values";
+    }
+    EXPECT_EQ(findAction(a.name), &a) << "script name '" << a.name << "' is not unique";
     if (a.shortcut.key != 0) {
       EXPECT_TRUE(shortcuts.insert({a.shortcut.key, a.shortcut.mods}).second) << "shortcut of " << a.label;
     }
   }
-  for (int id = 0; id <= int(ActionId::kAbout); ++id) EXPECT_TRUE(ids.count(id)) << "ActionId " << id;
+  for (int id = 0; id <= int(ActionId::kCloseDialogs); ++id) EXPECT_TRUE(ids.count(id)) << "ActionId " << id;
   EXPECT_EQ(shortcutText(action(ActionId::kSaveAs).shortcut), "Ctrl+Shift+S");
   EXPECT_EQ(shortcutText(action(ActionId::kSectionNext).shortcut), "PgUp");
   EXPECT_EQ(shortcutText(action(ActionId::kExportBinvox).shortcut), "");
@@ -499,6 +523,84 @@ TEST(AppDocument, aFailedSaveKeepsTheModelAndAnotherPlaceWorks) {
   auto reread = io::loadVxm(dir / "elsewhere.vxm");
   ASSERT_TRUE(reread.ok()) << reread.error().message;
   EXPECT_LT(reread->filledCount(), block().filledCount());  // the peeled model was saved
+}
+
+// ---- The script harness drives the application through the action table ----
+
+// Runs `text` as a --script on a window-less state: each "frame" updates the document and steps the script.
+bool runScript(AppState& state, Harness& h, const std::string& text) {
+  auto commands = parseScript(text, "t.script");
+  EXPECT_TRUE(commands.ok()) << commands.error().message;
+  if (!commands) return false;
+  h.commands = std::move(commands).value();
+  h.scripted = true;
+  state.voxelize_dialog_on_open = false;
+  for (int frame = 0; frame < 20000 && h.scriptRunning() && !state.quit_requested; ++frame) {
+    updateDocument(state);
+    stepScript(h, state);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return !h.failed && !h.scriptRunning();
+}
+
+TEST(AppScriptRun, commandsReachTheDocumentThroughTheActions) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
+  AppState state;
+  Harness h;
+  ASSERT_TRUE(runScript(state, h,
+                        "open " + (dir / "block.vxm").string() +
+                            "\npanel-skin\npeel 2\nlit off\nlit off\nsection x 3\nxray y max\nundo\n"
+                            "save " +
+                            (dir / "out.vxm").string() + "\n"))
+      << h.last_error;
+  ASSERT_TRUE(state.doc.model.has_value());
+  EXPECT_EQ(state.doc.model->peeled, 0);  // peeled 2, then undone
+  EXPECT_FALSE(state.view.lit);           // "lit off" twice: set, not toggled back
+  EXPECT_EQ(state.section.axis, Axis::kX);
+  EXPECT_EQ(state.section.index, 3);
+  EXPECT_EQ(state.xray.params.axis, Axis::kY);
+  EXPECT_EQ(state.xray.params.mode, XrayMode::kMax);
+  EXPECT_EQ(state.panel, Panel::kXray);
+  EXPECT_TRUE(std::filesystem::exists(dir / "out.vxm"));
+  EXPECT_FALSE(hasUnsavedChanges(state));
+}
+
+// Every action a script names goes through dispatch: where the action is not enabled (no model yet), the script
+// fails with dispatch's own words, for each of them.
+TEST(AppScriptRun, everyActionCommandIsDispatched) {
+  for (const Action& a : actionTable()) {
+    if (!a.enabled) continue;
+    AppState state;
+    if (a.enabled(state)) continue;
+    Harness h;
+    std::string line = a.name;
+    for (int i = 0; i < std::max(a.run ? 0 : a.min_values, 0); ++i) line += " 1";
+    EXPECT_FALSE(runScript(state, h, line + "\n")) << line;
+    EXPECT_EQ(h.exit_code, 1) << line;
+  }
+  // And the message is dispatch's.
+  AppState state;
+  Harness h;
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE(runScript(state, h, "undo\n"));
+  EXPECT_NE(testing::internal::GetCapturedStderr().find("'undo' is not available now"), std::string::npos);
+}
+
+// An error dialog raised by an action fails the script, unless expect-error announced it.
+TEST(AppScriptRun, errorsFailTheRunUnlessExpected) {
+  test::TempDir dir;
+  AppState state;
+  Harness h;
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  EXPECT_TRUE(runScript(state, h, "expect-error no such file\nopen " + (dir / "missing.stl").string() + "\n"));
+  AppState state2;
+  Harness h2;
+  EXPECT_FALSE(runScript(state2, h2, "open " + (dir / "missing.stl").string() + "\n"));
+  testing::internal::GetCapturedStdout();
+  EXPECT_NE(testing::internal::GetCapturedStderr().find("missing.stl: no such file"), std::string::npos);
+  EXPECT_EQ(state2.errors.messages.size(), 1u);
 }
 
 }  // namespace

@@ -33,8 +33,12 @@ enum class FillMode {
 // (eps, eps^3, eps^2) in (x, y, z). Vote mode's rays along Y and Z displace the centre the same way in their own
 // frame, (y, x, z) resp. (z, x, y) taking the roles of (x, y, z): consistent, so closed meshes stay crack-free along
 // every axis, but a centre exactly on the surface may then be decided differently per axis (and be disputed).
+// Every fill mode, in the order menus and help list them.
+inline constexpr FillMode kFillModes[] = {FillMode::kAuto, FillMode::kParity, FillMode::kNonzero, FillMode::kVote};
 const char* fillModeName(FillMode m);  // "auto", "parity", "nonzero", "vote"
 std::optional<FillMode> parseFillMode(const std::string& s);
+std::string fillModeNames(const char* separator = ", ");  // "auto, parity, nonzero, vote"
+std::vector<std::string> fillModeNameList();
 
 struct VoxelizeParams {
   int64_t resolution = 200;  // voxels along the longest axis, 1..kMaxResolution; ignored when voxel_size > 0

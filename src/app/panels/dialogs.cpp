@@ -89,10 +89,9 @@ void drawVoxelizeDialog(AppState& state) {
     ImGui::InputDouble("model units per voxel", &p.voxel_size, 0.0, 0.0, "%.6g");
   }
 
-  static constexpr FillMode kModes[] = {FillMode::kAuto, FillMode::kParity, FillMode::kNonzero, FillMode::kVote};
   ImGui::SetNextItemWidth(160.0f);
   if (ImGui::BeginCombo("Fill mode", fillModeName(p.mode))) {
-    for (FillMode m : kModes) {
+    for (FillMode m : kFillModes) {
       if (ImGui::Selectable(fillModeName(m), m == p.mode)) p.mode = m;
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", modeHelp(m));
     }
@@ -232,26 +231,22 @@ void drawUnsavedPrompt(AppState& state) {
     state.after_unsaved_prompt = nullptr;
     return f;
   };
-  auto record = [&state](const char* name) {
-    const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
-    state.widget_rects.push_back({name, r0.x, r0.y, r1.x, r1.y});
-  };
   const bool save = ImGui::Button("Save", ImVec2(110.0f, 0.0f));
-  record("prompt_save");
+  markWidget("prompt_save");
   if (save) {
     ImGui::CloseCurrentPopup();
     saveThen(state, then());
   }
   ImGui::SameLine();
   const bool discard = ImGui::Button("Discard", ImVec2(110.0f, 0.0f));
-  record("prompt_discard");
+  markWidget("prompt_discard");
   if (discard) {
     ImGui::CloseCurrentPopup();
     if (auto f = then()) f(state);
   }
   ImGui::SameLine();
   const bool cancel = ImGui::Button("Cancel", ImVec2(110.0f, 0.0f));
-  record("prompt_cancel");
+  markWidget("prompt_cancel");
   if (cancel || state.close_dialogs || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
     ImGui::CloseCurrentPopup();
     then();

@@ -41,16 +41,14 @@ void drawSidebar(AppState& state, ImVec2 pos, ImVec2 size) {
     for (const PanelEntry& e : kPanels) {
       const bool select = state.panel_change_requested && state.panel == e.panel;
       if (ImGui::BeginTabItem(e.tab, nullptr, select ? ImGuiTabItemFlags_SetSelected : 0)) {
-        const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
-        state.widget_rects.push_back({std::string("tab_") + panelName(e.panel), r0.x, r0.y, r1.x, r1.y});
+        markWidget(std::string("tab_") + panelName(e.panel));
         // The tab bar reports the user's clicks; a requested change wins for the frame it is made.
         if (!state.panel_change_requested) state.panel = e.panel;
         ImGui::Spacing();
         e.draw(state);
         ImGui::EndTabItem();
       } else {
-        const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
-        state.widget_rects.push_back({std::string("tab_") + panelName(e.panel), r0.x, r0.y, r1.x, r1.y});
+        markWidget(std::string("tab_") + panelName(e.panel));
       }
     }
     ImGui::EndTabBar();
@@ -112,6 +110,7 @@ void drawMainMenu(AppState& state) {
   const char* current_menu = nullptr;
   bool menu_open = false;
   for (const Action& a : actionTable()) {
+    if (!a.menu) continue;  // given values by a script or a panel only
     if (!current_menu || std::string(current_menu) != a.menu) {
       if (menu_open) ImGui::EndMenu();
       current_menu = a.menu;
@@ -140,7 +139,8 @@ void drawMainMenu(AppState& state) {
       }
     }
     if (a.id == ActionId::kSaveAs || a.id == ActionId::kExportXrayCsv || a.id == ActionId::kCancelJob ||
-        a.id == ActionId::kViewNegZ || a.id == ActionId::kViewDisputed) {
+        a.id == ActionId::kViewNegZ || a.id == ActionId::kZoomOut || a.id == ActionId::kViewDisputed ||
+        a.id == ActionId::kRedo) {
       ImGui::Separator();
     }
   }
@@ -199,7 +199,6 @@ void drawStatusBar(AppState& state) {
 }
 
 void drawFrame(AppState& state) {
-  state.widget_rects.clear();
   drawMainMenu(state);
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   const float top = vp->Pos.y + ImGui::GetFrameHeight();

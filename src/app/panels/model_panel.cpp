@@ -81,19 +81,17 @@ void modelSection(AppState& state) {
           "Vote mode casts rays along X, Y and Z and keeps a voxel when at least two agree. Disputed voxels are where "
           "the three disagreed: usually next to holes in the mesh.");
       if (snap.origin->disputed_count > 0)
-        ImGui::Checkbox("Show disputed voxels in the 3D view", &state.view.show_disputed);
+        actionCheckbox(state, ActionId::kViewDisputed, "Show disputed voxels in the 3D view");
     }
   }
 }
 
 void viewSection(AppState& state) {
   heading("Display");
-  int lut = state.view.lit ? 1 : 0;
-  ImGui::RadioButton("Classic (thesis table)", &lut, 0);
+  if (ImGui::RadioButton("Classic (thesis table)", !state.view.lit)) setToggle(state, ActionId::kViewLit, false);
   ImGui::SameLine();
-  ImGui::RadioButton("Lit", &lut, 1);
-  state.view.lit = lut == 1;
-  ImGui::Checkbox("Round points", &state.view.round_points);
+  if (ImGui::RadioButton("Lit", state.view.lit)) setToggle(state, ActionId::kViewLit, true);
+  actionCheckbox(state, ActionId::kViewRound, "Round points");
   helpMarker("Thesis 6.2 'point smooth': draws each voxel as a disc instead of a square.");
   bool auto_size = state.view.point_size_px <= 0.0f;
   if (ImGui::Checkbox("Automatic point size", &auto_size)) state.view.point_size_px = auto_size ? 0.0f : 3.0f;
@@ -101,7 +99,7 @@ void viewSection(AppState& state) {
       "Automatic: each point is as large as a voxel appears on screen (times sqrt 2), so the surface stays "
       "closed at any zoom.");
   if (!auto_size) ImGui::SliderFloat("Point size (px)", &state.view.point_size_px, 1.0f, 16.0f, "%.0f");
-  ImGui::Checkbox("Coarser points while moving", &state.view.lod);
+  actionCheckbox(state, ActionId::kViewLod, "Coarser points while moving");
   helpMarker(
       "While the view or a slider is dragged, draw a 2x, 4x ... downsampled model so the software renderer "
       "keeps up; the full model is drawn when the mouse is released.");

@@ -62,8 +62,8 @@ void drawSectionPanel(AppState& state) {
     ImGui::SameLine();
     const std::string label = std::string(1, char('X' + a)) + "##axis";
     if (ImGui::RadioButton(label.c_str(), &axis, a)) {
-      s.axis = Axis(a);
-      s.index = axisLength(state, s.axis) / 2;
+      const Axis to = Axis(a);
+      dispatchValues(state, ActionId::kSectionAt, {axisName(to), std::to_string(axisLength(state, to) / 2)});
     }
   }
   const int32_t n = axisLength(state, s.axis);
@@ -72,10 +72,7 @@ void drawSectionPanel(AppState& state) {
 
   ImGui::SetNextItemWidth(-1.0f);
   ImGui::SliderInt("##section_index", &s.index, 0, std::max(n - 1, 0), "index %d");
-  {
-    const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
-    state.widget_rects.push_back({"section_slider", r0.x, r0.y, r1.x, r1.y});
-  }
+  markWidget("section_slider");
   if (ImGui::IsItemActive()) {
     s.playing = false;
     state.viewport.interacting = true;  // coarse 3D points while dragging
@@ -88,10 +85,7 @@ void drawSectionPanel(AppState& state) {
   }
 
   // Step and play: the buttons dispatch the same actions as the Section menu and PgUp / PgDn / Space.
-  if (ImGui::Button("|<")) {
-    s.playing = false;
-    s.index = 0;
-  }
+  if (ImGui::Button("|<")) dispatchValues(state, ActionId::kSectionAt, {axisName(s.axis), "0"});
   ImGui::SameLine();
   if (ImGui::Button("<")) dispatch(state, ActionId::kSectionPrev);
   ImGui::SameLine();
@@ -100,8 +94,7 @@ void drawSectionPanel(AppState& state) {
   if (ImGui::Button(">")) dispatch(state, ActionId::kSectionNext);
   ImGui::SameLine();
   if (ImGui::Button(">|")) {
-    s.playing = false;
-    s.index = n - 1;
+    dispatchValues(state, ActionId::kSectionAt, {axisName(s.axis), std::to_string(n - 1)});
   }
   ImGui::SetNextItemWidth(120.0f);
   if (ImGui::InputInt("Step", &s.step)) s.step = std::clamp(s.step, 1, std::max(1, n));
@@ -126,7 +119,7 @@ void drawSectionPanel(AppState& state) {
   }
 
   heading("3D view");
-  ImGui::Checkbox("Cut away the model at the section", &state.view.cut_away);
+  actionCheckbox(state, ActionId::kViewCut, "Cut away the model at the section");
   if (state.view.cut_away) {
     int keep = state.view.keep_above ? 1 : 0;
     ImGui::RadioButton("Keep below", &keep, 0);
@@ -164,10 +157,7 @@ void drawSectionImage(AppState& state) {
   const ImVec2 origin(ImGui::GetCursorScreenPos().x + 20.0f, ImGui::GetCursorScreenPos().y);
   ImGui::SetCursorScreenPos(origin);
   ImGui::Image(textureId(state.section_texture.id()), size);
-  {
-    const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
-    state.widget_rects.push_back({"section_image", r0.x, r0.y, r1.x, r1.y});
-  }
+  markWidget("section_image");
   const bool hovered = ImGui::IsItemHovered();
   const bool clicked = ImGui::IsItemClicked(ImGuiMouseButton_Left);
   ImGui::SetCursorScreenPos(ImVec2(origin.x + size.x - 40.0f, origin.y + size.y + 2.0f));

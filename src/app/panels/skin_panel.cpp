@@ -24,8 +24,7 @@ void actionButton(AppState& state, ActionId id, const char* label, const char* r
   if (!enabled) ImGui::BeginDisabled();
   if (ImGui::Button(label, ImVec2(width, 0.0f))) dispatch(state, id);
   if (!enabled) ImGui::EndDisabled();
-  const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
-  state.widget_rects.push_back({rect_name, r0.x, r0.y, r1.x, r1.y});
+  markWidget(rect_name);
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
     const std::string sc = shortcutText(a.shortcut);
     ImGui::SetTooltip("%s%s%s%s", a.label, sc.empty() ? "" : " (", sc.c_str(), sc.empty() ? "" : ")");
@@ -106,7 +105,7 @@ void drawSkinPanel(AppState& state) {
   ImGui::PlotHistogram("##removed", values.data(), int(values.size()), 0, overlay, 0.0f, FLT_MAX,
                        ImVec2(ImGui::GetContentRegionAvail().x, 110.0f));
   const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
-  state.widget_rects.push_back({"skin_histogram", r0.x, r0.y, r1.x, r1.y});
+  markWidget("skin_histogram");
   if (layers > 0 && k > 0) {
     const float pad = ImGui::GetStyle().FramePadding.x;
     const float x = r0.x + pad + (r1.x - r0.x - 2.0f * pad) * float(k) / float(layers);

@@ -22,33 +22,24 @@ void drawXrayPanel(AppState& state) {
     return;
   }
   peeledNotice(state);
-  XrayParams& p = state.xray.params;
-  int axis = int(p.axis);
+  const XrayParams& p = state.xray.params;
+  // The buttons dispatch the X-ray action with the axis and mode they stand for, as a script's "xray y max" does.
+  const auto choose = [&state](Axis axis, XrayMode mode) {
+    dispatchValues(state, ActionId::kXray, {axisName(axis), xrayModeName(mode)});
+  };
   ImGui::TextUnformatted("Rays along");
   for (int a = 0; a < 3; ++a) {
     ImGui::SameLine();
     const std::string label = std::string(1, char('X' + a)) + "##xray_axis";
-    if (ImGui::RadioButton(label.c_str(), &axis, a)) p.axis = Axis(a);
+    if (ImGui::RadioButton(label.c_str(), int(p.axis) == a)) choose(Axis(a), p.mode);
   }
-  int mode = int(p.mode);
-  ImGui::RadioButton("Minimum", &mode, int(XrayMode::kMin));
-  {
-    const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
-    state.widget_rects.push_back({"xray_min", r0.x, r0.y, r1.x, r1.y});
+  const std::pair<XrayMode, const char*> modes[] = {
+      {XrayMode::kMin, "Minimum"}, {XrayMode::kMax, "Maximum"}, {XrayMode::kTotal, "Total"}};
+  for (const auto& [mode, label] : modes) {
+    if (mode != XrayMode::kMin) ImGui::SameLine();
+    if (ImGui::RadioButton(label, p.mode == mode)) choose(p.axis, mode);
+    markWidget(std::string("xray_") + xrayModeName(mode));
   }
-  ImGui::SameLine();
-  ImGui::RadioButton("Maximum", &mode, int(XrayMode::kMax));
-  {
-    const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
-    state.widget_rects.push_back({"xray_max", r0.x, r0.y, r1.x, r1.y});
-  }
-  ImGui::SameLine();
-  ImGui::RadioButton("Total", &mode, int(XrayMode::kTotal));
-  {
-    const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
-    state.widget_rects.push_back({"xray_total", r0.x, r0.y, r1.x, r1.y});
-  }
-  p.mode = XrayMode(mode);
   ImGui::TextWrapped("%s", p.mode == XrayMode::kMin   ? "Per ray: the thinnest wall it crosses."
                            : p.mode == XrayMode::kMax ? "Per ray: the thickest wall it crosses."
                                                       : "Per ray: all the material it crosses, added up.");
@@ -138,10 +129,7 @@ void drawXrayImage(AppState& state) {
   const ImVec2 map0 = ImGui::GetCursorScreenPos();
   ImGui::Image(textureId(state.xray_texture.id()), size);
   const bool hovered = ImGui::IsItemHovered();
-  {
-    const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
-    state.widget_rects.push_back({"xray_image", r0.x, r0.y, r1.x, r1.y});
-  }
+  markWidget("xray_image");
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->AddRect(ImVec2(map0.x - 1.0f, map0.y - 1.0f), ImVec2(map0.x + size.x + 1.0f, map0.y + size.y + 1.0f),
               IM_COL32(120, 120, 120, 255));

@@ -1,0 +1,227 @@
+#include "app/action_functions.h"
+
+#include <algorithm>
+#include <limits>
+#include <utility>
+
+#include "app/measure.h"
+#include "app/operations.h"
+#include "vox/core/text.h"
+
+namespace vox::app::actions {
+namespace {
+
+Error badValues(std::string message) { return makeError(ErrorCode::kInvalidArgument, std::move(message)); }
+
+void showPanel(AppState& s, Panel p) {
+  s.panel = p;
+  s.panel_change_requested = true;
+}
+
+void standardView(AppState& s, render::StandardView v) {
+  s.view.camera.setStandardView(v);
+  s.view.fit_pending = true;
+}
+
+void stepSection(AppState& s, int32_t delta) {
+  s.section.playing = false;
+  s.section.index += delta;  // clamped where the section is computed
+  showPanel(s, Panel::kSection);
+}
+
+// Peel actions are relative to the layer shown now.
+int32_t peeled(const AppState& s) { return s.doc.model ? s.doc.model->peeled : 0; }
+
+// A path for the file browser's purpose, as the browser's Save or Open button gives it (errors become dialogs).
+Status acceptPath(AppState& s, BrowserPurpose purpose, const ActionArgs& a) {
+  acceptBrowserPath(s, purpose, a.rest);
+  return Ok{};
+}
+
+}  // namespace
+
+// ---- Conditions ----
+bool hasModel(const AppState& s) { return s.doc.model.has_value() && !modelBusy(s); }
+bool hasMesh(const AppState& s) { return s.doc.mesh != nullptr && !s.load_job.active(); }
+bool hasSection(const AppState& s) { return !s.model.empty(); }
+// An X-ray export needs the X-ray computed (the X-ray panel computes it); until then the menu item is off.
+bool hasXray(const AppState& s) { return currentXray(s) != nullptr; }
+bool hasMeasure(const AppState& s) { return !measurePicks(s).empty(); }
+bool canPeel(const AppState& s) {
+  const int32_t layers = peelLayersAvailable(s);
+  return hasModel(s) && (layers < 0 || peeled(s) < layers - 1);
+}
+bool canPeelBack(const AppState& s) { return hasModel(s) && peeled(s) > 0; }
+bool hasDisputed(const AppState& s) {
+  return s.doc.model && s.doc.model->origin && s.doc.model->origin->disputed != nullptr;
+}
+
+// ---- File ----
+void open(AppState& s) { openBrowser(s, BrowserPurpose::kOpen); }
+Status openPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kOpen, a); }
+void save(AppState& s) { saveOrAsk(s); }
+void saveAs(AppState& s) { openBrowser(s, BrowserPurpose::kSaveModel); }
+Status savePath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kSaveModel, a); }
+void exportBinvox(AppState& s) { openBrowser(s, BrowserPurpose::kExportBinvox); }
+Status exportBinvoxPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportBinvox, a); }
+void exportView(AppState& s) { openBrowser(s, BrowserPurpose::kExportViewPng); }
+Status exportViewPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportViewPng, a); }
+void exportSection(AppState& s) { openBrowser(s, BrowserPurpose::kExportSectionPng); }
+Status exportSectionPath(AppState& s, const ActionArgs& a) {
+  return acceptPath(s, BrowserPurpose::kExportSectionPng, a);
+}
+void exportXray(AppState& s) { openBrowser(s, BrowserPurpose::kExportXrayPng); }
+Status exportXrayPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportXrayPng, a); }
+void exportCsv(AppState& s) { openBrowser(s, BrowserPurpose::kExportXrayCsv); }
+Status exportCsvPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportXrayCsv, a); }
+
+Status exportSize(AppState& s, const ActionArgs& a) {  // W H: the 3D view's export size (0 0: as shown)
+  int32_t w = 0, h = 0;
+  if (!parseNumber(a.words[0], w) || !parseNumber(a.words[1], h) || w < 0 || h < 0 || w > 8192 || h > 8192) {
+    return badValues("export-size takes a width and a height in pixels, 0 to 8192");
+  }
+  s.export_width = w;
+  s.export_height = h;
+  return Ok{};
+}
+
+// ---- Edit ----
+void measureClear(AppState& s) { clearMeasure(s); }
+
+Status measureAt(AppState& s, const ActionArgs& a) {  // I J K: pick a voxel as a click does
+  int32_t v[3] = {0, 0, 0};
+  for (int i = 0; i < 3; ++i) {
+    if (!parseNumber(a.words[size_t(i)], v[i])) return badValues("measure takes I J K, a voxel index");
+  }
+  if (!s.model.inBounds(v[0], v[1], v[2])) return badValues("measure: voxel outside the model's grid");
+  addMeasurePick(s, glm::ivec3(v[0], v[1], v[2]));
+  return Ok{};
+}
+
+// ---- Model ----
+void voxelizeDialog(AppState& s) { s.voxelize.open_requested = true; }
+
+Status voxelizeAt(AppState& s, const ActionArgs& a) {  // R [MODE], as the dialog's Voxelize button
+  VoxelizeParams p = s.voxelize.params;
+  if (!parseNumber(a.words[0], p.resolution) || p.resolution < 1) {
+    return badValues("resolution must be a positive integer, found '" + a.words[0] + "'");
+  }
+  p.voxel_size = 0.0;
+  if (a.words.size() > 1) {
+    auto mode = parseFillMode(a.words[1]);
+    if (!mode) return badValues("unknown mode '" + a.words[1] + "' (" + fillModeNames() + ")");
+    p.mode = *mode;
+  }
+  s.voxelize.params = p;
+  startVoxelize(s, p);
+  return Ok{};
+}
+
+// ---- View ----
+void fit(AppState& s) { s.view.fit_pending = true; }
+void viewIso(AppState& s) { standardView(s, render::StandardView::kIso); }
+void viewPosX(AppState& s) { standardView(s, render::StandardView::kPosX); }
+void viewNegX(AppState& s) { standardView(s, render::StandardView::kNegX); }
+void viewPosY(AppState& s) { standardView(s, render::StandardView::kPosY); }
+void viewNegY(AppState& s) { standardView(s, render::StandardView::kNegY); }
+void viewPosZ(AppState& s) { standardView(s, render::StandardView::kPosZ); }
+void viewNegZ(AppState& s) { standardView(s, render::StandardView::kNegZ); }
+
+Status viewAngles(AppState& s, const ActionArgs& a) {  // YAW PITCH in degrees; refits the model
+  double yaw = 0.0, pitch = 0.0;
+  if (!parseNumber(a.words[0], yaw) || !parseNumber(a.words[1], pitch))
+    return badValues("view YAW PITCH takes degrees");
+  s.view.camera.yaw_deg = yaw;
+  s.view.camera.pitch_deg = std::clamp(pitch, -90.0, 90.0);
+  s.view.fit_pending = true;
+  return Ok{};
+}
+
+void zoomIn(AppState& s) { s.view.camera.zoom(1.25); }
+void zoomOut(AppState& s) { s.view.camera.zoom(1.0 / 1.25); }
+Status zoomBy(AppState& s, const ActionArgs& a) {  // FACTOR: > 1 zooms in
+  double f = 0.0;
+  if (!parseNumber(a.words[0], f) || !(f > 0.0)) return badValues("zoom takes a positive factor");
+  s.view.camera.zoom(f);
+  return Ok{};
+}
+
+void toggleLit(AppState& s) { s.view.lit = !s.view.lit; }
+bool isLit(const AppState& s) { return s.view.lit; }
+void toggleRound(AppState& s) { s.view.round_points = !s.view.round_points; }
+bool isRound(const AppState& s) { return s.view.round_points; }
+void toggleLod(AppState& s) { s.view.lod = !s.view.lod; }
+bool isLod(const AppState& s) { return s.view.lod; }
+void toggleCut(AppState& s) { s.view.cut_away = !s.view.cut_away; }
+bool isCut(const AppState& s) { return s.view.cut_away; }
+void toggleDisputed(AppState& s) { s.view.show_disputed = !s.view.show_disputed; }
+bool isDisputed(const AppState& s) { return s.view.show_disputed; }
+
+void panelModel(AppState& s) { showPanel(s, Panel::kModel); }
+bool onModel(const AppState& s) { return s.panel == Panel::kModel; }
+void panelSection(AppState& s) { showPanel(s, Panel::kSection); }
+bool onSection(const AppState& s) { return s.panel == Panel::kSection; }
+void panelSkin(AppState& s) { showPanel(s, Panel::kSkin); }
+bool onSkin(const AppState& s) { return s.panel == Panel::kSkin; }
+void panelXray(AppState& s) { showPanel(s, Panel::kXray); }
+bool onXray(const AppState& s) { return s.panel == Panel::kXray; }
+void panelMass(AppState& s) { showPanel(s, Panel::kMass); }
+bool onMass(const AppState& s) { return s.panel == Panel::kMass; }
+
+// ---- Section ----
+void sectionPrev(AppState& s) { stepSection(s, -s.section.step); }
+void sectionNext(AppState& s) { stepSection(s, s.section.step); }
+void sectionPlay(AppState& s) {
+  s.section.playing = !s.section.playing;
+  showPanel(s, Panel::kSection);
+}
+bool isPlaying(const AppState& s) { return s.section.playing; }
+
+Status sectionAt(AppState& s, const ActionArgs& a) {  // AXIS INDEX: the slider's place, with the cut-away shown
+  auto axis = parseAxis(a.words[0]);
+  int32_t index = 0;
+  if (!axis) return badValues("unknown axis '" + a.words[0] + "' (x, y or z)");
+  if (!parseNumber(a.words[1], index)) return badValues("section needs an integer index");
+  const int32_t n = axisLength(s, *axis);
+  if (index < 0 || index >= n) {
+    return badValues("section index " + std::to_string(index) + " is outside 0.." + std::to_string(n - 1));
+  }
+  s.section.axis = *axis;
+  s.section.index = index;
+  s.view.cut_away = true;
+  showPanel(s, Panel::kSection);
+  return Ok{};
+}
+
+// ---- Skin ----
+void peelOne(AppState& s) { peelTo(s, peeled(s) + 1); }
+void peelN(AppState& s) { peelTo(s, peeled(s) + s.skin.peel_count); }
+Status peelCount(AppState& s, const ActionArgs& a) {  // N: peel N more layers
+  int32_t n = 0;
+  if (!parseNumber(a.words[0], n) || n < 0) return badValues("peel takes a layer count, found '" + a.words[0] + "'");
+  showPanel(s, Panel::kSkin);
+  peelTo(s, peeled(s) + n);
+  return Ok{};
+}
+void peelBack(AppState& s) { peelTo(s, peeled(s) - 1); }
+// Every layer but the last; peelTo clamps, and a queued peel resolves once the layers are known.
+void peelCore(AppState& s) { peelTo(s, std::numeric_limits<int32_t>::max()); }
+void peelReset(AppState& s) { peelTo(s, 0); }
+
+// ---- X-ray ----
+Status xrayAlong(AppState& s, const ActionArgs& a) {  // AXIS MODE, as the X-ray panel's buttons
+  auto axis = parseAxis(a.words[0]);
+  auto mode = parseXrayMode(a.words[1]);
+  if (!axis) return badValues("unknown axis '" + a.words[0] + "' (x, y or z)");
+  if (!mode) return badValues("unknown X-ray mode '" + a.words[1] + "' (min, max or total)");
+  s.xray.params = XrayParams{*axis, *mode};
+  showPanel(s, Panel::kXray);
+  return Ok{};
+}
+
+// ---- Help and dialogs ----
+void controls(AppState& s) { s.show_controls = true; }
+void about(AppState& s) { s.show_about = true; }
+void closeDialogs(AppState& s) { s.close_dialogs = true; }
+
+}  // namespace vox::app::actions

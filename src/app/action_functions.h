@@ -1,0 +1,101 @@
+#pragma once
+// What the action table's entries run (actions.cpp): small functions over the operations (operations.h), one per
+// entry, with and without values. Only the action table calls these; everything else dispatches. No ImGui here.
+#include "app/actions.h"
+
+namespace vox::app::actions {
+
+// ---- Conditions ----
+bool hasModel(const AppState& s);
+bool hasMesh(const AppState& s);
+bool hasSection(const AppState& s);
+bool hasXray(const AppState& s);
+bool hasMeasure(const AppState& s);
+bool canPeel(const AppState& s);
+bool canPeelBack(const AppState& s);
+bool hasDisputed(const AppState& s);
+
+// ---- File ----
+void open(AppState& s);
+Status openPath(AppState& s, const ActionArgs& a);
+void save(AppState& s);
+void saveAs(AppState& s);
+Status savePath(AppState& s, const ActionArgs& a);
+void exportBinvox(AppState& s);
+Status exportBinvoxPath(AppState& s, const ActionArgs& a);
+void exportView(AppState& s);
+Status exportViewPath(AppState& s, const ActionArgs& a);
+void exportSection(AppState& s);
+Status exportSectionPath(AppState& s, const ActionArgs& a);
+void exportXray(AppState& s);
+Status exportXrayPath(AppState& s, const ActionArgs& a);
+void exportCsv(AppState& s);
+Status exportCsvPath(AppState& s, const ActionArgs& a);
+Status exportSize(AppState& s, const ActionArgs& a);
+
+// ---- Edit ----
+void measureClear(AppState& s);
+Status measureAt(AppState& s, const ActionArgs& a);
+
+// ---- Model ----
+void voxelizeDialog(AppState& s);
+Status voxelizeAt(AppState& s, const ActionArgs& a);
+
+// ---- View ----
+void fit(AppState& s);
+void viewIso(AppState& s);
+void viewPosX(AppState& s);
+void viewNegX(AppState& s);
+void viewPosY(AppState& s);
+void viewNegY(AppState& s);
+void viewPosZ(AppState& s);
+void viewNegZ(AppState& s);
+Status viewAngles(AppState& s, const ActionArgs& a);
+void zoomIn(AppState& s);
+void zoomOut(AppState& s);
+Status zoomBy(AppState& s, const ActionArgs& a);
+void toggleLit(AppState& s);
+bool isLit(const AppState& s);
+void toggleRound(AppState& s);
+bool isRound(const AppState& s);
+void toggleLod(AppState& s);
+bool isLod(const AppState& s);
+void toggleCut(AppState& s);
+bool isCut(const AppState& s);
+void toggleDisputed(AppState& s);
+bool isDisputed(const AppState& s);
+void panelModel(AppState& s);
+bool onModel(const AppState& s);
+void panelSection(AppState& s);
+bool onSection(const AppState& s);
+void panelSkin(AppState& s);
+bool onSkin(const AppState& s);
+void panelXray(AppState& s);
+bool onXray(const AppState& s);
+void panelMass(AppState& s);
+bool onMass(const AppState& s);
+
+// ---- Section ----
+void sectionPrev(AppState& s);
+void sectionNext(AppState& s);
+void sectionPlay(AppState& s);
+bool isPlaying(const AppState& s);
+Status sectionAt(AppState& s, const ActionArgs& a);
+
+// ---- Skin ----
+void peelOne(AppState& s);
+void peelN(AppState& s);
+Status peelCount(AppState& s, const ActionArgs& a);
+void peelBack(AppState& s);
+void peelCore(AppState& s);
+void peelReset(AppState& s);
+
+// ---- X-ray ----
+Status xrayAlong(AppState& s, const ActionArgs& a);
+
+// ---- Help and dialogs ----
+void controls(AppState& s);
+void about(AppState& s);
+void closeDialogs(AppState& s);
+
+}  // namespace vox::app::actions
