@@ -4,7 +4,6 @@
 //   section_count/<axis>     filled count of one section, stepping through the indices like a slider
 //   section_image/<axis>     the same with the mask image (what the GUI shows)
 //   peel_one_layer           one skin layer
-//   peel_all                 skin removal until nothing is left (one iteration)
 //   depth_map                the same, keeping the depth bit planes; then depth_map_remaining_after (one layer
 //                            shown from the depth map)
 //   xray/<axis>/<mode>       X-ray along each axis in each mode
@@ -103,15 +102,6 @@ void peelOneLayer(benchmark::State& state) {
   }
 }
 
-void peelAll(benchmark::State& state) {
-  const vox::VoxelGrid& g = benchGrid();
-  for (auto _ : state) {
-    auto r = vox::peelSkin(g, vox::PeelParams{0, true});
-    state.counters["layers"] = double(r->removed_per_layer.size());
-    state.counters["core_voxels"] = double(r->core_voxels);
-  }
-}
-
 void depthMap(benchmark::State& state) {
   const vox::VoxelGrid& g = benchGrid();
   for (auto _ : state) {
@@ -164,12 +154,6 @@ BENCHMARK(sectionImage)
     ->MeasureProcessCPUTime()
     ->UseRealTime();
 BENCHMARK(peelOneLayer)->Name("peel_one_layer")->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
-BENCHMARK(peelAll)
-    ->Name("peel_all")
-    ->Unit(benchmark::kMillisecond)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime()
-    ->Iterations(1);
 BENCHMARK(depthMap)
     ->Name("depth_map")
     ->Unit(benchmark::kMillisecond)

@@ -206,35 +206,11 @@ VoxelGrid peelOneLayer(const VoxelGrid& grid, int64_t* removed) {
   return p.result();
 }
 
-Result<PeelResult> peelSkin(const VoxelGrid& grid, const PeelParams& params, const ProgressFn& progress) {
+Result<DepthMap> computeDepthMap(const VoxelGrid& grid, const PeelParams& params, const ProgressFn& progress) {
   if (!params.all && params.layers < 0) {
     return makeError(ErrorCode::kInvalidArgument,
                      "number of skin layers must be >= 0 (got " + std::to_string(params.layers) + ")");
   }
-  PeelResult res;
-  if (grid.empty()) {
-    res.remaining = grid;
-    return res;
-  }
-  const int64_t filled = grid.filledCount();
-  int64_t left = filled;
-  Peeler p(grid);
-  for (int32_t k = 1; left > 0 && (params.all || k <= params.layers); ++k) {
-    const int64_t removed = p.step();
-    if (removed == 0) break;  // cannot happen while voxels are left: a finite solid always has a surface
-    res.removed_per_layer.push_back(removed);
-    left -= removed;
-    const double fraction =
-        params.all ? removedFraction(filled - left, filled) : double(k) / double(std::max(params.layers, 1));
-    if (progress && !progress(std::min(fraction, 1.0))) return cancelled(k);
-  }
-  res.remaining = p.result();
-  res.remaining_count = left;
-  res.core_voxels = res.removed_per_layer.empty() ? 0 : res.removed_per_layer.back();
-  return res;
-}
-
-Result<DepthMap> computeDepthMap(const VoxelGrid& grid, const ProgressFn& progress, int32_t max_layers) {
   DepthMap dm;
   dm.original_ = grid;
   if (grid.empty()) {
@@ -242,24 +218,36 @@ Result<DepthMap> computeDepthMap(const VoxelGrid& grid, const ProgressFn& progre
     return dm;
   }
   const int64_t filled = grid.filledCount();
+  dm.original_count_ = filled;
   int64_t left = filled;
   Peeler p(grid);
-  for (int32_t k = 1; left > 0 && (max_layers < 0 || k <= max_layers); ++k) {
+  for (int32_t k = 1; left > 0 && (params.all || k <= params.layers); ++k) {
     while (dm.depth_bits_.size() < size_t(std::bit_width(uint32_t(k)))) {
       dm.depth_bits_.emplace_back(grid.dims(), grid.frame());
     }
     const int64_t removed = p.step(&dm.depth_bits_, k);
-    if (removed == 0) break;
+    if (removed == 0) break;  // cannot happen while voxels are left: a finite solid always has a surface
     dm.removed_per_layer_.push_back(removed);
     left -= removed;
     const double fraction =
-        max_layers < 0 ? removedFraction(filled - left, filled) : double(k) / double(std::max(max_layers, 1));
+        params.all ? removedFraction(filled - left, filled) : double(k) / double(std::max(params.layers, 1));
     if (progress && !progress(std::min(fraction, 1.0))) return cancelled(k);
   }
   dm.rest_ = p.result();
   dm.rest_count_ = left;
   for (VoxelGrid& plane : dm.depth_bits_) plane.releaseEmptyLayers();
   return dm;
+}
+
+PeelResult DepthMap::peeled(int32_t k) const {
+  PeelResult r;
+  k = std::clamp(k, 0, layers());
+  r.remaining = remainingAfter(k);
+  r.removed_per_layer.assign(removed_per_layer_.begin(), removed_per_layer_.begin() + k);
+  r.remaining_count = original_count_;
+  for (int64_t n : r.removed_per_layer) r.remaining_count -= n;
+  r.core_voxels = r.removed_per_layer.empty() ? 0 : r.removed_per_layer.back();
+  return r;
 }
 
 uint64_t estimateDepthMapBytes(const VoxelGrid& grid) {

@@ -17,7 +17,7 @@ std::string skinLayersMemoryProblem(const VoxelGrid& grid) {
   return "the skin layers of this " + dimsText(grid.dims()) + " model need up to " + formatBytes(need) +
          " with the model, more than " + formatBytes(limit) +
          " (80% of this machine's memory): voxelize at a lower resolution to peel in the window, "
-         "or peel with 'voxmod peel FILE --layers N' (about three copies of the grid)";
+         "or peel with 'voxmod peel FILE --layers N' (three copies of the grid and one per binary digit of N)";
 }
 
 const DepthMap* currentDepthMap(const AppState& state) {
@@ -48,7 +48,7 @@ void peelTo(AppState& state, int32_t layers) {
   next.base = cur.base;
   next.version = takeId(state);
   next.peeled = k;
-  next.grid = depth->remainingAfter(k);
+  next.grid = depth->peeled(k).remaining;
   next.grid.frame() = cur.base.frame();  // the depth map keeps the frame it was computed with; units may differ now
   next.origin = cur.origin;
   next.label = k == 0 ? "reset skin" : "peel to layer " + std::to_string(k);

@@ -63,7 +63,7 @@ void updateDocument(AppState& state) {
       if (const std::string why = skinLayersMemoryProblem(base); !why.empty()) {
         return Result<std::shared_ptr<const DepthMap>>(makeError(ErrorCode::kLimit, why));
       }
-      auto d = computeDepthMap(base, progress);
+      auto d = computeDepthMap(base, kPeelAll, progress);
       if (!d) return Result<std::shared_ptr<const DepthMap>>(d.error());
       return Result<std::shared_ptr<const DepthMap>>(std::make_shared<const DepthMap>(std::move(d).value()));
     });

@@ -84,8 +84,11 @@ int runPeel(const PeelOptions& o) {
   PeelParams p;
   p.layers = o.layers;
   p.all = o.all;
-  auto r = peelSkin(model->grid, p, terminalProgress("peeling"));
-  if (!r) return out.fail(r.error());
+  // The window's operation: the depth map, then what the layers asked for leave.
+  auto depth = computeDepthMap(model->grid, p, terminalProgress("peeling"));
+  if (!depth) return out.fail(depth.error());
+  const PeelResult result = depth->peeled(p.all ? depth->layers() : p.layers);
+  const PeelResult* r = &result;
   if (!o.out.empty()) {
     if (auto s = io::saveVoxelFile(r->remaining, o.out); !s) return out.fail(s.error());
   }

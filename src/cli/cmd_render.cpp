@@ -42,9 +42,9 @@ int runRender(const RenderOptions& o) {
   if (o.peel_depth > 0) {
     PeelParams peel;
     peel.layers = o.peel_depth;
-    auto peeled = peelSkin(grid, peel, terminalProgress("peeling"));
-    if (!peeled) return out.fail(peeled.error());
-    grid = std::move(peeled->remaining);
+    auto depth = computeDepthMap(grid, peel, terminalProgress("peeling"));
+    if (!depth) return out.fail(depth.error());
+    grid = depth->remainingAfter(peel.layers);
   }
 
   render::RenderParams p;

@@ -54,51 +54,60 @@ int64_t sectionCount(const VoxelGrid& grid, Axis axis, int32_t index);
 // Every filled voxel with at least one empty face neighbour (6-connectivity) is removed at once, decided on the
 // configuration before the layer. The depth of a voxel is the layer (1-based) that removes it; the last non-empty
 // layer is the core (the thickest region).
+//
+// One operation for the window and the CLI: computeDepthMap peels as PeelParams say and keeps every voxel's depth;
+// DepthMap::peeled(k) gives what k layers leave (the window steps through k, the CLI takes the one it was asked for).
+struct PeelParams {
+  int32_t layers = 1;  // ignored when all = true
+  bool all = false;    // until nothing is left
+};
+inline constexpr PeelParams kPeelAll{0, true};
+
+struct PeelResult {
+  VoxelGrid remaining;
+  std::vector<int64_t> removed_per_layer;  // of the layers peeled
+  int64_t remaining_count = 0;
+  int64_t core_voxels = 0;  // voxels of the last layer peeled (when everything was peeled: the thickest region)
+};
+
 class DepthMap {
  public:
   int32_t layers() const { return int32_t(removed_per_layer_.size()); }
   const std::vector<int64_t>& removedPerLayer() const { return removed_per_layer_; }
   int64_t coreVoxels() const { return removed_per_layer_.empty() ? 0 : removed_per_layer_.back(); }
-  // True when the peel ran until nothing was left (not stopped by max_layers).
+  // True when the peel ran until nothing was left (not stopped by PeelParams::layers).
   bool complete() const { return rest_count_ == 0; }
   // Voxels still present after peeling k layers (k = 0: the original; k >= layers(): empty for a complete map,
   // otherwise what was left after the last layer peeled). O(words x bits of depth), word operations per layer.
   VoxelGrid remainingAfter(int32_t k) const;
+  // What peeling k layers (clamped to 0..layers()) leaves, with the voxels each of those layers removed.
+  PeelResult peeled(int32_t k) const;
   // Voxels removed by layer k (1-based); the core is removedBy(layers()). Empty outside 1..layers().
   VoxelGrid removedBy(int32_t k) const;
-  // Depth of a voxel (0 for empty voxels, and for voxels a map stopped by max_layers did not reach).
+  // Depth of a voxel (0 for empty voxels, and for voxels a map stopped early did not reach).
   int32_t depthAt(int32_t x, int32_t y, int32_t z) const;
   // Bytes held by the depth bit planes and the remainder; the original grid is a snapshot shared with the caller.
   size_t memoryBytes() const;
 
  private:
-  friend Result<DepthMap> computeDepthMap(const VoxelGrid&, const ProgressFn&, int32_t);
+  friend Result<DepthMap> computeDepthMap(const VoxelGrid&, const PeelParams&, const ProgressFn&);
   std::vector<int64_t> removed_per_layer_;
   std::vector<VoxelGrid> depth_bits_;  // binary digits of the depth, one grid per bit, least significant first
   VoxelGrid original_;
   VoxelGrid rest_;  // voxels left after the last layer peeled (empty when complete)
   int64_t rest_count_ = 0;
+  int64_t original_count_ = 0;
 };
-// Peels up to max_layers (all when < 0). Cost: per layer, O(words spanned by what is left) (the peel tracks the
-// shrinking extent of every row), parallel over Z; memory: ceil(log2(layers + 1)) bit-plane grids.
-Result<DepthMap> computeDepthMap(const VoxelGrid& grid, const ProgressFn& progress = {}, int32_t max_layers = -1);
+// Peels params.layers layers (all with params.all). Cost: per layer, O(words spanned by what is left) (the peel
+// tracks the shrinking extent of every row), parallel over Z; memory: two working grids and
+// ceil(log2(layers + 1)) bit-plane grids.
+Result<DepthMap> computeDepthMap(const VoxelGrid& grid, const PeelParams& params = kPeelAll,
+                                 const ProgressFn& progress = {});
 // Upper bound on the bytes computeDepthMap holds at its peak for this grid: the bit planes of the deepest possible
 // depth (a voxel is never deeper than its distance to the grid's nearest face, so layers <= ceil(min(nx, ny, nz) / 2)),
 // plus the two grids of the peel in progress, each at most the grid's own memory. The window shows it and refuses
 // past the memory limit.
 uint64_t estimateDepthMapBytes(const VoxelGrid& grid);
-
-struct PeelParams {
-  int32_t layers = 1;  // ignored when all = true
-  bool all = false;
-};
-struct PeelResult {
-  VoxelGrid remaining;
-  std::vector<int64_t> removed_per_layer;
-  int64_t remaining_count = 0;
-  int64_t core_voxels = 0;  // voxels of the last non-empty layer peeled (with all = true: the thickest region)
-};
-Result<PeelResult> peelSkin(const VoxelGrid& grid, const PeelParams& params, const ProgressFn& progress = {});
 // One layer of skin removal, for callers that step. O(allocated words), parallel over Z; the input is not modified.
 VoxelGrid peelOneLayer(const VoxelGrid& grid, int64_t* removed = nullptr);
 

@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "grids.h"
+#include "peel_layers.h"
 #include "vox/analysis/analysis.h"
 
 namespace vox {
@@ -47,7 +48,7 @@ TEST(LargeGrid, peelAndDepthMapMatchBruteForce) {
     EXPECT_TRUE(test::sameVoxels(d->remainingAfter(k), step)) << k;
     EXPECT_EQ(d->removedPerLayer()[size_t(k - 1)], expect_removed) << k;
   }
-  auto all = peelSkin(g, PeelParams{0, true});
+  auto all = test::peelLayers(g, PeelParams{0, true});
   ASSERT_TRUE(all.ok());
   EXPECT_EQ(all->removed_per_layer, d->removedPerLayer());
   EXPECT_EQ(std::accumulate(all->removed_per_layer.begin(), all->removed_per_layer.end(), int64_t(0)), g.filledCount());

@@ -3,6 +3,7 @@
 #include <bit>
 
 #include "grids.h"
+#include "peel_layers.h"
 #include "vox/analysis/analysis.h"
 
 namespace vox {
@@ -16,7 +17,7 @@ int64_t cube(int64_t s) { return s > 0 ? s * s * s : 0; }
 // A cube of side n peels in ceil(n / 2) layers; layer k (0-based) removes (n - 2k)^3 - (n - 2k - 2)^3 voxels.
 void expectCubePeel(Dims dims, glm::ivec3 lo, int n) {
   const VoxelGrid g = boxGrid(dims, lo, lo + glm::ivec3(n));
-  auto r = peelSkin(g, PeelParams{0, true});
+  auto r = test::peelLayers(g, PeelParams{0, true});
   ASSERT_TRUE(r.ok());
   ASSERT_EQ(int(r->removed_per_layer.size()), (n + 1) / 2) << n;
   for (int k = 0; k < (n + 1) / 2; ++k) {
@@ -51,7 +52,7 @@ TEST(Peel, oneLayerMatchesBruteForce) {
 TEST(Peel, doesNotModifyItsInput) {
   const VoxelGrid g = boxGrid(Dims{20, 20, 20}, {2, 2, 2}, {18, 18, 18});
   const VoxelGrid copy = g;  // shares the layers
-  auto r = peelSkin(g, PeelParams{3, false});
+  auto r = test::peelLayers(g, PeelParams{3, false});
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(g.filledCount(), 16 * 16 * 16);
   for (int z = 0; z < 20; ++z) EXPECT_TRUE(g.sharesLayerWith(copy, z));
@@ -68,7 +69,7 @@ TEST(Peel, nLayersEqualsNSuccessiveSingleLayers) {
     if (r == 0) break;
     removed.push_back(r);
   }
-  auto res = peelSkin(g, PeelParams{5, false});
+  auto res = test::peelLayers(g, PeelParams{5, false});
   ASSERT_TRUE(res.ok());
   EXPECT_EQ(res->removed_per_layer, removed);
   EXPECT_TRUE(sameVoxels(res->remaining, step));
@@ -78,7 +79,7 @@ TEST(Peel, nLayersEqualsNSuccessiveSingleLayers) {
 
 TEST(Peel, allLayersRemoveEverythingAndReportTheCore) {
   const VoxelGrid g = test::randomBoxes(Dims{66, 50, 40}, 10, 9);
-  auto r = peelSkin(g, PeelParams{0, true});
+  auto r = test::peelLayers(g, PeelParams{0, true});
   ASSERT_TRUE(r.ok());
   int64_t sum = 0;
   for (int64_t v : r->removed_per_layer) {
@@ -92,7 +93,7 @@ TEST(Peel, allLayersRemoveEverythingAndReportTheCore) {
 
 TEST(Peel, moreLayersThanTheModelHasStopsWhenEmpty) {
   const VoxelGrid g = boxGrid(Dims{8, 8, 8}, {0, 0, 0}, {4, 4, 4});
-  auto r = peelSkin(g, PeelParams{10, false});
+  auto r = test::peelLayers(g, PeelParams{10, false});
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(r->removed_per_layer, (std::vector<int64_t>{56, 8}));
   EXPECT_EQ(r->remaining_count, 0);
@@ -100,11 +101,11 @@ TEST(Peel, moreLayersThanTheModelHasStopsWhenEmpty) {
 
 TEST(Peel, zeroLayersKeepsTheModelAndNegativeIsAnError) {
   const VoxelGrid g = boxGrid(Dims{8, 8, 8}, {0, 0, 0}, {4, 4, 4});
-  auto r = peelSkin(g, PeelParams{0, false});
+  auto r = test::peelLayers(g, PeelParams{0, false});
   ASSERT_TRUE(r.ok());
   EXPECT_TRUE(r->removed_per_layer.empty());
   EXPECT_EQ(r->remaining_count, 64);
-  auto bad = peelSkin(g, PeelParams{-1, false});
+  auto bad = test::peelLayers(g, PeelParams{-1, false});
   ASSERT_FALSE(bad.ok());
   EXPECT_EQ(bad.error().code, ErrorCode::kInvalidArgument);
 }
@@ -112,7 +113,7 @@ TEST(Peel, zeroLayersKeepsTheModelAndNegativeIsAnError) {
 TEST(Peel, progressCanCancel) {
   const VoxelGrid g = boxGrid(Dims{30, 30, 30}, {0, 0, 0}, {30, 30, 30});
   int calls = 0;
-  auto r = peelSkin(g, PeelParams{0, true}, [&](double f) {
+  auto r = test::peelLayers(g, PeelParams{0, true}, [&](double f) {
     EXPECT_GE(f, 0.0);
     EXPECT_LE(f, 1.0);
     return ++calls < 3;
@@ -120,7 +121,7 @@ TEST(Peel, progressCanCancel) {
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error().code, ErrorCode::kCancelled);
   EXPECT_EQ(calls, 3);
-  auto d = computeDepthMap(g, [](double) { return false; });
+  auto d = computeDepthMap(g, kPeelAll, [](double) { return false; });
   ASSERT_FALSE(d.ok());
   EXPECT_EQ(d.error().code, ErrorCode::kCancelled);
 }
@@ -185,7 +186,7 @@ TEST(DepthMap, depthIsTheL1DistanceToEmptySpace) {
 
 TEST(DepthMap, stoppedByMaxLayersKeepsTheRest) {
   const VoxelGrid g = boxGrid(Dims{20, 20, 20}, {0, 0, 0}, {20, 20, 20});
-  auto d = computeDepthMap(g, {}, 3);
+  auto d = computeDepthMap(g, PeelParams{3, false});
   ASSERT_TRUE(d.ok());
   EXPECT_EQ(d->layers(), 3);
   EXPECT_FALSE(d->complete());

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/test_support.h"
+#include "peel_layers.h"
 #include "vox/analysis/analysis.h"
 #include "vox/io/voxel_file.h"
 
@@ -107,7 +108,7 @@ TEST(ReferenceAnalysis, peelLayers) {
   for (const Case& c : referenceCases(shared)) {
     const json& p = c.ref.at("peel");
     const std::vector<int64_t> want = p.at("removed_per_layer");
-    auto r = peelSkin(c.grid, PeelParams{0, true});
+    auto r = test::peelLayers(c.grid, PeelParams{0, true});
     ASSERT_TRUE(r.ok());
     EXPECT_EQ(r->removed_per_layer, want) << c.name;
     EXPECT_EQ(int64_t(r->removed_per_layer.size()), p.at("layers").get<int64_t>()) << c.name;
