@@ -1,6 +1,7 @@
 // The analysis subcommands (SPEC section 5): section, peel, xray, mass. Each binds its flags to the same params
 // struct the GUI edits (vox/analysis/analysis.h) and FILE may be a mesh, voxelized on the fly.
 #include <cmath>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 
@@ -35,13 +36,27 @@ std::string materialNames() {
   return names;
 }
 
-CLI::Validator axisCheck() { return CLI::IsMember({"x", "y", "z"}); }
+// Words to enum values, read by the parsers analysis gives them (parseAxis, parseXrayMode), so the flags bind
+// straight to the params structs the window edits.
+template <class E>
+CLI::Validator enumWords(std::optional<E> (*parse)(const std::string&), const std::string& names) {
+  return CLI::Validator(
+      [parse, names](std::string& word) -> std::string {
+        const std::optional<E> value = parse(word);
+        if (!value) return "'" + word + "' is not one of " + names;
+        word = std::to_string(int(*value));
+        return {};
+      },
+      names);
+}
+CLI::Validator axisWords() { return enumWords<Axis>(parseAxis, "x|y|z"); }
+CLI::Validator xrayModeWords() { return enumWords<XrayMode>(parseXrayMode, "min|max|total"); }
 
 // ---- section ----
 struct SectionOptions {
   Common c;
-  std::string axis = "z", out;
-  int32_t index = 0;
+  SectionParams params;
+  std::string out;
   int32_t scale = 1;
 };
 
@@ -50,22 +65,20 @@ int runSection(const SectionOptions& o) {
   if (const std::string why = pngOutputProblem(o.out); !why.empty()) return out.fail(kExitUsage, why);
   auto model = loadModel(o.c.file, o.c.mesh, out);
   if (!model) return out.fail(model.error());
-  SectionParams p;
-  p.axis = parseAxis(o.axis).value();
-  p.index = o.index;
-  auto section = computeSection(model->grid, p);
+  auto section = computeSection(model->grid, o.params);
   if (!section) return out.fail(section.error());
   if (auto s = io::savePng(io::sectionPicture(section->mask, o.scale), o.out); !s) return out.fail(s.error());
   auto& d = out.data();
-  d["axis"] = o.axis;
-  d["index"] = o.index;
+  d["axis"] = axisName(o.params.axis);
+  d["index"] = o.params.index;
   d["position"] = section->position;
   d["filled"] = section->filled;
   d["width"] = section->mask.width;
   d["height"] = section->mask.height;
   d["output"] = o.out;
-  out.say("section " + o.axis + " = " + std::to_string(o.index) + " (at " + significant(section->position) + " " +
-          model->grid.frame().units + "): " + std::to_string(section->filled) + " filled voxels; wrote " + o.out);
+  out.say(std::string("section ") + axisName(o.params.axis) + " = " + std::to_string(o.params.index) + " (at " +
+          significant(section->position) + " " + model->grid.frame().units + "): " + std::to_string(section->filled) +
+          " filled voxels; wrote " + o.out);
   return out.finish();
 }
 
@@ -113,7 +126,8 @@ int runPeel(const PeelOptions& o) {
 // ---- xray ----
 struct XrayOptions {
   Common c;
-  std::string axis = "z", mode = "total", out, csv;
+  XrayParams params;
+  std::string out, csv;
   int32_t scale = 1;
 };
 
@@ -122,10 +136,7 @@ int runXray(const XrayOptions& o) {
   if (const std::string why = pngOutputProblem(o.out); !why.empty()) return out.fail(kExitUsage, why);
   auto model = loadModel(o.c.file, o.c.mesh, out);
   if (!model) return out.fail(model.error());
-  XrayParams p;
-  p.axis = parseAxis(o.axis).value();
-  p.mode = parseXrayMode(o.mode).value();
-  auto x = computeXray(model->grid, p);
+  auto x = computeXray(model->grid, o.params);
   if (!x) return out.fail(x.error());
   // The image and the CSV are written as one: both or, on any failure, neither.
   auto png = io::encodePng(io::drawScalarMapFigure(x->thickness, x->max, xrayLegend(*x), o.scale).image, o.out);
@@ -141,8 +152,8 @@ int runXray(const XrayOptions& o) {
   const double metres = metresPerUnit(model->grid.frame().units);
   const double to_mm = metres > 0 ? metres * 1000.0 : 1.0;
   auto& d = out.data();
-  d["axis"] = o.axis;
-  d["mode"] = o.mode;
+  d["axis"] = axisName(o.params.axis);
+  d["mode"] = xrayModeName(o.params.mode);
   d["units"] = metres > 0 ? std::string("mm") : model->grid.frame().units;
   d["rays_hit"] = x->rays_hit;
   d["min"] = x->min;
@@ -153,9 +164,10 @@ int runXray(const XrayOptions& o) {
   d["mean_mm"] = x->mean * h * to_mm;
   d["output"] = o.out;
   if (!o.csv.empty()) d["csv"] = o.csv;
-  out.say("x-ray " + o.mode + " along " + o.axis + ": " + std::to_string(x->rays_hit) + " rays hit; min " +
-          std::to_string(x->min) + ", max " + std::to_string(x->max) + ", mean " + significant(x->mean) +
-          " voxels (voxel size " + significant(h) + " " + model->grid.frame().units + "); wrote " + o.out);
+  out.say(std::string("x-ray ") + xrayModeName(o.params.mode) + " along " + axisName(o.params.axis) + ": " +
+          std::to_string(x->rays_hit) + " rays hit; min " + std::to_string(x->min) + ", max " + std::to_string(x->max) +
+          ", mean " + significant(x->mean) + " voxels (voxel size " + significant(h) + " " + model->grid.frame().units +
+          "); wrote " + o.out);
   return out.finish();
 }
 
@@ -246,8 +258,8 @@ int runMass(const MassOptions& o) {
 void addSectionCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<SectionOptions>();
   addCommon(sub, o->c);
-  sub.add_option("--axis", o->axis, "Section normal: x, y or z")->required()->check(axisCheck());
-  sub.add_option("--index", o->index, "Voxel index along the axis (0-based)")->required();
+  sub.add_option("--axis", o->params.axis, "Section normal: x, y or z")->required()->transform(axisWords());
+  sub.add_option("--index", o->params.index, "Voxel index along the axis (0-based)")->required();
   sub.add_option("-o,--output", o->out, "Output PNG")->required();
   sub.add_option("--scale", o->scale, "Pixels per voxel (default 1)")->check(CLI::Range(1, 64));
   sub.callback([o, &ctx] { ctx.exit_code = runSection(*o); });
@@ -274,10 +286,10 @@ void addPeelCommand(CLI::App& sub, CommandContext& ctx) {
 void addXrayCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<XrayOptions>();
   addCommon(sub, o->c, "--fill-mode");  // --mode is the X-ray mode here (SPEC section 5)
-  sub.add_option("--axis", o->axis, "Ray direction: x, y or z")->required()->check(axisCheck());
-  sub.add_option("--mode", o->mode, "Per ray: min, max or total thickness")
+  sub.add_option("--axis", o->params.axis, "Ray direction: x, y or z")->required()->transform(axisWords());
+  sub.add_option("--mode", o->params.mode, "Per ray: min, max or total thickness")
       ->required()
-      ->check(CLI::IsMember({"min", "max", "total"}));
+      ->transform(xrayModeWords());
   sub.add_option("-o,--output", o->out, "Output PNG (colour scale and legend)")->required();
   sub.add_option("--csv", o->csv, "Also write the per-ray thickness as CSV");
   sub.add_option("--scale", o->scale, "Pixels per ray (default 1)")->check(CLI::Range(1, 64));
