@@ -96,9 +96,9 @@ void PointCloud::assemble(PointBuffer& out) const {
   }
 }
 
-Box3 PointCloud::bounds() const { return bounds(Section{}); }
+Box3 PointCloud::bounds() const { return bounds(CutAway{}); }
 
-Box3 PointCloud::bounds(const Section& section) const {
+Box3 PointCloud::bounds(const CutAway& section) const {
   glm::ivec3 lo(std::numeric_limits<int32_t>::max()), hi(std::numeric_limits<int32_t>::min());
   const int axis = int(section.axis) - 1;
   for (const LayerSlice& s : layers_) {
@@ -149,13 +149,13 @@ std::array<bool, kCodeGroups> visibleCodes(const std::array<bool, 6>& visible_di
   return v;
 }
 
-bool keepsPoint(const Section& section, const glm::ivec3& voxel) {
+bool keepsPoint(const CutAway& section, const glm::ivec3& voxel) {
   if (!section.active()) return true;
   const int32_t c = voxel[int(section.axis) - 1];
   return section.side == SectionSide::kBelow ? c < section.index : c > section.index;
 }
 
-std::vector<PackedPoint> sectionPoints(const VoxelGrid& grid, const Section& section) {
+std::vector<PackedPoint> sectionPoints(const VoxelGrid& grid, const CutAway& section) {
   std::vector<PackedPoint> out;
   if (!section.active() || grid.empty()) return out;
   const int32_t i = section.index;

@@ -60,7 +60,7 @@ void uploadPoints(GLuint vbo, int64_t& capacity, const PackedPoint* points, int6
 }
 
 // The code a voxel has when its only free face is the cut face: shades the section like a flat face.
-uint8_t cutFaceCode(const Section& section) {
+uint8_t cutFaceCode(const CutAway& section) {
   // kBelow keeps coordinates < index, so the cut face looks towards +axis; kAbove towards -axis.
   const bool plus = section.side == SectionSide::kBelow;
   uint8_t bit = 0;
@@ -245,7 +245,7 @@ DrawStats PointRenderer::draw(const Camera& camera, int32_t width, int32_t heigh
   stats.point_size_px =
       params.point_size_px > 0.0 ? params.point_size_px : std::clamp(point_scale / depth_at_target, 1.0, 255.0);
 
-  Section section = params.section;
+  CutAway section = params.section;
   if (section.active()) section.index = section.index >> k;  // indices >= 0 (validated by callers)
 
   const GLuint program = programs_[params.round_points ? 1 : 0];

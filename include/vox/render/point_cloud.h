@@ -32,7 +32,7 @@ inline constexpr uint8_t kPointFlagCut = 1;
 
 inline constexpr int kCodeGroups = 64;  // group 63 (interior) is always empty
 
-struct Section;  // below
+struct CutAway;  // below
 
 // The surface points of one Z layer, sorted by code: points[group_first[c], group_first[c + 1]) have code c.
 struct LayerSlice {
@@ -76,7 +76,7 @@ class PointCloud {
   Box3 bounds() const;
   // The same for what a section leaves: the kept half and the section plane (whose filled voxels the surface points
   // of the plane enclose). bounds() when nothing is kept or without a section.
-  Box3 bounds(const Section& section) const;
+  Box3 bounds(const CutAway& section) const;
 
   // Concatenates the layers in draw order (see PointBuffer). O(points).
   void assemble(PointBuffer& out) const;
@@ -113,14 +113,14 @@ std::array<bool, 6> visibleFaceDirections(const Camera& camera, const Box3& box)
 // on a closed surface its points are hidden behind nearer ones and can be skipped.
 std::array<bool, kCodeGroups> visibleCodes(const std::array<bool, 6>& visible_directions);
 
-// ---- Section (cut-away) ----
+// ---- Cut-away (a section plane in the 3D view) ----
 
 enum class SectionAxis { kNone, kX, kY, kZ };
 // Which half is kept: voxels with coordinate < index (kBelow) or > index (kAbove) along the axis. The filled voxels
 // of the plane coordinate == index are drawn as the cut face.
 enum class SectionSide { kBelow, kAbove };
 
-struct Section {
+struct CutAway {
   SectionAxis axis = SectionAxis::kNone;
   int32_t index = 0;  // voxel index along the axis
   SectionSide side = SectionSide::kBelow;
@@ -129,12 +129,12 @@ struct Section {
 
 // Whether a surface point at these voxel coordinates is drawn under this section (mirrors points.vert). Always true
 // without a section.
-bool keepsPoint(const Section& section, const glm::ivec3& voxel);
+bool keepsPoint(const CutAway& section, const glm::ivec3& voxel);
 
 // The cut face: every filled voxel of the section plane (interior or not), flagged kPointFlagCut, with the code the
 // voxel has in the grid. Empty without a section or when the plane lies outside the grid. Cost O(plane area) bit
 // reads for X and Y sections, O(layer words) for Z.
-std::vector<PackedPoint> sectionPoints(const VoxelGrid& grid, const Section& section);
+std::vector<PackedPoint> sectionPoints(const VoxelGrid& grid, const CutAway& section);
 
 // ---- Level of detail ----
 

@@ -34,7 +34,7 @@ struct DrawParams {
   double ambient = kDefaultAmbient;               // kLit: intensity of faces turned away from the light
   // Section face colour at full intensity; it is shaded like a surface whose only free face is the cut face.
   glm::vec3 cut_colour{0.95f, 0.35f, 0.25f};
-  Section section;
+  CutAway section;
   double point_size_px = 0.0;  // > 0: fixed point diameter in pixels; 0: closedPointSize (shading.h), which keeps
                                // the surface closed
   bool round_points = false;   // thesis "point smooth": round instead of square points
@@ -106,7 +106,7 @@ class PointRenderer {
   Box3 bounds_;
   uint64_t grid_version_ = 0;  // bumped by setGrid and updateLayers
   // The section points are recomputed only when the section, the level or the grid changes.
-  Section cut_section_;
+  CutAway cut_section_;
   int cut_level_ = -1;
   uint64_t cut_version_ = ~uint64_t(0);
   int64_t cut_count_ = 0;

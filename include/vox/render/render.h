@@ -32,7 +32,7 @@ struct RenderParams {
   Projection projection = Projection::kPerspective;
   // Magnification relative to fitting the model's bounding sphere to the image (1 = fit, 2 = twice as large).
   double zoom = 1.0;
-  Section section;             // cut-away: keep one side of a plane along X, Y or Z and show the cut face
+  CutAway section;             // cut-away: keep one side of a plane along X, Y or Z and show the cut face
   double point_size_px = 0.0;  // > 0 overrides the automatic point size (projected voxel size, thesis 6.2)
   bool round_points = false;   // thesis "point smooth"
   Rgba8 background{0, 0, 0, 255};

@@ -153,13 +153,13 @@ TEST(PointCloud, sectionBoundsHoldTheKeptHalfAndTheCutLayer) {
   fillBox(g, {30, 2, 20}, {45, 4, 30});  // a second block, only at z >= 20
   const PointCloud cloud(g);
   EXPECT_EQ(cloud.bounds().min, glm::dvec3(5, 2, 9));
-  const Box3 below = cloud.bounds(Section{SectionAxis::kZ, 15, SectionSide::kBelow});
+  const Box3 below = cloud.bounds(CutAway{SectionAxis::kZ, 15, SectionSide::kBelow});
   EXPECT_EQ(below.min, glm::dvec3(5, 7, 9));  // the second block is cut away entirely
   EXPECT_EQ(below.max, glm::dvec3(20, 33, 16));
-  const Box3 above = cloud.bounds(Section{SectionAxis::kZ, 15, SectionSide::kAbove});
+  const Box3 above = cloud.bounds(CutAway{SectionAxis::kZ, 15, SectionSide::kAbove});
   EXPECT_EQ(above.min, glm::dvec3(5, 2, 15));
   EXPECT_EQ(above.max, glm::dvec3(45, 33, 30));
-  const Box3 none = cloud.bounds(Section{SectionAxis::kX, 2, SectionSide::kBelow});  // nothing kept
+  const Box3 none = cloud.bounds(CutAway{SectionAxis::kX, 2, SectionSide::kBelow});  // nothing kept
   EXPECT_EQ(none.min, cloud.bounds().min);
 }
 
@@ -246,24 +246,24 @@ TEST(GroupCulling, perspectiveTestNeverDropsAFrontFacingVoxel) {
 
 // ---- Section ----
 
-TEST(Section, keepsStrictlyOneSide) {
-  const Section none;
+TEST(CutAway, keepsStrictlyOneSide) {
+  const CutAway none;
   EXPECT_TRUE(keepsPoint(none, {5, 5, 5}));
-  const Section below{SectionAxis::kY, 10, SectionSide::kBelow};
+  const CutAway below{SectionAxis::kY, 10, SectionSide::kBelow};
   EXPECT_TRUE(keepsPoint(below, {99, 9, 99}));
   EXPECT_FALSE(keepsPoint(below, {0, 10, 0}));  // the plane itself is drawn as the cut face
   EXPECT_FALSE(keepsPoint(below, {0, 11, 0}));
-  const Section above{SectionAxis::kZ, 3, SectionSide::kAbove};
+  const CutAway above{SectionAxis::kZ, 3, SectionSide::kAbove};
   EXPECT_TRUE(keepsPoint(above, {0, 0, 4}));
   EXPECT_FALSE(keepsPoint(above, {0, 0, 3}));
   EXPECT_FALSE(keepsPoint(above, {0, 0, 2}));
 }
 
-TEST(Section, cutFaceIsEveryFilledVoxelOfThePlane) {
+TEST(CutAway, cutFaceIsEveryFilledVoxelOfThePlane) {
   const VoxelGrid g = ball(40, 15.7);
   for (SectionAxis axis : {SectionAxis::kX, SectionAxis::kY, SectionAxis::kZ}) {
     for (int32_t index : {3, 20, 27}) {
-      const Section s{axis, index, SectionSide::kBelow};
+      const CutAway s{axis, index, SectionSide::kBelow};
       const auto pts = sectionPoints(g, s);
       int64_t expected = 0;
       for (int32_t a = 0; a < 40; ++a)
@@ -283,11 +283,11 @@ TEST(Section, cutFaceIsEveryFilledVoxelOfThePlane) {
     }
   }
   // Interior voxels of the plane are included (they are what makes the cut face closed).
-  const auto mid = sectionPoints(g, Section{SectionAxis::kZ, 20, SectionSide::kAbove});
+  const auto mid = sectionPoints(g, CutAway{SectionAxis::kZ, 20, SectionSide::kAbove});
   EXPECT_TRUE(std::any_of(mid.begin(), mid.end(), [](const PackedPoint& p) { return p.code == 63; }));
-  EXPECT_TRUE(sectionPoints(g, Section{SectionAxis::kX, 40, SectionSide::kBelow}).empty());
-  EXPECT_TRUE(sectionPoints(g, Section{SectionAxis::kZ, -1, SectionSide::kBelow}).empty());
-  EXPECT_TRUE(sectionPoints(g, Section{}).empty());
+  EXPECT_TRUE(sectionPoints(g, CutAway{SectionAxis::kX, 40, SectionSide::kBelow}).empty());
+  EXPECT_TRUE(sectionPoints(g, CutAway{SectionAxis::kZ, -1, SectionSide::kBelow}).empty());
+  EXPECT_TRUE(sectionPoints(g, CutAway{}).empty());
 }
 
 // ---- Level of detail ----
