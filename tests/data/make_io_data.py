@@ -3,7 +3,7 @@
 scripts/fuzz.sh uses as seeds): tests/data/malformed/ holds files every reader must refuse with a clear message,
 tests/data/quirks/ holds valid files in unusual shapes that must load.
 
-The .vxm files are written here from docs/file-format.md, independently of src/io/voxel_file.cpp, so the test
+The .vxm files are written here from docs/file-format.md, independently of src/io/vxm.cpp, so the test
 also checks that the document and the code agree. Run from anywhere; the output is deterministic.
 """
 import os
