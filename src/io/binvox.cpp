@@ -178,11 +178,15 @@ Status encodeBinvoxTo(const VoxelGrid& grid, ByteSink& sink) {
   return out.flush();
 }
 
-}  // namespace
+// The ASCII header, up to and including its "data" line.
+struct BinvoxHeader {
+  Dims dims;
+  glm::dvec3 translate;
+  double scale = 1.0;
+  size_t data_at = 0;  // offset of the first (value, count) pair
+};
 
-std::vector<uint8_t> encodeBinvox(const VoxelGrid& grid) { return encodeToMemory(encodeBinvoxTo, grid); }
-
-Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string& name, uint64_t memory_limit_bytes) {
+Result<BinvoxHeader> parseBinvoxHeader(std::span<const uint8_t> bytes, const std::string& name) {
   const char* text = reinterpret_cast<const char*>(bytes.data());
   const size_t size = bytes.size();
   size_t pos = 0;
@@ -256,7 +260,15 @@ Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string
   }
   if (!have_data) return makeError(ErrorCode::kParse, name + ": binvox header has no 'data' line");
   if (!have_dim) return makeError(ErrorCode::kParse, name + ": binvox header has no 'dim' line");
+  return BinvoxHeader{dims, translate, scale, pos};
+}
 
+// Pass 1: the runs must cover exactly D^3 voxels with values 0/1; note the Z layers that filled voxels touch.
+Result<std::vector<uint8_t>> binvoxLayersUsed(std::span<const uint8_t> bytes, const BinvoxHeader& h,
+                                              const std::string& name, uint64_t memory_limit_bytes) {
+  const Dims& dims = h.dims;
+  const size_t pos = h.data_at;
+  const size_t size = bytes.size();
   const uint64_t total = uint64_t(dims.count());
   const uint64_t width = uint64_t(dims.ny), height = uint64_t(dims.nz);
   const uint8_t* data = bytes.data() + pos;
@@ -265,54 +277,51 @@ Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string
   auto dataError = [&](ErrorCode code, const std::string& what) {
     return makeError(code, name + ": binvox data " + what);
   };
-
-  // Pass 1: the runs must cover exactly D^3 voxels with values 0/1; note the Z layers that filled voxels touch.
   std::vector<uint8_t> layer_used(size_t(dims.nz), 0);
-  {
-    uint64_t covered = 0;
-    for (size_t i = 0; i < pairs; ++i) {
-      const uint8_t v = data[2 * i], n = data[2 * i + 1];
-      if (v > 1) {
-        return dataError(ErrorCode::kParse, "has value " + std::to_string(v) + " at byte " +
-                                                std::to_string(pos + 2 * i) + " (values are 0 or 1)");
-      }
-      if (n == 0) {
-        return dataError(ErrorCode::kParse, "has a run of length 0 at byte " + std::to_string(pos + 2 * i + 1) +
-                                                " (run lengths are 1..255)");
-      }
-      if (n > total - covered) {
-        return dataError(ErrorCode::kParse, "runs past the " + std::to_string(total) + " voxels of the grid (at byte " +
-                                                std::to_string(pos + 2 * i) + ")");
-      }
-      if (v == 1) {
-        // Consecutive voxels share (x, z) for up to `width` voxels; a run of at most 255 touches few z values.
-        for (uint64_t k = covered; k < covered + n; k += width - (k % width)) {
-          layer_used[size_t((k / width) % height)] = 1;
-        }
-      }
-      covered += n;
+  uint64_t covered = 0;
+  for (size_t i = 0; i < pairs; ++i) {
+    const uint8_t v = data[2 * i], n = data[2 * i + 1];
+    if (v > 1) {
+      return dataError(ErrorCode::kParse, "has value " + std::to_string(v) + " at byte " + std::to_string(pos + 2 * i) +
+                                              " (values are 0 or 1)");
     }
-    if (covered != total || data_bytes % 2 != 0) {
-      return dataError(ErrorCode::kParse, "is truncated: the runs cover " + std::to_string(covered) + " of " +
-                                              std::to_string(total) + " voxels" +
-                                              (data_bytes % 2 ? " and end with half a pair" : ""));
+    if (n == 0) {
+      return dataError(ErrorCode::kParse, "has a run of length 0 at byte " + std::to_string(pos + 2 * i + 1) +
+                                              " (run lengths are 1..255)");
     }
-    const int64_t layers = std::count(layer_used.begin(), layer_used.end(), uint8_t(1));
-    if (Status s = checkLayerMemory(dims, layers, name, memory_limit_bytes, ColumnBlocks::bytesFor(dims, layers));
-        !s.ok()) {
-      return s.error();
+    if (n > total - covered) {
+      return dataError(ErrorCode::kParse, "runs past the " + std::to_string(total) + " voxels of the grid (at byte " +
+                                              std::to_string(pos + 2 * i) + ")");
     }
+    if (v == 1) {
+      // Consecutive voxels share (x, z) for up to `width` voxels; a run of at most 255 touches few z values.
+      for (uint64_t k = covered; k < covered + n; k += width - (k % width)) {
+        layer_used[size_t((k / width) % height)] = 1;
+      }
+    }
+    covered += n;
   }
+  if (covered != total || data_bytes % 2 != 0) {
+    return dataError(ErrorCode::kParse, "is truncated: the runs cover " + std::to_string(covered) + " of " +
+                                            std::to_string(total) + " voxels" +
+                                            (data_bytes % 2 ? " and end with half a pair" : ""));
+  }
+  const int64_t layers = std::count(layer_used.begin(), layer_used.end(), uint8_t(1));
+  if (Status s = checkLayerMemory(dims, layers, name, memory_limit_bytes, ColumnBlocks::bytesFor(dims, layers));
+      !s.ok()) {
+    return s.error();
+  }
+  return layer_used;
+}
 
-  GridFrame frame;
-  frame.origin = translate;
-  // The file stores the edge of the cube the grid was fitted into (SPEC section 4): voxel size = scale / D, with
-  // D the largest dimension when a file is not cubic.
-  frame.voxel_size = scale / double(std::max({dims.nx, dims.ny, dims.nz}));
-  frame.source = baseName(name);
-  VoxelGrid grid(dims, frame);
-  // Pass 2: the runs of 64 consecutive x values (a block of the file) are set into y-columns with word masks,
-  // then 64 x 64 bit blocks are transposed into the grid's x-rows: the reverse of encodeBinvox.
+// Pass 2: the runs of 64 consecutive x values (a block of the file) are set into y-columns with word masks,
+// then 64 x 64 bit blocks are transposed into the grid's x-rows: the reverse of encodeBinvox.
+void fillBinvoxGrid(VoxelGrid& grid, std::span<const uint8_t> bytes, const BinvoxHeader& h,
+                    const std::vector<uint8_t>& layer_used) {
+  const Dims& dims = h.dims;
+  const uint64_t width = uint64_t(dims.ny), height = uint64_t(dims.nz);
+  const uint8_t* data = bytes.data() + h.data_at;
+  const size_t pairs = (bytes.size() - h.data_at) / 2;
   ColumnBlocks cols(dims, [&](int32_t z) { return layer_used[size_t(z)] != 0; });
   const int64_t wpr = grid.wordsPerRow();
   int64_t block_x0 = -1;  // first x of the block in the buffer; -1 while the buffer is empty
@@ -365,6 +374,27 @@ Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string
     }
   }
   flushBlock();
+}
+
+}  // namespace
+
+std::vector<uint8_t> encodeBinvox(const VoxelGrid& grid) { return encodeToMemory(encodeBinvoxTo, grid); }
+
+Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string& name, uint64_t memory_limit_bytes) {
+  auto header = parseBinvoxHeader(bytes, name);
+  if (!header.ok()) return header.error();
+  const BinvoxHeader& h = header.value();
+  auto layer_used = binvoxLayersUsed(bytes, h, name, memory_limit_bytes);
+  if (!layer_used.ok()) return layer_used.error();
+
+  GridFrame frame;
+  frame.origin = h.translate;
+  // The file stores the edge of the cube the grid was fitted into (SPEC section 4): voxel size = scale / D, with
+  // D the largest dimension when a file is not cubic.
+  frame.voxel_size = h.scale / double(std::max({h.dims.nx, h.dims.ny, h.dims.nz}));
+  frame.source = baseName(name);
+  VoxelGrid grid(h.dims, frame);
+  fillBinvoxGrid(grid, bytes, h, layer_used.value());
   return grid;
 }
 

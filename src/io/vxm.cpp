@@ -175,11 +175,9 @@ Status encodeVxmTo(const VoxelGrid& grid, ByteSink& sink) {
   return sink.append(tail.bytes);
 }
 
-}  // namespace
-
-std::vector<uint8_t> encodeVxm(const VoxelGrid& grid) { return encodeToMemory(encodeVxmTo, grid); }
-
-Result<VoxelGrid> decodeVxm(std::span<const uint8_t> bytes, const std::string& name, uint64_t memory_limit_bytes) {
+// The header: magic and version, then the fields under their own CRC, so that a truncated body is told apart
+// from a damaged header.
+Result<VxmHeader> parseVxmHeader(std::span<const uint8_t> bytes, const std::string& name) {
   const uint8_t* b = bytes.data();
   const size_t size = bytes.size();
   if (size < sizeof kVxmMagic || std::memcmp(b, kVxmMagic, sizeof kVxmMagic) != 0) {
@@ -202,7 +200,6 @@ Result<VoxelGrid> decodeVxm(std::span<const uint8_t> bytes, const std::string& n
                      name + ": .vxm file truncated: " + std::to_string(size) + " bytes, shorter than any .vxm header");
   }
 
-  // The header first, under its own CRC, so that a truncated body is told apart from a damaged header.
   VxmHeader h;
   h.header_bytes = loadLE<uint32_t>(b + 12);
   if (h.header_bytes < kVxmFixedBytes + 8 || h.header_bytes > kVxmFixedBytes + 8 + 2 * 0xFFFF) {
@@ -248,8 +245,13 @@ Result<VoxelGrid> decodeVxm(std::span<const uint8_t> bytes, const std::string& n
                                               ": .vxm header has a non-finite origin or a voxel size that is not "
                                               "positive");
   }
+  return h;
+}
 
-  // Whole-file size and CRC.
+// Whole-file size and CRC.
+Status checkVxmFile(std::span<const uint8_t> bytes, const VxmHeader& h, const std::string& name) {
+  const uint8_t* b = bytes.data();
+  const size_t size = bytes.size();
   const uint64_t expected = uint64_t(h.header_bytes) + h.body_bytes + 4;
   if (h.body_bytes > size || size < expected) {
     return makeError(ErrorCode::kParse, name + ": .vxm file truncated: expected " + std::to_string(expected) +
@@ -266,49 +268,51 @@ Result<VoxelGrid> decodeVxm(std::span<const uint8_t> bytes, const std::string& n
     std::snprintf(buf, sizeof buf, "CRC-32 mismatch (stored %08x, computed %08x)", stored, computed);
     return makeError(ErrorCode::kCorrupt, name + ": .vxm file is corrupt: " + buf);
   }
+  return Ok{};
+}
 
-  // Pass 1: check the runs add up, and count the Z layers they fill, before allocating anything.
+// Pass 1: check the runs add up, and count the Z layers they fill, before allocating anything.
+Status checkVxmBody(const VxmHeader& h, const uint8_t* body, const uint8_t* body_end, const std::string& name,
+                    uint64_t memory_limit_bytes) {
   const uint64_t total = uint64_t(h.dims.count());
   const uint64_t layer_voxels = uint64_t(h.dims.nx) * uint64_t(h.dims.ny);
-  const uint8_t* body = b + h.header_bytes;
-  const uint8_t* body_end = body + h.body_bytes;
   auto bodyError = [&](const std::string& what) {
     return makeError(ErrorCode::kCorrupt, name + ": .vxm body is inconsistent: " + what);
   };
-  {
-    const uint8_t* p = body;
-    uint64_t pos = 0, runs = 0, filled = 0;
-    int64_t layers = 0, last_layer = -1;
-    bool state = false;
-    while (p < body_end) {
-      uint64_t n;
-      if (!readVarint(p, body_end, n)) return bodyError("bad run length at body byte " + std::to_string(p - body));
-      if (n == 0 && runs > 0) return bodyError("empty run " + std::to_string(runs + 1));
-      if (n > total - pos) return bodyError("runs cover more than the " + std::to_string(total) + " voxels");
-      if (state && n > 0) {
-        filled += n;
-        const int64_t z0 = int64_t(pos / layer_voxels), z1 = int64_t((pos + n - 1) / layer_voxels);
-        if (z1 > last_layer) {
-          layers += z1 - std::max(z0, last_layer + 1) + 1;
-          last_layer = z1;
-        }
+  const uint8_t* p = body;
+  uint64_t pos = 0, runs = 0, filled = 0;
+  int64_t layers = 0, last_layer = -1;
+  bool state = false;
+  while (p < body_end) {
+    uint64_t n;
+    if (!readVarint(p, body_end, n)) return bodyError("bad run length at body byte " + std::to_string(p - body));
+    if (n == 0 && runs > 0) return bodyError("empty run " + std::to_string(runs + 1));
+    if (n > total - pos) return bodyError("runs cover more than the " + std::to_string(total) + " voxels");
+    if (state && n > 0) {
+      filled += n;
+      const int64_t z0 = int64_t(pos / layer_voxels), z1 = int64_t((pos + n - 1) / layer_voxels);
+      if (z1 > last_layer) {
+        layers += z1 - std::max(z0, last_layer + 1) + 1;
+        last_layer = z1;
       }
-      pos += n;
-      ++runs;
-      state = !state;
     }
-    if (pos != total) {
-      return bodyError("runs cover " + std::to_string(pos) + " of " + std::to_string(total) + " voxels");
-    }
-    if (runs != h.runs || filled != h.filled) {
-      return bodyError("header says " + std::to_string(h.runs) + " runs and " + std::to_string(h.filled) +
-                       " filled voxels, body has " + std::to_string(runs) + " and " + std::to_string(filled));
-    }
-    if (Status s = checkLayerMemory(h.dims, layers, name, memory_limit_bytes); !s.ok()) return s.error();
+    pos += n;
+    ++runs;
+    state = !state;
   }
+  if (pos != total) {
+    return bodyError("runs cover " + std::to_string(pos) + " of " + std::to_string(total) + " voxels");
+  }
+  if (runs != h.runs || filled != h.filled) {
+    return bodyError("header says " + std::to_string(h.runs) + " runs and " + std::to_string(h.filled) +
+                     " filled voxels, body has " + std::to_string(runs) + " and " + std::to_string(filled));
+  }
+  if (Status s = checkLayerMemory(h.dims, layers, name, memory_limit_bytes); !s.ok()) return s.error();
+  return Ok{};
+}
 
-  // Pass 2: fill.
-  VoxelGrid grid(h.dims, h.frame);
+// Pass 2: fill the grid from a body that checkVxmBody accepted.
+void fillVxmBody(VoxelGrid& grid, const VxmHeader& h, const uint8_t* body, const uint8_t* body_end) {
   const uint8_t* p = body;
   uint64_t pos = 0;
   bool state = false;
@@ -330,6 +334,22 @@ Result<VoxelGrid> decodeVxm(std::span<const uint8_t> bytes, const std::string& n
     pos += n;
     state = !state;
   }
+}
+
+}  // namespace
+
+std::vector<uint8_t> encodeVxm(const VoxelGrid& grid) { return encodeToMemory(encodeVxmTo, grid); }
+
+Result<VoxelGrid> decodeVxm(std::span<const uint8_t> bytes, const std::string& name, uint64_t memory_limit_bytes) {
+  auto header = parseVxmHeader(bytes, name);
+  if (!header.ok()) return header.error();
+  const VxmHeader& h = header.value();
+  if (Status s = checkVxmFile(bytes, h, name); !s.ok()) return s.error();
+  const uint8_t* body = bytes.data() + h.header_bytes;
+  const uint8_t* body_end = body + h.body_bytes;
+  if (Status s = checkVxmBody(h, body, body_end, name, memory_limit_bytes); !s.ok()) return s.error();
+  VoxelGrid grid(h.dims, h.frame);
+  fillVxmBody(grid, h, body, body_end);
   return grid;
 }
 
