@@ -1,5 +1,5 @@
-// .binvox: Patrick Min's voxel format (https://www.patrickmin.com/binvox/binvox.html) and SPEC section 4: ASCII
-// header, then (value, count) byte pairs over the order y fastest, then z, then x.
+// .binvox: Patrick Min's voxel format (https://www.patrickmin.com/binvox/binvox.html) and docs/conventions.md,
+// ".binvox": ASCII header, then (value, count) byte pairs over the order y fastest, then z, then x.
 //
 // The grid stores rows along x and binvox wants columns along y: 64 x 64 bit blocks are transposed both ways, so
 // runs are still found one countr_zero per run (voxel_file_common.h).
@@ -389,8 +389,8 @@ Result<VoxelGrid> decodeBinvox(std::span<const uint8_t> bytes, const std::string
 
   GridFrame frame;
   frame.origin = h.translate;
-  // The file stores the edge of the cube the grid was fitted into (SPEC section 4): voxel size = scale / D, with
-  // D the largest dimension when a file is not cubic.
+  // The file stores the edge of the cube the grid was fitted into (docs/conventions.md, ".binvox"): voxel size =
+  // scale / D, with D the largest dimension when a file is not cubic.
   frame.voxel_size = h.scale / double(std::max({h.dims.nx, h.dims.ny, h.dims.nz}));
   frame.source = baseName(name);
   VoxelGrid grid(h.dims, frame);

@@ -87,7 +87,7 @@ write(OK, "binary_extra_bytes.stl", binary_stl([TRI] * 3, declared=2))
 write(OK, "ascii_one_line.stl", "solid one line " + (facet(V) * 2).replace("\n", " ") + "endsolid one line")
 write(OK, "binary_solid_header.stl", binary_stl([TRI, TRI], header=b"solid part exported by a CAD tool"))
 
-# ---- .binvox (SPEC section 4) ----
+# ---- .binvox (docs/conventions.md, ".binvox"; docs/file-format.md) ----
 
 
 def binvox(dim, runs, header_extra="translate 0.5 -1 2\nscale 4\n", magic="#binvox 1\n"):
