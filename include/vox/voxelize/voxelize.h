@@ -30,10 +30,10 @@ enum class FillMode {
   kVote,     // for broken meshes: parity along X, Y and Z, majority per voxel; disagreements kept (the disputed set)
 };
 // Ties (a centre on the surface, a ray through an edge or vertex) follow docs/conventions.md, "Grid placement"
-// (Simulation of Simplicity, Edelsbrunner & Mücke 1990): the centre is displaced by (eps, eps^3, eps^2) in (x, y, z).
-// Vote mode's rays along Y and Z displace the centre the same way in their own frame, (y, x, z) resp. (z, x, y) taking
-// the roles of (x, y, z): consistent, so closed meshes stay crack-free along every axis, but a centre exactly on the
-// surface may then be decided differently per axis (and be disputed).
+// (Simulation of Simplicity, Edelsbrunner & Mücke 1990): the centre is displaced by
+// (eps, eps^3, eps^2) in (x, y, z). Vote mode's rays along Y and Z displace the centre the same way in their own
+// frame, (y, x, z) resp. (z, x, y) taking the roles of (x, y, z): consistent, so closed meshes stay crack-free along
+// every axis, but a centre exactly on the surface may then be decided differently per axis (and be disputed).
 const char* fillModeName(FillMode m);  // "auto", "parity", "nonzero", "vote"
 std::optional<FillMode> parseFillMode(const std::string& s);
 
