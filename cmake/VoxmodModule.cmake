@@ -1,6 +1,7 @@
 # voxmod_module(NAME DEPS <voxmod modules> LIBS <external targets>)
 # A module is a static library built from src/<name>/*.cpp with public headers in include/vox/<name>/.
-# Dependencies are PRIVATE (STYLE.md); cmake/CheckLayering.cmake checks the includes against the same table.
+# Dependencies are PRIVATE, so a module cannot use one it did not declare (docs/architecture.md,
+# "Modules"); cmake/CheckLayering.cmake checks the includes against the same table.
 function(voxmod_module name)
   cmake_parse_arguments(M "" "" "DEPS;LIBS" ${ARGN})
   file(GLOB_RECURSE srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${name}/*.cpp)

@@ -1,4 +1,4 @@
-// Names of the analysis enums as the CLI and the JSON output spell them (SPEC section 5).
+// Names of the analysis enums as the CLI and the JSON output spell them (docs/conventions.md, "Command line").
 #include <algorithm>
 #include <cctype>
 

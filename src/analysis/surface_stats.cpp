@@ -1,7 +1,7 @@
-// Surface statistics and the face-neighbour code histogram (thesis 5.1, Table 5.1; SPEC section 2).
-// Surface voxels are found with word operations on whole layers (surface = filled & ~(all six neighbours)); only
-// surface voxels are visited one by one, to build their codes. Codes with four or five free faces are the
-// one- and two-dimensional structures that thesis 4.3.3 attributes to voxelization errors.
+// Surface statistics and the face-neighbour code histogram (thesis 5.1, Table 5.1; docs/conventions.md,
+// "Face-neighbour code"). Surface voxels are found with word operations on whole layers (surface = filled & ~(all six
+// neighbours)); only surface voxels are visited one by one, to build their codes. Codes with four or five free faces
+// are the one- and two-dimensional structures that thesis 4.3.3 attributes to voxelization errors.
 #include <bit>
 
 #include "analysis/layer_ops.h"

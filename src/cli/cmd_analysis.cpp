@@ -1,5 +1,5 @@
-// The analysis subcommands (SPEC section 5): section, peel, xray, mass. Each binds its flags to the same params
-// struct the GUI edits (vox/analysis/analysis.h) and FILE may be a mesh, voxelized on the fly.
+// The analysis subcommands (docs/conventions.md, "Command line"): section, peel, xray, mass. Each binds its flags to
+// the same params struct the GUI edits (vox/analysis/analysis.h) and FILE may be a mesh, voxelized on the fly.
 #include <cmath>
 #include <optional>
 
@@ -285,7 +285,7 @@ void addPeelCommand(CLI::App& sub, CommandContext& ctx) {
 
 void addXrayCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<XrayOptions>();
-  addCommon(sub, o->c, "--fill-mode");  // --mode is the X-ray mode here (SPEC section 5)
+  addCommon(sub, o->c, "--fill-mode");  // --mode is the X-ray mode here (docs/conventions.md, "Command line")
   sub.add_option("--axis", o->params.axis, "Ray direction: x, y or z")->required()->transform(axisWords());
   sub.add_option("--mode", o->params.mode, "Per ray: min, max or total thickness")
       ->required()

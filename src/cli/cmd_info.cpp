@@ -1,5 +1,5 @@
-// voxmod info FILE: describe a voxel file, or a mesh (and the grid it voxelizes to). SPEC section 5 keys:
-// dims, voxel_size, origin, filled, volume, surface_voxels.
+// voxmod info FILE: describe a voxel file, or a mesh (and the grid it voxelizes to). Keys fixed by docs/conventions.md,
+// "Command line": dims, voxel_size, origin, filled, volume, surface_voxels.
 #include <CLI/CLI.hpp>
 
 #include "cli/cmd_list.h"

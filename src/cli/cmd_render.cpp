@@ -1,5 +1,5 @@
-// voxmod render FILE -o OUT.png: the point renderer headless (EGL, no display), SPEC section 5, plus camera, table,
-// cut-away section and peel-depth options. Exit code 3 when no usable OpenGL is available.
+// voxmod render FILE -o OUT.png: the point renderer headless (EGL, no display; docs/conventions.md, "Command line"),
+// plus camera, table, cut-away section and peel-depth options. Exit code 3 when no usable OpenGL is available.
 #include <CLI/CLI.hpp>
 
 #include "cli/cmd_list.h"

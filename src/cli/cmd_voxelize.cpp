@@ -1,4 +1,4 @@
-// voxmod voxelize MESH --res R | --voxel-size H [--mode M] [--threads N] -o OUT: SPEC section 5.
+// voxmod voxelize MESH --res R | --voxel-size H [--mode M] [--threads N] -o OUT (docs/conventions.md, "Command line").
 // JSON keys: triangles, dims, voxel_size, origin, filled, volume, load_s, voxelize_s, write_s, total_s, warnings;
 // also mode, mode_reason, disputed_voxels, strays_removed, grid_bytes and peak_rss_bytes.
 #include <sys/resource.h>

@@ -1,6 +1,6 @@
 #pragma once
 // FILE arguments: a voxel file (.vxm, .binvox) is read; anything else is read as an STL mesh and voxelized with
-// the --res / --voxel-size / --mode / --threads options (SPEC section 5: default resolution 200).
+// the --res / --voxel-size / --mode / --threads options (docs/conventions.md, "Command line": default resolution 200).
 #include <filesystem>
 #include <optional>
 #include <string>

@@ -1,4 +1,4 @@
-// Headless EGL context (shared notes headless-gl.md, sections 1 and 3b): EGL_PLATFORM_SURFACELESS_MESA needs no X
+// Headless EGL context (docs/dependencies.md, "Headless OpenGL"): EGL_PLATFORM_SURFACELESS_MESA needs no X
 // server, no /dev/dri and no environment variable; the EGL device platform is the fallback (it is also what a
 // non-Mesa driver such as NVIDIA's offers). eglGetDisplay(EGL_DEFAULT_DISPLAY) is not used: without DISPLAY, Mesa's
 // default platform (x11) fails in eglInitialize.

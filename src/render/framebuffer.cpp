@@ -1,4 +1,4 @@
-// Offscreen framebuffer and read-back (shared notes headless-gl.md: a surfaceless context has no default
+// Offscreen framebuffer and read-back (docs/dependencies.md, "Headless OpenGL": a surfaceless context has no default
 // framebuffer, and glReadPixels rows come bottom-up).
 #include "vox/render/framebuffer.h"
 

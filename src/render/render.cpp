@@ -1,5 +1,5 @@
-// One-call headless rendering for `voxmod render` (SPEC section 5) and the tests: the thesis 6.2 point display of
-// a grid, fitted to the image, read back as an RGBA image.
+// One-call headless rendering for `voxmod render` (docs/conventions.md, "Command line") and the tests: the thesis 6.2
+// point display of a grid, fitted to the image, read back as an RGBA image.
 #include "vox/render/render.h"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
-// Intensity tables over the 64 face-neighbour codes (thesis 5.1, Table 5.2; SPEC sections 2 and 3) and the point
-// size rule (thesis 6.2).
+// Intensity tables over the 64 face-neighbour codes (thesis 5.1, Table 5.2; docs/conventions.md, "Face-neighbour code"
+// and "Classic intensity table") and the point size rule (thesis 6.2).
 #include "vox/render/shading.h"
 
 #include <algorithm>

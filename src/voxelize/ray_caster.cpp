@@ -68,7 +68,7 @@ std::vector<double> centresAlong(const GridPlacement& placement, int axis) {
   const double origin = placement.frame.origin[axis];
   const double h = placement.frame.voxel_size;
   std::vector<double> c(static_cast<size_t>(n));
-  // SPEC section 1: min + (i + 0.5) * h, in double, exactly so.
+  // docs/conventions.md, "Grid placement": min + (i + 0.5) * h, in double, exactly so.
   for (int32_t i = 0; i < n; ++i) c[size_t(i)] = origin + (double(i) + 0.5) * h;
   return c;
 }

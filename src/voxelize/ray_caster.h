@@ -5,8 +5,9 @@
 // A ray family is given by three axes (u, v, w): the rays run along u through the voxel centres of the (v, w)
 // plane. Rows are indexed by w and are the unit of parallel work; the rays of a row are indexed by v. Every
 // centre (and so every ray) is displaced by (eps, eps^3, eps^2) in (u, v, w), eps -> 0+. For rays along X this is
-// SPEC section 1's rule exactly; the Y and Z families used by vote mode apply the same displacement in their own
-// (u, v, w) frame (see RayAxes), which is just as consistent, so every closed mesh stays crack-free along them too.
+// exactly the tie rule of docs/conventions.md, "Grid placement"; the Y and Z families used by vote mode apply the same
+// displacement in their own (u, v, w) frame (see RayAxes), which is just as consistent, so every closed mesh stays
+// crack-free along them too.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -181,7 +182,7 @@ class RayCaster {
   // for the centres c[floor(t)] and c[floor(t) + 1] to lie on either side of x (gridSlack in ray_caster.cpp).
   double slack_u_ = 0.0, slack_v_ = 0.0;
   double origin_u_ = 0.0, origin_v_ = 0.0, origin_w_ = 0.0;
-  std::vector<double> cu_, cv_, cw_;  // voxel centre coordinates along u, v, w (SPEC section 1, exactly so)
+  std::vector<double> cu_, cv_, cw_;  // voxel centres along u, v, w (docs/conventions.md, "Grid placement")
   std::vector<Entry> entries_;        // kept triangles, sorted by first row (then mesh order)
   std::vector<size_t> row_start_;     // entries_ of first row r: [row_start_[r], row_start_[r + 1])
   std::vector<int32_t> active_;       // by row: the triangles whose rows include it (a sweep's planes there)

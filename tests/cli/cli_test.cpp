@@ -1,4 +1,5 @@
-// The command line as scripts use it (SPEC section 5): exit codes, JSON keys, images, error messages.
+// The command line as scripts use it (docs/conventions.md, "Command line"): exit codes, JSON keys, images, error
+// messages.
 #include <nlohmann/json.hpp>
 
 #include "support/test_support.h"

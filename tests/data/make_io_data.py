@@ -3,7 +3,7 @@
 scripts/fuzz.sh uses as seeds): tests/data/malformed/ holds files every reader must refuse with a clear message,
 tests/data/quirks/ holds valid files in unusual shapes that must load.
 
-The .vxm files are written here from docs/file-format.md, independently of src/io/voxel_file.cpp, so the test
+The .vxm files are written here from docs/file-format.md, independently of src/io/vxm.cpp, so the test
 also checks that the document and the code agree. Run from anywhere; the output is deterministic.
 """
 import os
@@ -87,7 +87,7 @@ write(OK, "binary_extra_bytes.stl", binary_stl([TRI] * 3, declared=2))
 write(OK, "ascii_one_line.stl", "solid one line " + (facet(V) * 2).replace("\n", " ") + "endsolid one line")
 write(OK, "binary_solid_header.stl", binary_stl([TRI, TRI], header=b"solid part exported by a CAD tool"))
 
-# ---- .binvox (SPEC section 4) ----
+# ---- .binvox (docs/conventions.md, ".binvox"; docs/file-format.md) ----
 
 
 def binvox(dim, runs, header_extra="translate 0.5 -1 2\nscale 4\n", magic="#binvox 1\n"):

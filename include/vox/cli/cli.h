@@ -1,6 +1,6 @@
 #pragma once
-// The headless command line (SPEC section 5). Never links ImGui or opens a window; the GUI entry point is passed
-// in by main() so that cli does not depend on app.
+// The headless command line (docs/conventions.md, "Command line"). Never links ImGui or opens a window; the GUI entry
+// point is passed in by main() so that cli does not depend on app.
 namespace vox::cli {
 
 // Signature of the GUI entry: receives the program's arguments (argv[1], if any, is a file to open).

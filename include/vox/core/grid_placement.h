@@ -1,6 +1,6 @@
 #pragma once
-// Grid placement from a mesh's bounding box (SPEC section 1): h = largest extent / R, origin = bbox min,
-// n_axis = max(1, ceil(extent_axis / h)), so the longest axis has exactly R voxels.
+// Grid placement from a mesh's bounding box (docs/conventions.md, "Grid placement"): h = largest extent / R, origin =
+// bbox min, n_axis = max(1, ceil(extent_axis / h)), so the longest axis has exactly R voxels.
 #include <cstdint>
 
 #include "vox/core/mesh.h"

@@ -26,7 +26,7 @@ struct TriangleMesh {
   std::vector<Triangle> triangles;
   std::string name;  // usually the source file's name; used in messages
 
-  // Bounding box of all vertices, float32 promoted to double (SPEC section 1).
+  // Bounding box of all vertices, float32 promoted to double (docs/conventions.md, "Grid placement").
   Box3d bounds() const;
 };
 

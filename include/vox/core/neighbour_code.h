@@ -1,6 +1,6 @@
 #pragma once
-// Face-neighbour codes (thesis section 5.1, SPEC section 2) and the classic intensity table (thesis Table 5.2,
-// SPEC section 3). The bit layout is defined here and nowhere else.
+// Face-neighbour codes (thesis section 5.1) and the classic intensity table (thesis Table 5.2), as docs/conventions.md
+// states them ("Face-neighbour code", "Classic intensity table"). The bit layout is defined here and nowhere else.
 #include <array>
 #include <cstdint>
 
@@ -18,8 +18,9 @@ inline constexpr uint8_t kCodeInterior = 63;
 // Number of free (empty) faces of a voxel with this code.
 constexpr int freeFaces(uint8_t code) { return 6 - __builtin_popcount(code & 63u); }
 
-// Classic intensities on a 0..20 scale, index = code (SPEC section 3). Code 63 (interior, never drawn) is 0.
-// The printed table lists code 2 twice and omits 28; the second "2" is 28. Code 0 (isolated voxel) is 20.
+// Classic intensities on a 0..20 scale, index = code (docs/conventions.md, "Classic intensity table"). Code 63
+// (interior, never drawn) is 0. The printed table lists code 2 twice and omits 28; the second "2" is 28. Code 0
+// (isolated voxel) is 20.
 inline constexpr std::array<uint8_t, 64> kClassicIntensity = {
     20, 12, 20, 14, 10, 16, 18, 16,  //  0.. 7
     14, 12, 16, 12, 20, 13, 10, 12,  //  8..15

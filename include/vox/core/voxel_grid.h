@@ -34,7 +34,7 @@ struct Dims {
   bool operator==(const Dims&) const = default;
 };
 
-// Where the grid sits in model space (SPEC section 1): the centre of voxel (i, j, k) is
+// Where the grid sits in model space (docs/conventions.md, "Grid placement"): the centre of voxel (i, j, k) is
 // origin + ((i + 0.5) * voxel_size, (j + 0.5) * voxel_size, (k + 0.5) * voxel_size).
 struct GridFrame {
   glm::dvec3 origin{0.0};
@@ -49,7 +49,7 @@ struct GridFrame {
   }
 };
 
-// The six face directions, in the thesis's neighbour order 1..6 (SPEC section 2).
+// The six face directions, in the thesis's neighbour order 1..6 (docs/conventions.md, "Face-neighbour code").
 enum class Direction : uint8_t { kYMinus = 0, kXMinus, kXPlus, kYPlus, kZMinus, kZPlus };
 glm::ivec3 directionStep(Direction d);
 
@@ -92,8 +92,8 @@ class VoxelGrid {
   // Fill voxels x0 <= x < x1 of row (y, z) with word operations (clamped to [0, nx)).
   void fillRun(int32_t y, int32_t z, int64_t x0, int64_t x1);
 
-  // Face-neighbour code (SPEC section 2): bit 32 y-1, 16 x-1, 8 x+1, 4 y+1, 2 z-1, 1 z+1, set where that neighbour
-  // is filled. 63 = interior. Meaningful for filled voxels; x, y, z inside the grid.
+  // Face-neighbour code (docs/conventions.md, "Face-neighbour code"): bit 32 y-1, 16 x-1, 8 x+1, 4 y+1, 2 z-1, 1 z+1,
+  // set where that neighbour is filled. 63 = interior. Meaningful for filled voxels; x, y, z inside the grid.
   uint8_t neighbourCode(int64_t x, int64_t y, int64_t z) const;
 
   // The voxel `distance` steps from (x, y, z) along d, or nullopt when that lies outside the grid.

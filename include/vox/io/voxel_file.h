@@ -1,5 +1,5 @@
 #pragma once
-// Voxel files: .vxm (voxmod's own run-length format, docs/file-format.md) and .binvox (SPEC section 4).
+// Voxel files: .vxm (voxmod's own run-length format, docs/file-format.md) and .binvox (docs/conventions.md, ".binvox").
 #include <cstdint>
 #include <filesystem>
 #include <span>

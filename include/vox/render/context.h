@@ -1,5 +1,5 @@
 #pragma once
-// Headless OpenGL: an EGL context with no window and no X server (shared notes headless-gl.md, section 3b). The GUI
+// Headless OpenGL: an EGL context with no window and no X server (docs/dependencies.md, "Headless OpenGL"). The GUI
 // makes its own GLFW window context instead and uses the same PointRenderer and Framebuffer; this class is only for
 // the CLI, tests and benchmarks.
 #include <memory>

@@ -21,7 +21,7 @@ namespace vox::render {
 // 2 x GL_UNSIGNED_BYTE). 16-bit coordinates suffice because VoxelGrid::kMaxDim is 16384.
 struct PackedPoint {
   uint16_t x = 0, y = 0, z = 0;
-  uint8_t code = 0;   // face-neighbour code (SPEC section 2), < 63
+  uint8_t code = 0;   // face-neighbour code (docs/conventions.md, "Face-neighbour code"), < 63
   uint8_t flags = 0;  // kPointFlag* bits
   bool operator==(const PackedPoint&) const = default;
 };

@@ -27,8 +27,8 @@ namespace vox::render {
 
 struct DrawParams {
   Lut lut = Lut::kClassic;
-  // Colour of an intensity-1 point, RGB in 0..1. Default: the thesis's green (0, 1, 0) for kClassic (SPEC section
-  // 3: colour (0, I/20, 0)); a light grey-blue for kLit.
+  // Colour of an intensity-1 point, RGB in 0..1. Default: the thesis's green (0, 1, 0) for kClassic
+  // (docs/conventions.md, "Classic intensity table": colour (0, I/20, 0)); a light grey-blue for kLit.
   std::optional<glm::vec3> colour;
   glm::dvec3 light_dir_view = kDefaultLightView;  // kLit: towards the light, view space (need not be unit length)
   double ambient = kDefaultAmbient;               // kLit: intensity of faces turned away from the light

@@ -1,5 +1,6 @@
 #pragma once
-// One-call rendering for `voxmod render` (SPEC section 5) and tests: grid in, image out, no window.
+// One-call rendering for `voxmod render` (docs/conventions.md, "Command line") and tests: grid in, image out, no
+// window.
 //
 //   vox::render::RenderParams p;             // defaults: 800 x 600, yaw 30, pitch 20, classic table, perspective
 //   p.lut = vox::render::Lut::kLit;

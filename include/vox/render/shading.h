@@ -1,6 +1,7 @@
 #pragma once
-// Intensity tables indexed by the 6-bit face-neighbour code (thesis 5.1, SPEC sections 2 and 3) and the point-size
-// rule of thesis 6.2. Pure CPU; the point shader receives the table as `uniform float u_intensity[64]`.
+// Intensity tables indexed by the 6-bit face-neighbour code (thesis 5.1; docs/conventions.md, "Face-neighbour code" and
+// "Classic intensity table") and the point-size rule of thesis 6.2. Pure CPU; the point shader receives the table as
+// `uniform float u_intensity[64]`.
 #include <array>
 #include <cstdint>
 
@@ -11,8 +12,8 @@
 namespace vox::render {
 
 // Which table shades the surface points.
-//  - kClassic: the thesis's Table 5.2 (SPEC section 3), intensity I/20, fixed light "from the top right" of a
-//    screen that is the z = 0 plane; the reference in tests.
+//  - kClassic: the thesis's Table 5.2 (docs/conventions.md, "Classic intensity table"), intensity I/20, fixed
+//    light "from the top right" of a screen that is the z = 0 plane; the reference in tests.
 //  - kLit: recomputed each frame from a light direction given in view space, so the light moves with the camera.
 enum class Lut { kClassic, kLit };
 

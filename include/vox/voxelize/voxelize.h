@@ -1,8 +1,8 @@
 #pragma once
-// Solid voxelization of a triangle mesh (thesis 4.3, 2.4.5-2.4.6; SPEC section 1). Rays parallel to X through the
-// voxel centres; crossings are decided exactly with Simulation of Simplicity, so closed meshes give crack-free,
-// reproducible grids that match ../shared/reference voxel for voxel (docs/accuracy.md). No tolerance anywhere: the
-// result depends only on the float32 vertices and the grid, and is identical for any number of threads.
+// Solid voxelization of a triangle mesh (thesis 4.3, 2.4.5-2.4.6; docs/conventions.md, "Grid placement"). Rays parallel
+// to X through the voxel centres; crossings are decided exactly with Simulation of Simplicity, so closed meshes give
+// crack-free, reproducible grids that match ../shared/reference voxel for voxel (docs/accuracy.md). No tolerance
+// anywhere: the result depends only on the float32 vertices and the grid, and is identical for any number of threads.
 //
 // Cost: O(T + R^2 + crossings) time for the rays plus writing the grid (word operations); vote mode casts three
 // ray families. Memory: the grid (estimateGridBytes, layers allocated only where the model is); in vote mode also
@@ -29,7 +29,8 @@ enum class FillMode {
   kNonzero,  // winding number along +X not zero: overlapping closed bodies become their union
   kVote,     // for broken meshes: parity along X, Y and Z, majority per voxel; disagreements kept (the disputed set)
 };
-// Ties (a centre on the surface, a ray through an edge or vertex) follow SPEC section 1: the centre is displaced by
+// Ties (a centre on the surface, a ray through an edge or vertex) follow docs/conventions.md, "Grid placement"
+// (Simulation of Simplicity, Edelsbrunner & Mücke 1990): the centre is displaced by
 // (eps, eps^3, eps^2) in (x, y, z). Vote mode's rays along Y and Z displace the centre the same way in their own
 // frame, (y, x, z) resp. (z, x, y) taking the roles of (x, y, z): consistent, so closed meshes stay crack-free along
 // every axis, but a centre exactly on the surface may then be decided differently per axis (and be disputed).

@@ -101,7 +101,8 @@ TEST(VoxelGrid, indexUses64BitArithmeticAt4096Cubed) {
 }
 
 TEST(VoxelGrid, neighbourCodeBitsFollowSpecOrder) {
-  // Centre voxel with exactly one neighbour at a time: each direction sets its own bit (SPEC section 2).
+  // Centre voxel with exactly one neighbour at a time: each direction sets its own bit
+  // (docs/conventions.md, "Face-neighbour code").
   struct Case {
     glm::ivec3 offset;
     uint8_t bit;

@@ -13,7 +13,7 @@ namespace {
 
 TEST(ClassicTable, isTheThesisTableOverTwenty) {
   const IntensityTable t = classicTable();
-  EXPECT_FLOAT_EQ(t[0], 1.0f);            // isolated voxel: 20 (SPEC section 3)
+  EXPECT_FLOAT_EQ(t[0], 1.0f);            // isolated voxel: 20 (docs/conventions.md, "Classic intensity table")
   EXPECT_FLOAT_EQ(t[2], 1.0f);            // 20
   EXPECT_FLOAT_EQ(t[28], 1.0f);           // the printed table's second "2"
   EXPECT_FLOAT_EQ(t[62], 17.0f / 20.0f);  // the table rules over Figure 5.2's 16

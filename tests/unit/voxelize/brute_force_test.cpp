@@ -1,7 +1,8 @@
-// The voxelizer against a brute-force evaluation of SPEC section 1 on random triangle soups full of ties and
-// near-ties. The brute force tests every triangle against every ray with the exact predicates alone (no pruning,
-// no estimates, no fast paths), so it checks the voxelizer's shortcuts: ray-range pruning, rays certainly inside a
-// triangle's section, the bounded estimate of the crossing position and planes u = const.
+// The voxelizer against a brute-force evaluation of the rule in docs/conventions.md, "Grid placement", on random
+// triangle soups full of ties and near-ties. The brute force tests every triangle against every ray with the exact
+// predicates alone (no pruning, no estimates, no fast paths), so it checks the voxelizer's shortcuts: ray-range
+// pruning, rays certainly inside a triangle's section, the bounded estimate of the crossing position and
+// planes u = const.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -19,8 +20,9 @@ namespace {
 using voxelize_detail::orient2d;
 using voxelize_detail::orient3dExact;
 
-// SPEC section 1 for rays along axis `u` (the other two, v and w, as in the voxelizer's frames), the centre
-// displaced by (eps, eps^3, eps^2) in (u, v, w). Returns the per-voxel crossing count parity and winding number.
+// The rule of docs/conventions.md, "Grid placement", for rays along axis `u` (the other two, v and w, as in the
+// voxelizer's frames), the centre displaced by (eps, eps^3, eps^2) in (u, v, w). Returns the per-voxel crossing count
+// parity and winding number.
 struct BruteRay {
   int parity = 0;
   int winding = 0;

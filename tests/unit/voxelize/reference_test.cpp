@@ -1,5 +1,5 @@
 // The voxelizer against ../shared/reference: exact voxelizations of every watertight shared mesh at R = 64, 128 and
-// 256 (SPEC section 1). Every mode that applies must reproduce them voxel for voxel.
+// 256 (docs/conventions.md, "Grid placement"). Every mode that applies must reproduce them voxel for voxel.
 #include <gtest/gtest.h>
 
 #include <string>

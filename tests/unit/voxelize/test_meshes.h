@@ -39,7 +39,8 @@ double windingNumber(const TriangleMesh& mesh, const glm::dvec3& p);
 
 // Number of voxels where the two grids differ; grids may have different dims (outside one grid reads as empty).
 int64_t mismatches(const VoxelGrid& a, const VoxelGrid& b);
-// Grid of the same dims and frame as `like`, filled where inside(centre) is true, centre per SPEC section 1.
+// Grid of the same dims and frame as `like`, filled where inside(centre) is true, centre as in docs/conventions.md,
+// "Grid placement".
 VoxelGrid gridFromPredicate(const VoxelGrid& like, const std::function<bool(const glm::dvec3&)>& inside);
 
 }  // namespace vox::test

@@ -1,4 +1,5 @@
-// The voxelizer on meshes built in code, against analytic or independent answers (SPEC section 1).
+// The voxelizer on meshes built in code, against analytic or independent answers (docs/conventions.md,
+// "Grid placement").
 #include "vox/core/text.h"
 #include "vox/voxelize/voxelize.h"
 
@@ -107,9 +108,10 @@ TEST(VoxelizeTies, octahedronWithVerticesOnRaysFollowsTheSosRuleExactly) {
 
 // A prism along X over a diamond |y - 8.5| + |z - 8.5| <= 4: its slanted faces have normals with x = 0, and 16 rows
 // of centres lie exactly on them (so the rays run inside those faces and exactly through the diamond's edges in
-// projection). SPEC: with x out of the question, -z decides, then -y: a centre on a slanted face is inside iff
-// its z is below the axis. The caps at x = 2.5 and 12.5 are half-open. Rays along Y (vote) displace y first, so
-// they decide by y; rays along Z decide by z like X, so the vote follows X and disputes the ties where y and z differ.
+// projection). docs/conventions.md, "Grid placement": with x out of the question, -z decides, then -y: a centre on a
+// slanted face is inside iff its z is below the axis. The caps at x = 2.5 and 12.5 are half-open. Rays along Y (vote)
+// displace y first, so they decide by y; rays along Z decide by z like X, so the vote follows X and disputes the ties
+// where y and z differ.
 TEST(VoxelizeTies, diamondPrismWithFacesParallelToXFollowsZThenY) {
   const TriangleMesh mesh =
       combined(unitGridFrame(), test::prismAlongX({{12.5, 8.5}, {8.5, 12.5}, {4.5, 8.5}, {8.5, 4.5}}, 2.5, 12.5));

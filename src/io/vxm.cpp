@@ -1,0 +1,367 @@
+// .vxm, voxmod's own voxel file. It follows the thesis's run-length file (section 4.2.2): "the starting run-length is
+// always interpreted as of empty voxels ... and then follows the run-lengths for filled and empty voxels alternately",
+// with the runs taken over the x-fastest voxel order and stored as LEB128 varints, behind a PNG-style magic, a version
+// and a header CRC, and followed by a CRC-32 of the whole file. docs/file-format.md gives the layout byte by byte.
+//
+// Encoding finds the runs on whole 64-bit words of a row (emitRuns), so it costs O(words + runs), not O(voxels);
+// decoding fills runs with VoxelGrid::fillRun.
+#include <zlib.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "io/voxel_file_common.h"
+#include "vox/core/text.h"
+#include "vox/io/file_util.h"
+#include "vox/io/voxel_file.h"
+
+namespace vox::io {
+
+namespace {
+
+using voxel_file_detail::checkLayerMemory;
+using voxel_file_detail::crc32Of;
+using voxel_file_detail::emitRuns;
+using voxel_file_detail::encodeToMemory;
+using voxel_file_detail::Writer;
+
+Status checkDims(const Dims& d, const std::string& name) {
+  const int32_t k = VoxelGrid::kMaxDim;
+  if (d.nx < 1 || d.ny < 1 || d.nz < 1 || d.nx > k || d.ny > k || d.nz > k) {
+    return makeError(ErrorCode::kLimit,
+                     name + ": grid dimensions " + dimsText(d) + " are outside 1.." + std::to_string(k) + " per axis");
+  }
+  return Ok{};
+}
+
+// Voxel bits of row (y, z) as unpadded words: bit b of word w is voxel x = 64 w + b. Bits past nx are zero.
+void unpaddedRow(const VoxelGrid& grid, int32_t y, int32_t z, std::vector<uint64_t>& out) {
+  const uint64_t* row = grid.rowWords(y, z);
+  const int64_t wpr = grid.wordsPerRow();
+  const int64_t n = (int64_t(grid.nx()) + 63) / 64;
+  for (int64_t w = 0; w < n; ++w) {
+    const uint64_t hi = w + 1 < wpr ? row[w + 1] : 0;
+    out[size_t(w)] = (row[w] >> 1) | (hi << 63);
+  }
+  const int tail = grid.nx() & 63;
+  if (tail) out[size_t(n - 1)] &= (uint64_t(1) << tail) - 1;
+}
+
+template <class T>
+T loadLE(const uint8_t* p) {
+  T v;
+  std::memcpy(&v, p, sizeof(T));
+  if constexpr (std::endian::native == std::endian::big) {
+    if constexpr (sizeof(T) == 2) v = T(__builtin_bswap16(v));
+    if constexpr (sizeof(T) == 4) v = T(__builtin_bswap32(v));
+    if constexpr (sizeof(T) == 8) v = T(__builtin_bswap64(v));
+  }
+  return v;
+}
+
+constexpr uint8_t kVxmMagic[8] = {0x89, 'V', 'X', 'M', '\r', '\n', 0x1A, '\n'};
+constexpr size_t kVxmFixedBytes = 84;                            // magic .. body size, before the two strings
+constexpr size_t kVxmMinBytes = kVxmFixedBytes + 2 + 2 + 4 + 4;  // empty strings, header CRC, file CRC
+
+// Emits alternating runs, starting with an empty one, as varints.
+class RunEncoder {
+ public:
+  explicit RunEncoder(Writer& w) : w_(w) {}
+  void add(bool filled, uint64_t n) {
+    if (n == 0) return;
+    if (filled != state_) {
+      w_.varint(run_);
+      ++runs_;
+      run_ = 0;
+      state_ = filled;
+    }
+    run_ += n;
+    if (filled) filled_ += n;
+  }
+  void finish() {
+    w_.varint(run_);
+    ++runs_;
+  }
+  uint64_t runs() const { return runs_; }
+  uint64_t filled() const { return filled_; }
+
+ private:
+  Writer& w_;
+  bool state_ = false;
+  uint64_t run_ = 0;
+  uint64_t runs_ = 0;
+  uint64_t filled_ = 0;
+};
+
+// Parsed .vxm header fields.
+struct VxmHeader {
+  Dims dims;
+  GridFrame frame;
+  uint64_t filled = 0, runs = 0, body_bytes = 0;
+  size_t header_bytes = 0;  // offset of the body
+};
+
+// Reads one LEB128 varint of at most 10 bytes; false when it is truncated or overlong.
+bool readVarint(const uint8_t*& p, const uint8_t* end, uint64_t& v) {
+  v = 0;
+  for (int shift = 0; shift < 64 && p < end; shift += 7) {
+    const uint8_t b = *p++;
+    if (shift == 63 && b > 1) return false;  // would overflow 64 bits
+    v |= uint64_t(b & 0x7F) << shift;
+    if (!(b & 0x80)) return true;
+  }
+  return false;
+}
+
+// The .vxm encoder, streamed: the header with placeholder counts, the body in chunks of about a megabyte, then the
+// completed header written over the placeholder and the file CRC (of the final header and the body, joined with
+// crc32_combine) appended. Memory: one chunk and one row, whatever the grid.
+Status encodeVxmTo(const VoxelGrid& grid, ByteSink& sink) {
+  Writer w;
+  w.bytes.reserve(4096);
+  w.bytes.insert(w.bytes.end(), std::begin(kVxmMagic), std::end(kVxmMagic));
+  w.u32(kVxmVersion);
+  const size_t header_size_at = w.bytes.size();
+  w.u32(0);  // header size, patched below
+  w.u32(uint32_t(grid.nx()));
+  w.u32(uint32_t(grid.ny()));
+  w.u32(uint32_t(grid.nz()));
+  const GridFrame& f = grid.frame();
+  w.f64(f.origin.x);
+  w.f64(f.origin.y);
+  w.f64(f.origin.z);
+  w.f64(f.voxel_size);
+  const size_t counts_at = w.bytes.size();
+  w.u64(0);  // filled, runs and body size, patched below
+  w.u64(0);
+  w.u64(0);
+  w.text(f.units);
+  w.text(f.source);
+  const size_t header_crc_at = w.bytes.size();
+  w.u32(0);
+  w.patchU32(header_size_at, uint32_t(w.bytes.size()));
+  if (Status s = sink.append(w.bytes); !s.ok()) return s;
+
+  Writer body(&sink);
+  RunEncoder enc(body);
+  if (!grid.empty()) {
+    const uint64_t layer_voxels = uint64_t(grid.nx()) * uint64_t(grid.ny());
+    std::vector<uint64_t> words(size_t((int64_t(grid.nx()) + 63) / 64));
+    for (int32_t z = 0; z < grid.nz() && body.status().ok(); ++z) {
+      if (!grid.layerAllocated(z)) {
+        enc.add(false, layer_voxels);
+        continue;
+      }
+      for (int32_t y = 0; y < grid.ny(); ++y) {
+        unpaddedRow(grid, y, z, words);
+        emitRuns(words.data(), grid.nx(), enc);
+      }
+    }
+  }
+  enc.finish();
+  if (Status s = body.flush(); !s.ok()) return s;
+  w.patchU64(counts_at, enc.filled());
+  w.patchU64(counts_at + 8, enc.runs());
+  w.patchU64(counts_at + 16, body.streamed());
+  w.patchU32(header_crc_at, crc32Of(w.bytes.data(), header_crc_at));
+  if (Status s = sink.overwrite(0, w.bytes); !s.ok()) return s;
+  const uint32_t file_crc =
+      uint32_t(::crc32_combine(crc32Of(w.bytes.data(), w.bytes.size()), body.crc(), z_off_t(body.streamed())));
+  Writer tail;
+  tail.u32(file_crc);
+  return sink.append(tail.bytes);
+}
+
+// The header: magic and version, then the fields under their own CRC, so that a truncated body is told apart
+// from a damaged header.
+Result<VxmHeader> parseVxmHeader(std::span<const uint8_t> bytes, const std::string& name) {
+  const uint8_t* b = bytes.data();
+  const size_t size = bytes.size();
+  if (size < sizeof kVxmMagic || std::memcmp(b, kVxmMagic, sizeof kVxmMagic) != 0) {
+    if (size < sizeof kVxmMagic && std::memcmp(b, kVxmMagic, size) == 0 && size > 0) {
+      return makeError(ErrorCode::kParse, name + ": .vxm file truncated: " + std::to_string(size) + " bytes");
+    }
+    return makeError(ErrorCode::kParse, name + ": not a voxmod .vxm file (bad magic bytes)");
+  }
+  if (size < 12)
+    return makeError(ErrorCode::kParse, name + ": .vxm file truncated: " + std::to_string(size) + " bytes");
+  const uint32_t version = loadLE<uint32_t>(b + 8);
+  if (version > kVxmVersion) {
+    return makeError(ErrorCode::kUnsupported, name + ": written by a newer voxmod (format version " +
+                                                  std::to_string(version) + "; this build reads up to " +
+                                                  std::to_string(kVxmVersion) + ")");
+  }
+  if (version == 0) return makeError(ErrorCode::kCorrupt, name + ": invalid .vxm format version 0");
+  if (size < kVxmMinBytes) {
+    return makeError(ErrorCode::kParse,
+                     name + ": .vxm file truncated: " + std::to_string(size) + " bytes, shorter than any .vxm header");
+  }
+
+  VxmHeader h;
+  h.header_bytes = loadLE<uint32_t>(b + 12);
+  if (h.header_bytes < kVxmFixedBytes + 8 || h.header_bytes > kVxmFixedBytes + 8 + 2 * 0xFFFF) {
+    return makeError(ErrorCode::kCorrupt,
+                     name + ": .vxm header is corrupt (header size " + std::to_string(h.header_bytes) + ")");
+  }
+  if (size < h.header_bytes + 4) {
+    return makeError(ErrorCode::kParse, name + ": .vxm file truncated: the header needs " +
+                                            std::to_string(h.header_bytes) + " bytes but the file has " +
+                                            std::to_string(size));
+  }
+  const uint32_t header_crc = loadLE<uint32_t>(b + h.header_bytes - 4);
+  if (crc32Of(b, h.header_bytes - 4) != header_crc) {
+    return makeError(ErrorCode::kCorrupt, name + ": .vxm header is corrupt (CRC-32 mismatch)");
+  }
+  h.dims = {int32_t(loadLE<uint32_t>(b + 16)), int32_t(loadLE<uint32_t>(b + 20)), int32_t(loadLE<uint32_t>(b + 24))};
+  if (loadLE<uint32_t>(b + 16) > uint32_t(INT32_MAX) || loadLE<uint32_t>(b + 20) > uint32_t(INT32_MAX) ||
+      loadLE<uint32_t>(b + 24) > uint32_t(INT32_MAX)) {
+    h.dims = {-1, -1, -1};
+  }
+  h.frame.origin = {std::bit_cast<double>(loadLE<uint64_t>(b + 28)), std::bit_cast<double>(loadLE<uint64_t>(b + 36)),
+                    std::bit_cast<double>(loadLE<uint64_t>(b + 44))};
+  h.frame.voxel_size = std::bit_cast<double>(loadLE<uint64_t>(b + 52));
+  h.filled = loadLE<uint64_t>(b + 60);
+  h.runs = loadLE<uint64_t>(b + 68);
+  h.body_bytes = loadLE<uint64_t>(b + 76);
+  size_t at = kVxmFixedBytes;
+  for (std::string* s : {&h.frame.units, &h.frame.source}) {
+    const size_t n = loadLE<uint16_t>(b + at);
+    if (at + 2 + n + 4 > h.header_bytes) {
+      return makeError(ErrorCode::kCorrupt, name + ": .vxm header is corrupt (string lengths exceed the header)");
+    }
+    s->assign(reinterpret_cast<const char*>(b + at + 2), n);
+    at += 2 + n;
+  }
+  if (at + 4 != h.header_bytes) {
+    return makeError(ErrorCode::kCorrupt, name + ": .vxm header is corrupt (header size does not match its fields)");
+  }
+  if (Status s = checkDims(h.dims, name); !s.ok()) return s.error();
+  if (!std::isfinite(h.frame.origin.x) || !std::isfinite(h.frame.origin.y) || !std::isfinite(h.frame.origin.z) ||
+      !std::isfinite(h.frame.voxel_size) || !(h.frame.voxel_size > 0)) {
+    return makeError(ErrorCode::kCorrupt, name +
+                                              ": .vxm header has a non-finite origin or a voxel size that is not "
+                                              "positive");
+  }
+  return h;
+}
+
+// Whole-file size and CRC.
+Status checkVxmFile(std::span<const uint8_t> bytes, const VxmHeader& h, const std::string& name) {
+  const uint8_t* b = bytes.data();
+  const size_t size = bytes.size();
+  const uint64_t expected = uint64_t(h.header_bytes) + h.body_bytes + 4;
+  if (h.body_bytes > size || size < expected) {
+    return makeError(ErrorCode::kParse, name + ": .vxm file truncated: expected " + std::to_string(expected) +
+                                            " bytes but the file has " + std::to_string(size));
+  }
+  if (size > expected) {
+    return makeError(ErrorCode::kCorrupt,
+                     name + ": .vxm file has " + std::to_string(size - expected) + " unexpected bytes after its end");
+  }
+  const uint32_t stored = loadLE<uint32_t>(b + size - 4);
+  const uint32_t computed = crc32Of(b, size - 4);
+  if (stored != computed) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "CRC-32 mismatch (stored %08x, computed %08x)", stored, computed);
+    return makeError(ErrorCode::kCorrupt, name + ": .vxm file is corrupt: " + buf);
+  }
+  return Ok{};
+}
+
+// Pass 1: check the runs add up, and count the Z layers they fill, before allocating anything.
+Status checkVxmBody(const VxmHeader& h, const uint8_t* body, const uint8_t* body_end, const std::string& name,
+                    uint64_t memory_limit_bytes) {
+  const uint64_t total = uint64_t(h.dims.count());
+  const uint64_t layer_voxels = uint64_t(h.dims.nx) * uint64_t(h.dims.ny);
+  auto bodyError = [&](const std::string& what) {
+    return makeError(ErrorCode::kCorrupt, name + ": .vxm body is inconsistent: " + what);
+  };
+  const uint8_t* p = body;
+  uint64_t pos = 0, runs = 0, filled = 0;
+  int64_t layers = 0, last_layer = -1;
+  bool state = false;
+  while (p < body_end) {
+    uint64_t n;
+    if (!readVarint(p, body_end, n)) return bodyError("bad run length at body byte " + std::to_string(p - body));
+    if (n == 0 && runs > 0) return bodyError("empty run " + std::to_string(runs + 1));
+    if (n > total - pos) return bodyError("runs cover more than the " + std::to_string(total) + " voxels");
+    if (state && n > 0) {
+      filled += n;
+      const int64_t z0 = int64_t(pos / layer_voxels), z1 = int64_t((pos + n - 1) / layer_voxels);
+      if (z1 > last_layer) {
+        layers += z1 - std::max(z0, last_layer + 1) + 1;
+        last_layer = z1;
+      }
+    }
+    pos += n;
+    ++runs;
+    state = !state;
+  }
+  if (pos != total) {
+    return bodyError("runs cover " + std::to_string(pos) + " of " + std::to_string(total) + " voxels");
+  }
+  if (runs != h.runs || filled != h.filled) {
+    return bodyError("header says " + std::to_string(h.runs) + " runs and " + std::to_string(h.filled) +
+                     " filled voxels, body has " + std::to_string(runs) + " and " + std::to_string(filled));
+  }
+  if (Status s = checkLayerMemory(h.dims, layers, name, memory_limit_bytes); !s.ok()) return s.error();
+  return Ok{};
+}
+
+// Pass 2: fill the grid from a body that checkVxmBody accepted.
+void fillVxmBody(VoxelGrid& grid, const VxmHeader& h, const uint8_t* body, const uint8_t* body_end) {
+  const uint8_t* p = body;
+  uint64_t pos = 0;
+  bool state = false;
+  const uint64_t nx = uint64_t(h.dims.nx);
+  while (p < body_end) {
+    uint64_t n;
+    readVarint(p, body_end, n);
+    if (state) {
+      uint64_t start = pos;
+      const uint64_t end = pos + n;
+      while (start < end) {
+        const uint64_t row = start / nx;
+        const uint64_t x0 = start - row * nx;
+        const uint64_t x1 = std::min<uint64_t>(nx, x0 + (end - start));
+        grid.fillRun(int32_t(row % uint64_t(h.dims.ny)), int32_t(row / uint64_t(h.dims.ny)), int64_t(x0), int64_t(x1));
+        start += x1 - x0;
+      }
+    }
+    pos += n;
+    state = !state;
+  }
+}
+
+}  // namespace
+
+std::vector<uint8_t> encodeVxm(const VoxelGrid& grid) { return encodeToMemory(encodeVxmTo, grid); }
+
+Result<VoxelGrid> decodeVxm(std::span<const uint8_t> bytes, const std::string& name, uint64_t memory_limit_bytes) {
+  auto header = parseVxmHeader(bytes, name);
+  if (!header.ok()) return header.error();
+  const VxmHeader& h = header.value();
+  if (Status s = checkVxmFile(bytes, h, name); !s.ok()) return s.error();
+  const uint8_t* body = bytes.data() + h.header_bytes;
+  const uint8_t* body_end = body + h.body_bytes;
+  if (Status s = checkVxmBody(h, body, body_end, name, memory_limit_bytes); !s.ok()) return s.error();
+  VoxelGrid grid(h.dims, h.frame);
+  fillVxmBody(grid, h, body, body_end);
+  return grid;
+}
+
+Status saveVxm(const VoxelGrid& grid, const std::filesystem::path& path) {
+  if (grid.empty()) return makeError(ErrorCode::kInvalidArgument, path.string() + ": cannot save an empty grid");
+  return writeFileAtomic(path, [&](ByteSink& sink) { return encodeVxmTo(grid, sink); });
+}
+
+Result<VoxelGrid> loadVxm(const std::filesystem::path& path) {
+  auto bytes = readFileBytes(path);
+  if (!bytes.ok()) return bytes.error();
+  return decodeVxm(bytes.value(), path.string());
+}
+
+}  // namespace vox::io
