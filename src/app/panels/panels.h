@@ -1,5 +1,5 @@
 #pragma once
-// The window's panels and dialogs, each a function of the AppState (STYLE.md). Widgets edit params structs in the
+// The window's panels and dialogs, each a function of the AppState (docs/architecture.md, "Modules"). Widgets edit params structs in the
 // state and dispatch actions (actions.h) or call operations (operations.h); no panel loops over voxels.
 #include <imgui.h>
 
