@@ -6,6 +6,13 @@ find_package(nlohmann_json 3.10 REQUIRED)       # nlohmann-json3-dev: CLI --json
 find_package(CLI11 REQUIRED)                    # libcli11-dev: command-line parsing
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)   # libstb-dev: PNG writing (stbi_write_png lives in libstb.so)
+# libteem-dev: NRRD volumes (the reference implementation of the format). Its CMake config names the build machine's
+# paths, so the library and header are found directly.
+find_library(TEEM_LIBRARY teem REQUIRED)
+find_path(TEEM_INCLUDE_DIR teem/nrrd.h REQUIRED)
+add_library(Teem::teem UNKNOWN IMPORTED)
+set_target_properties(Teem::teem PROPERTIES IMPORTED_LOCATION "${TEEM_LIBRARY}"
+                                            INTERFACE_INCLUDE_DIRECTORIES "${TEEM_INCLUDE_DIR}")
 
 set(OpenGL_GL_PREFERENCE GLVND)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)   # libopengl-dev, libegl-dev
