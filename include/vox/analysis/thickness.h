@@ -1,0 +1,95 @@
+#pragma once
+// Local thickness (Hildebrand and Rüegsegger 1997), thin walls and hot spots, all from the exact distance field
+// (vox/analysis/distance.h). Definitions in docs/accuracy.md ("Distance and thickness"):
+//  - the inscribed ball of a filled voxel c: the voxel centres p with |p - c| < r(c), r(c) its distance (so the ball
+//    holds only filled voxels);
+//  - local thickness of a filled voxel p: 2 R(p), R(p) the largest r(c) over the inscribed balls that contain p,
+//    in model units;
+//  - thin walls: filled voxels thinner than a minimum wall, in 26-connected regions;
+//  - hot spots: regional maxima of the distance field that stand out by at least a voxel.
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "vox/analysis/distance.h"
+#include "vox/core/mesh.h"
+#include "vox/core/progress.h"
+#include "vox/core/result.h"
+#include "vox/core/voxel_grid.h"
+
+namespace vox {
+
+struct ThicknessParams {
+  int32_t histogram_bins = 32;  // equal bins over [0, max]
+};
+
+struct ThicknessStats {
+  int64_t voxels = 0;                       // filled voxels
+  double min = 0.0, max = 0.0, mean = 0.0;  // model units
+  std::vector<double> edges;                // histogram_bins + 1 edges, model units
+  std::vector<int64_t> counts;              // voxels per bin; a value equal to an inner edge goes to the bin above it
+};
+
+struct Thickness {
+  // Squared radius R^2 (voxel units^2) of the largest inscribed ball containing each filled voxel, over the distance
+  // field's box; 0 in empty voxels. Thickness = 2 R h.
+  DistanceField radius;
+  ThicknessStats stats;
+  int64_t ball_centres = 0;  // balls painted (the distance ridge left by the containment test)
+
+  // Local thickness of a voxel in model units (0 for empty voxels) and in voxels.
+  double model(int64_t x, int64_t y, int64_t z) const { return voxels(x, y, z) * radius.voxelSize(); }
+  double voxels(int64_t x, int64_t y, int64_t z) const { return 2.0 * radius.voxels(x, y, z); }
+};
+
+// Local thickness of every filled voxel from its distance field. Balls whose centre's ball lies inside a
+// neighbour's (r(c) + |c - n| <= r(n), n within two voxels) are skipped; the rest are painted slice by slice in
+// parallel. Cost: the volume of the painted balls; memory: a copy of the field (the overload taking the field by
+// value reuses it: pass std::move(field) when it is not needed afterwards).
+Result<Thickness> computeThickness(const DistanceField& distance, const ThicknessParams& params = {},
+                                   const ProgressFn& progress = {});
+Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessParams& params = {},
+                                   const ProgressFn& progress = {});
+
+// ---- Thin walls ----
+struct ThinWallRegion {
+  int64_t voxels = 0;
+  int64_t exposed_faces = 0;                     // faces of the region's voxels whose face neighbour is empty
+  double area = 0.0;                             // exposed_faces * h^2, model units^2
+  glm::ivec3 bbox_min_ijk{0}, bbox_max_ijk{-1};  // inclusive voxel indices
+  Box3d bbox;                                    // outer faces of those voxels, model units
+  double min = 0.0;                              // thinnest local thickness in the region, model units
+};
+struct ThinWalls {
+  double min_wall = 0.0;                // model units
+  int64_t voxels = 0;                   // filled voxels with thickness < min_wall
+  std::vector<ThinWallRegion> regions;  // 26-connected, largest (voxels) first
+};
+// Filled voxels whose local thickness is below min_wall (model units), grouped in 26-connected regions.
+Result<ThinWalls> findThinWalls(const Thickness& thickness, double min_wall, const ProgressFn& progress = {});
+
+// ---- Hot spots ----
+struct HotSpotParams {
+  // A regional maximum is reported when its dynamic (its radius minus the radius of the lowest saddle on the best
+  // path to a higher maximum) is at least this many voxels; smaller ones are discretisation noise.
+  double min_dynamic_voxels = 1.0;
+  // ... and isolated when the dynamic is at least this many voxels (a neck clearly thinner than the spot).
+  double isolation_voxels = 2.0;
+};
+struct HotSpot {
+  glm::dvec3 centre{0.0};  // model units: the mean of the plateau's voxel centres (SPEC section 1 placement)
+  glm::ivec3 voxel{0};     // the plateau voxel nearest that mean
+  int64_t plateau_voxels = 1;
+  double radius = 0.0;   // inscribed radius (the distance at the maximum), model units
+  double modulus = 0.0;  // Chvorinov modulus of the inscribed ball, radius / 3, model units
+  double dynamic = 0.0;  // radius minus saddle radius, model units (the global maximum: its radius)
+  double saddle = 0.0;   // radius at the saddle where it merges into a higher maximum, model units (0: never)
+  bool isolated = false;
+};
+// Regional maxima of the distance field (26-connected plateaus), largest radius first; the first is the global
+// maximum, the orientation-free core. Memory: 4 bytes per voxel of the field's box and 4 per filled voxel.
+Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const HotSpotParams& params = {},
+                                          const ProgressFn& progress = {});
+
+}  // namespace vox

@@ -1,0 +1,337 @@
+// Exact Euclidean distance transform (SPEC section 6), see vox/analysis/distance.h.
+//
+// Felzenszwalb and Huttenlocher (2012): the squared distance along a line is the lower envelope of the parabolas
+// (q - p)^2 + f(p) of its sites p, found in one sweep. Three passes: X from the bit words (a 1D distance to the
+// nearest site is plain run-length arithmetic), then Y and Z over the result in place. A zero of the line (a voxel
+// that is its own nearest site) beats every parabola of a site on its other side, so the line splits at its zeros
+// into pieces transformed on their own, each with the zeros that bound it as sites: the passes cost the runs of
+// nonzero values, not the box. Positions past the ends of a distance line are empty voxels (zeros); a clearance
+// line ends at the grid, past which nothing is filled.
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <glm/common.hpp>
+
+#include "analysis/progress_gate.h"
+#include "vox/analysis/distance.h"
+#include "vox/core/parallel.h"
+
+namespace vox {
+
+DistanceField::DistanceField(Dims grid_dims, GridFrame frame, glm::ivec3 box_min, Dims box_dims, uint32_t outside)
+    : grid_dims_(grid_dims), frame_(std::move(frame)), box_min_(box_min), box_dims_(box_dims), outside_(outside) {
+  if (box_dims_.count() > 0) {
+    data_.reset(static_cast<uint32_t*>(std::calloc(size_t(box_dims_.count()), sizeof(uint32_t))));
+  }
+}
+
+namespace {
+
+using analysis_detail::ProgressGate;
+constexpr uint32_t kInf = DistanceField::kInfinite;
+
+// First position in [from, end) whose bit equals `value` (end when none), in padded x.
+inline int64_t nextBit(const uint64_t* row, int64_t from, int64_t end, bool value) {
+  if (from >= end) return end;
+  int64_t w = from >> 6;
+  uint64_t bits = (value ? row[w] : ~row[w]) & (~uint64_t(0) << (from & 63));
+  while (!bits) {
+    ++w;
+    if (w * 64 >= end) return end;
+    bits = value ? row[w] : ~row[w];
+  }
+  return std::min(end, w * 64 + std::countr_zero(bits));
+}
+
+struct Box {
+  glm::ivec3 lo{0}, hi{0};  // [lo, hi)
+  bool empty() const { return hi.x <= lo.x || hi.y <= lo.y || hi.z <= lo.z; }
+};
+
+// Bounding box of the filled voxels (empty box when there are none), parallel over layers.
+Box filledBox(const VoxelGrid& g) {
+  const int threads = threadsFor(g.allocatedLayers() * g.wordsPerLayer());
+  std::vector<Box> part(size_t(threads), Box{glm::ivec3(INT32_MAX), glm::ivec3(INT32_MIN)});
+  const int64_t wpr = g.wordsPerRow();
+  parallelChunks(0, g.nz(), 1, threads, [&](int t, int64_t z0, int64_t z1) {
+    Box& b = part[size_t(t)];
+    for (int32_t z = int32_t(z0); z < int32_t(z1); ++z) {
+      if (!g.layerAllocated(z)) continue;
+      for (int32_t y = 0; y < g.ny(); ++y) {
+        const uint64_t* row = g.rowWords(y, z);
+        int64_t first = -1, last = -1;
+        for (int64_t w = 0; w < wpr; ++w) {
+          if (!row[w]) continue;
+          if (first < 0) first = w * 64 + std::countr_zero(row[w]);
+          last = w * 64 + 63 - std::countl_zero(row[w]);
+        }
+        if (first < 0) continue;
+        b.lo = glm::min(b.lo, glm::ivec3(int32_t(first - 1), y, z));
+        b.hi = glm::max(b.hi, glm::ivec3(int32_t(last), y + 1, z + 1));  // last padded bit = voxel last - 1
+      }
+    }
+  });
+  Box box{glm::ivec3(INT32_MAX), glm::ivec3(INT32_MIN)};
+  for (const Box& b : part) {
+    box.lo = glm::min(box.lo, b.lo);
+    box.hi = glm::max(box.hi, b.hi);
+  }
+  if (box.empty()) return Box{};
+  return box;
+}
+
+// Pass 1 along X: for each row of the box, the squared distance to the nearest site along the row.
+// to_empty: sites are the empty voxels (the box is the filled bounding box, so the row's runs end inside it).
+// Otherwise (clearance, box = grid) sites are the filled voxels; a row without one stays kInf.
+void passX(const VoxelGrid& g, DistanceField& f, bool to_empty, ProgressGate& gate) {
+  const glm::ivec3 lo = f.boxMin();
+  const Dims d = f.boxDims();
+  uint32_t* data = f.data();
+  const int threads = threadsFor(d.count() / 4);
+  std::atomic<int64_t> done{0};
+  parallelChunks(0, d.nz, 1, threads, [&](int, int64_t zb, int64_t ze) {
+    for (int64_t zi = zb; zi < ze; ++zi) {
+      if (gate.cancelled()) return;
+      const int32_t z = lo.z + int32_t(zi);
+      for (int32_t yi = 0; yi < d.ny; ++yi) {
+        const uint64_t* row = g.rowWords(lo.y + yi, z);
+        uint32_t* out = data + (int64_t(yi) + int64_t(d.ny) * zi) * d.nx;         // out[xp - begin]: voxel x = xp - 1
+        const int64_t begin = int64_t(lo.x) + 1, end = int64_t(lo.x) + d.nx + 1;  // padded x range of the box
+        if (to_empty) {
+          // runs of filled voxels [a, b) (padded x); the bits at a - 1 and b are empty
+          for (int64_t xp = begin; xp < end;) {
+            const int64_t a = nextBit(row, xp, end, true);
+            if (a >= end) break;
+            const int64_t b = nextBit(row, a, end + 1, false);  // the bit after the box is empty
+            for (int64_t q = a; q < b; ++q) {
+              const int64_t dist = std::min(q - (a - 1), b - q);
+              out[q - begin] = uint32_t(dist * dist);
+            }
+            xp = b;
+          }
+        } else {
+          // gaps of empty voxels [a, b) between filled runs; a - 1 is filled when a > begin, b when b < end
+          for (int64_t xp = begin; xp < end;) {
+            const int64_t a = nextBit(row, xp, end, false);
+            if (a >= end) break;
+            const int64_t b = nextBit(row, a, end, true);
+            const bool left = a > begin, right = b < end;
+            for (int64_t q = a; q < b; ++q) {
+              int64_t dist = INT64_MAX;
+              if (left) dist = q - (a - 1);
+              if (right) dist = std::min(dist, b - q);
+              out[q - begin] = dist == INT64_MAX ? kInf : uint32_t(dist * dist);
+            }
+            xp = b;
+          }
+        }
+      }
+      gate.report((double(done.fetch_add(1) + 1) / double(d.nz)) / 3.0);
+    }
+  });
+}
+
+// Scratch of one thread for the 1D transform of lines up to n long.
+struct LineScratch {
+  std::vector<int64_t> site;  // positions of the envelope's parabolas
+  std::vector<int64_t> val;   // their values
+  std::vector<double> from;   // where each parabola starts to be the lowest
+  explicit LineScratch(int64_t n) : site(size_t(n) + 2), val(size_t(n) + 2), from(size_t(n) + 3) {}
+};
+
+// Lower envelope over the sites of piece [a, b) of line f (n long): zeros at a - 1 and b when they lie in the line
+// or when `border` (ends count as zeros), and every finite value inside. Writes the piece in place.
+void envelopePiece(uint32_t* f, int64_t n, int64_t a, int64_t b, bool border, LineScratch& s) {
+  int64_t k = -1;
+  auto push = [&](int64_t q, int64_t fq) {
+    const double qq = double(fq + q * q);
+    while (k >= 0) {
+      const int64_t v = s.site[size_t(k)];
+      const double x = (qq - double(s.val[size_t(k)] + v * v)) / double(2 * (q - v));
+      if (x <= s.from[size_t(k)]) {
+        --k;
+        continue;
+      }
+      ++k;
+      s.site[size_t(k)] = q;
+      s.val[size_t(k)] = fq;
+      s.from[size_t(k)] = x;
+      return;
+    }
+    k = 0;
+    s.site[0] = q;
+    s.val[0] = fq;
+    s.from[0] = -std::numeric_limits<double>::infinity();
+  };
+  if (a > 0 || border) push(a - 1, 0);
+  for (int64_t q = a; q < b; ++q) {
+    if (f[q] != kInf) push(q, f[q]);
+  }
+  if (b < n || border) push(b, 0);
+  if (k < 0) return;  // no site: the piece stays infinite
+  int64_t j = 0;
+  for (int64_t q = a; q < b; ++q) {
+    while (j < k && s.from[size_t(j) + 1] <= double(q)) ++j;
+    const int64_t dq = q - s.site[size_t(j)];
+    f[q] = uint32_t(dq * dq + s.val[size_t(j)]);
+  }
+}
+
+// Transforms line f (n long) piece by piece between its zeros.
+void transformLine(uint32_t* f, int64_t n, bool border, LineScratch& s) {
+  for (int64_t q = 0; q < n;) {
+    if (f[q] == 0) {
+      ++q;
+      continue;
+    }
+    int64_t b = q;
+    while (b < n && f[b] != 0) ++b;
+    envelopePiece(f, n, q, b, border, s);
+    q = b;
+  }
+}
+
+// Passes 2 and 3: lines along Y (axis 1) or Z (axis 2), taken kTile neighbouring lines in x at a time (each step
+// along the line reads kTile consecutive values), transformed in per-thread scratch and written back. Returns the
+// largest finite value written (the last pass gives the field's maximum).
+uint32_t passYZ(DistanceField& f, int axis, bool border, ProgressGate& gate, double progress0) {
+  constexpr int64_t kTile = 16;
+  const Dims d = f.boxDims();
+  const int64_t nx = d.nx, ny = d.ny, nz = d.nz;
+  const int64_t len = axis == 1 ? ny : nz;
+  const int64_t outer = axis == 1 ? nz : ny;
+  const int64_t outer_stride = axis == 1 ? nx * ny : nx;
+  const int64_t line_stride = axis == 1 ? nx : nx * ny;
+  uint32_t* data = f.data();
+  const int threads = threadsFor(d.count() / 4);
+  std::vector<uint32_t> maxima(size_t(threads), 0);
+  std::atomic<int64_t> done{0};
+  parallelChunks(0, outer, 1, threads, [&](int t, int64_t ob, int64_t oe) {
+    LineScratch scratch(len);
+    std::vector<uint32_t> tile(size_t(kTile * len));
+    uint32_t mx = maxima[size_t(t)];
+    for (int64_t o = ob; o < oe; ++o) {
+      if (gate.cancelled()) return;
+      for (int64_t x0 = 0; x0 < nx; x0 += kTile) {
+        const int64_t w = std::min(kTile, nx - x0);
+        uint32_t* base = data + o * outer_stride + x0;
+        uint32_t any = 0;
+        for (int64_t q = 0; q < len; ++q) {
+          const uint32_t* src = base + q * line_stride;
+          for (int64_t j = 0; j < w; ++j) {
+            tile[size_t(j * len + q)] = src[j];
+            any |= src[j];
+          }
+        }
+        if (!any) continue;  // all zeros: already final
+        for (int64_t j = 0; j < w; ++j) transformLine(tile.data() + j * len, len, border, scratch);
+        for (int64_t q = 0; q < len; ++q) {
+          uint32_t* dst = base + q * line_stride;
+          for (int64_t j = 0; j < w; ++j) {
+            const uint32_t v = tile[size_t(j * len + q)];
+            dst[j] = v;
+            if (v != kInf && v > mx) mx = v;
+          }
+        }
+      }
+      gate.report(progress0 + (double(done.fetch_add(1) + 1) / double(outer)) / 3.0);
+    }
+    maxima[size_t(t)] = mx;
+  });
+  return *std::max_element(maxima.begin(), maxima.end());
+}
+
+Result<DistanceField> transform(const VoxelGrid& grid, bool to_empty, const ProgressFn& progress) {
+  const char* what = to_empty ? "distance transform" : "clearance transform";
+  if (grid.empty()) return makeError(ErrorCode::kInvalidArgument, std::string(what) + ": the grid is empty");
+  const Box filled = filledBox(grid);
+  Box box = filled;
+  if (!to_empty && !filled.empty()) box = Box{glm::ivec3(0), glm::ivec3(grid.nx(), grid.ny(), grid.nz())};
+  if (box.empty()) {
+    DistanceField f(grid.dims(), grid.frame(), glm::ivec3(0), Dims{}, to_empty ? 0 : kInf);
+    if (progress && !progress(1.0)) return makeError(ErrorCode::kCancelled, std::string(what) + " cancelled");
+    return f;
+  }
+  const glm::ivec3 size = box.hi - box.lo;
+  DistanceField f(grid.dims(), grid.frame(), box.lo, Dims{size.x, size.y, size.z}, to_empty ? 0 : kInf);
+  if (!f.data()) {
+    return makeError(ErrorCode::kLimit, std::string(what) + ": cannot allocate " +
+                                            std::to_string(f.memoryBytes() >> 20) + " MiB for the distances");
+  }
+  ProgressGate gate(progress);
+  auto cancelled = [&] { return makeError(ErrorCode::kCancelled, std::string(what) + " cancelled"); };
+  passX(grid, f, to_empty, gate);
+  if (gate.cancelled()) return cancelled();
+  passYZ(f, 1, to_empty, gate, 1.0 / 3.0);
+  if (gate.cancelled()) return cancelled();
+  uint32_t mx = passYZ(f, 2, to_empty, gate, 2.0 / 3.0);
+  if (gate.cancelled()) return cancelled();
+  f.setMaxSquared(mx);
+  if (!gate.report(1.0)) return cancelled();
+  return f;
+}
+
+}  // namespace
+
+Result<DistanceField> computeDistance(const VoxelGrid& grid, const ProgressFn& progress) {
+  return transform(grid, true, progress);
+}
+
+Result<DistanceField> computeClearance(const VoxelGrid& grid, const ProgressFn& progress) {
+  return transform(grid, false, progress);
+}
+
+VoxelGrid peelByDistance(const VoxelGrid& grid, const DistanceField& distance, double distance_model) {
+  VoxelGrid out = grid;
+  if (grid.empty() || distance.boxDims().count() == 0) return out;
+  // Largest squared distance (voxel units^2) whose distance in model units, sqrt(s) * h, is at most distance_model.
+  const double h = grid.voxelSize();
+  auto within = [&](int64_t s) { return std::sqrt(double(s)) * h <= distance_model; };
+  int64_t smax = int64_t(std::floor(std::min(distance_model / h * (distance_model / h), 1.0e18)));
+  while (within(smax + 1)) ++smax;
+  while (smax > 0 && !within(smax)) --smax;
+  if (smax <= 0) return out;
+  const glm::ivec3 lo = distance.boxMin();
+  const Dims d = distance.boxDims();
+  const uint32_t* data = distance.data();
+  const int threads = threadsFor(d.count() / 4);
+  parallelChunks(0, d.nz, 1, threads, [&](int, int64_t zb, int64_t ze) {
+    for (int64_t zi = zb; zi < ze; ++zi) {
+      const int32_t z = lo.z + int32_t(zi);
+      if (!grid.layerAllocated(z)) continue;
+      for (int32_t yi = 0; yi < d.ny; ++yi) {
+        const uint32_t* row = data + (int64_t(yi) + int64_t(d.ny) * zi) * d.nx;
+        uint64_t* words = nullptr;
+        for (int32_t xi = 0; xi < d.nx; ++xi) {
+          const uint32_t s = row[xi];
+          if (s == 0 || int64_t(s) > smax) continue;
+          if (!words) words = out.mutableRowWords(lo.y + yi, z);
+          const int64_t xp = int64_t(lo.x) + xi + 1;
+          words[xp >> 6] &= ~(uint64_t(1) << (xp & 63));
+        }
+      }
+    }
+  });
+  out.releaseEmptyLayers();
+  return out;
+}
+
+Result<VoxelGrid> peelByDistance(const VoxelGrid& grid, double distance_model, const ProgressFn& progress) {
+  if (!(distance_model >= 0) || !std::isfinite(distance_model)) {
+    return makeError(ErrorCode::kInvalidArgument, "peel by distance: the distance must be a number >= 0");
+  }
+  ProgressFn scaled;
+  if (progress) scaled = [&](double f) { return progress(0.9 * f); };
+  auto dist = computeDistance(grid, scaled);
+  if (!dist) return dist.error();
+  VoxelGrid out = peelByDistance(grid, *dist, distance_model);
+  if (progress && !progress(1.0)) return makeError(ErrorCode::kCancelled, "peel by distance cancelled");
+  return out;
+}
+
+}  // namespace vox

@@ -1,0 +1,31 @@
+#pragma once
+// Progress from worker threads (vox/core/progress.h): calls to the callback are serialised, and once it asks to
+// stop every worker sees cancelled() and winds down.
+#include <atomic>
+#include <mutex>
+
+#include "vox/core/progress.h"
+
+namespace vox::analysis_detail {
+
+class ProgressGate {
+ public:
+  explicit ProgressGate(const ProgressFn& fn) : fn_(fn) {}
+  // Reports `fraction` (clamped to [0, 1]); false once the callback has asked to stop.
+  bool report(double fraction) {
+    if (cancelled_.load(std::memory_order_relaxed)) return false;
+    if (!fn_) return true;
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (cancelled_.load(std::memory_order_relaxed)) return false;
+    if (!fn_(fraction < 0 ? 0.0 : (fraction > 1 ? 1.0 : fraction))) cancelled_.store(true);
+    return !cancelled_.load();
+  }
+  bool cancelled() const { return cancelled_.load(std::memory_order_relaxed); }
+
+ private:
+  const ProgressFn& fn_;
+  std::mutex mutex_;
+  std::atomic<bool> cancelled_{false};
+};
+
+}  // namespace vox::analysis_detail
