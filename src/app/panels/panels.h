@@ -1,6 +1,7 @@
 #pragma once
-// The window's panels and dialogs, each a function of the AppState (docs/architecture.md, "Modules"). Widgets edit params structs in the
-// state and dispatch actions (actions.h) or call operations (operations.h); no panel loops over voxels.
+// The window's panels and dialogs, each a function of the AppState (docs/architecture.md, "Modules"). Widgets edit
+// params structs in the state and dispatch actions (actions.h) or call operations (operations.h); no panel loops over
+// voxels.
 #include <imgui.h>
 
 #include "app/app_state.h"
@@ -41,4 +42,11 @@ void drawControlsDialog(AppState& state);  // Help > Mouse and keyboard
 // Progress of the running load or voxelization, with Cancel.
 void drawJobWindow(AppState& state);
 
+// ---- Parts the panel files share (each defined in the file named) ----
+
+// section_image.cpp: image axes of a section (vox/analysis/analysis.h): which grid axis runs right and which runs up.
+struct ImageAxes {
+  int right, up;
+};
+ImageAxes imageAxes(Axis a);
 }  // namespace vox::app
