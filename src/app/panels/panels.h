@@ -49,4 +49,8 @@ struct ImageAxes {
   int right, up;
 };
 ImageAxes imageAxes(Axis a);
+
+// xray_colour_bar.cpp: the colour bar beside the X-ray map drawn at map0 with the given size: 0 at the bottom, the
+// maximum at the top. Returns its height.
+float drawXrayColourBar(const XrayResult& x, const ScalarMapLegend& legend, ImVec2 map0, ImVec2 size);
 }  // namespace vox::app
