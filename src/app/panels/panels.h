@@ -53,4 +53,9 @@ ImageAxes imageAxes(Axis a);
 // xray_colour_bar.cpp: the colour bar beside the X-ray map drawn at map0 with the given size: 0 at the bottom, the
 // maximum at the top. Returns its height.
 float drawXrayColourBar(const XrayResult& x, const ScalarMapLegend& legend, ImVec2 map0, ImVec2 size);
+
+// dialogs.cpp: the next window appears at the middle of the main viewport.
+void centreNextWindow();
+// voxelize_plan.cpp: the Voxelize dialog's plan and warnings for the mesh; returns whether Voxelize can start.
+bool drawVoxelizePlan(const AppState& state, const VoxelizeDialog& d, const MeshSource& mesh);
 }  // namespace vox::app
