@@ -44,6 +44,21 @@ void drawJobWindow(AppState& state);
 
 // ---- Parts the panel files share (each defined in the file named) ----
 
+// frame.cpp, status_bar.cpp: the flags of the fixed windows of the layout.
+inline constexpr ImGuiWindowFlags kFixedWindow = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                                 ImGuiWindowFlags_NoSavedSettings |
+                                                 ImGuiWindowFlags_NoBringToFrontOnFocus;
+
+// image_layout.cpp: how the main area is shared between the 3D view and the 2D image of the Section and X-ray
+// panels: beside or below the view, whichever shows the image larger, with the image taking the room it can use
+// (35-60%).
+struct ImageLayout {
+  ImVec2 view;
+  ImVec2 image{0.0f, 0.0f};  // zero: no image
+  ImVec2 image_offset{0.0f, 0.0f};
+};
+ImageLayout layoutImage(AppState& state, float w, float h);
+
 // section_image.cpp: image axes of a section (vox/analysis/analysis.h): which grid axis runs right and which runs up.
 struct ImageAxes {
   int right, up;
