@@ -2,6 +2,9 @@
 // The window's panels and dialogs, each a function of the AppState (docs/architecture.md, "Modules"). Widgets edit
 // params structs in the state and dispatch actions (actions.h) or call operations (operations.h); no panel loops over
 // voxels.
+#include <string>
+#include <vector>
+
 #include <imgui.h>
 
 #include "app/app_state.h"
@@ -73,4 +76,17 @@ float drawXrayColourBar(const XrayResult& x, const ScalarMapLegend& legend, ImVe
 void centreNextWindow();
 // voxelize_plan.cpp: the Voxelize dialog's plan and warnings for the mesh; returns whether Voxelize can start.
 bool drawVoxelizePlan(const AppState& state, const VoxelizeDialog& d, const MeshSource& mesh);
+
+// file_listing.cpp: the file browser's listing and the widgets that move through it.
+// The name ends in one of the extensions (lower case, with the dot), whatever the name's case.
+bool matchesExtension(const std::string& name, const std::vector<std::string>& extensions);
+// Lists the browser's directory into its entries: folders first, then the files that match the purpose (all with
+// "All files"), hidden ones left out; a directory that cannot be read sets its error.
+void listDirectory(FileBrowser& b);
+// Up, Home and the path field.
+void drawBrowserNavigation(FileBrowser& b);
+// The entries above a footer of the given height; returns whether a file was double-clicked (to open or
+// save it).
+bool drawBrowserEntries(FileBrowser& b, float footer);
+
 }  // namespace vox::app
