@@ -243,6 +243,46 @@ void drawToolbar(AppState& state, ImVec2 pos) {
   }
 }
 
+// Mouse: an invisible button over the whole view takes the drags, so they never reach the panels below it. Drags
+// orbit or pan, the wheel zooms, a double-click fits and Ctrl+click picks a voxel. Returns whether a drag is on.
+bool handleMouse(AppState& state, ImVec2 pos, int w, int h, double aspect) {
+  ImGui::InvisibleButton(
+      "##view", ImVec2(float(w), float(h)),
+      ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
+  const ImGuiIO& io = ImGui::GetIO();
+  bool dragging = false;
+  if (ImGui::IsItemActive()) {
+    const ImVec2 d = io.MouseDelta;
+    const bool pan = ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle) ||
+                     (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift);
+    if (d.x != 0.0f || d.y != 0.0f) {
+      if (pan) {
+        state.view.camera.pan(d.x, d.y, double(h));
+      } else {
+        state.view.camera.orbit(-d.x * kOrbitDegreesPerPixel, d.y * kOrbitDegreesPerPixel);
+      }
+    }
+    dragging = true;
+  }
+  if (ImGui::IsItemHovered()) {
+    if (io.MouseWheel != 0.0f) state.view.camera.zoom(std::pow(kZoomPerWheelStep, double(io.MouseWheel)));
+    if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) state.view.fit_pending = true;
+    // Ctrl+click (a click, not a drag) picks the voxel under the cursor for measuring.
+    if (io.KeyCtrl && ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f &&
+        state.model_bounds) {
+      const glm::dmat4 inv = glm::inverse(state.view.camera.viewProjection(aspect, *state.model_bounds));
+      const double nx = 2.0 * double(io.MousePos.x - pos.x) / double(w) - 1.0;
+      const double ny = 1.0 - 2.0 * double(io.MousePos.y - pos.y) / double(h);
+      const auto unproject = [&](double z) {
+        const glm::dvec4 p = inv * glm::dvec4(nx, ny, z, 1.0);
+        return glm::dvec3(p) / p.w;
+      };
+      if (const auto v = pickVoxel(state.model, unproject(-1.0), unproject(1.0))) addMeasurePick(state, *v);
+    }
+  }
+  return dragging;
+}
+
 }  // namespace
 
 Status initViewport(AppState& state) {
@@ -289,41 +329,7 @@ void drawViewport(AppState& state) {
   vp.aspect = aspect;
   fitIfPending(state, aspect);
 
-  // Mouse: an invisible button over the whole view takes the drags, so they never reach the panels below it.
-  ImGui::InvisibleButton(
-      "##view", ImVec2(float(w), float(h)),
-      ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
-  const ImGuiIO& io = ImGui::GetIO();
-  bool dragging = false;
-  if (ImGui::IsItemActive()) {
-    const ImVec2 d = io.MouseDelta;
-    const bool pan = ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle) ||
-                     (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift);
-    if (d.x != 0.0f || d.y != 0.0f) {
-      if (pan) {
-        state.view.camera.pan(d.x, d.y, double(h));
-      } else {
-        state.view.camera.orbit(-d.x * kOrbitDegreesPerPixel, d.y * kOrbitDegreesPerPixel);
-      }
-    }
-    dragging = true;
-  }
-  if (ImGui::IsItemHovered()) {
-    if (io.MouseWheel != 0.0f) state.view.camera.zoom(std::pow(kZoomPerWheelStep, double(io.MouseWheel)));
-    if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) state.view.fit_pending = true;
-    // Ctrl+click (a click, not a drag) picks the voxel under the cursor for measuring.
-    if (io.KeyCtrl && ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f &&
-        state.model_bounds) {
-      const glm::dmat4 inv = glm::inverse(state.view.camera.viewProjection(aspect, *state.model_bounds));
-      const double nx = 2.0 * double(io.MousePos.x - pos.x) / double(w) - 1.0;
-      const double ny = 1.0 - 2.0 * double(io.MousePos.y - pos.y) / double(h);
-      const auto unproject = [&](double z) {
-        const glm::dvec4 p = inv * glm::dvec4(nx, ny, z, 1.0);
-        return glm::dvec3(p) / p.w;
-      };
-      if (const auto v = pickVoxel(state.model, unproject(-1.0), unproject(1.0))) addMeasurePick(state, *v);
-    }
-  }
+  const bool dragging = handleMouse(state, pos, w, h, aspect);
   fitIfPending(state, aspect);
   vp.interacting = vp.interacting || dragging;
   // Coarser points while something moves; at rest the view refines (drawParams: the point budget of each case).

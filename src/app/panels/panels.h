@@ -2,6 +2,9 @@
 // The window's panels and dialogs, each a function of the AppState (docs/architecture.md, "Modules"). Widgets edit
 // params structs in the state and dispatch actions (actions.h) or call operations (operations.h); no panel loops over
 // voxels.
+#include <string>
+#include <vector>
+
 #include <imgui.h>
 
 #include "app/app_state.h"
@@ -41,5 +44,49 @@ void drawAboutDialog(AppState& state);
 void drawControlsDialog(AppState& state);  // Help > Mouse and keyboard
 // Progress of the running load or voxelization, with Cancel.
 void drawJobWindow(AppState& state);
+
+// ---- Parts the panel files share (each defined in the file named) ----
+
+// frame.cpp, status_bar.cpp: the flags of the fixed windows of the layout.
+inline constexpr ImGuiWindowFlags kFixedWindow = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                                 ImGuiWindowFlags_NoSavedSettings |
+                                                 ImGuiWindowFlags_NoBringToFrontOnFocus;
+
+// image_layout.cpp: how the main area is shared between the 3D view and the 2D image of the Section and X-ray
+// panels: beside or below the view, whichever shows the image larger, with the image taking the room it can use
+// (35-60%).
+struct ImageLayout {
+  ImVec2 view;
+  ImVec2 image{0.0f, 0.0f};  // zero: no image
+  ImVec2 image_offset{0.0f, 0.0f};
+};
+ImageLayout layoutImage(AppState& state, float w, float h);
+
+// section_image.cpp: image axes of a section (vox/analysis/analysis.h): which grid axis runs right and which runs up.
+struct ImageAxes {
+  int right, up;
+};
+ImageAxes imageAxes(Axis a);
+
+// xray_colour_bar.cpp: the colour bar beside the X-ray map drawn at map0 with the given size: 0 at the bottom, the
+// maximum at the top. Returns its height.
+float drawXrayColourBar(const XrayResult& x, const ScalarMapLegend& legend, ImVec2 map0, ImVec2 size);
+
+// dialogs.cpp: the next window appears at the middle of the main viewport.
+void centreNextWindow();
+// voxelize_plan.cpp: the Voxelize dialog's plan and warnings for the mesh; returns whether Voxelize can start.
+bool drawVoxelizePlan(const AppState& state, const VoxelizeDialog& d, const MeshSource& mesh);
+
+// file_listing.cpp: the file browser's listing and the widgets that move through it.
+// The name ends in one of the extensions (lower case, with the dot), whatever the name's case.
+bool matchesExtension(const std::string& name, const std::vector<std::string>& extensions);
+// Lists the browser's directory into its entries: folders first, then the files that match the purpose (all with
+// "All files"), hidden ones left out; a directory that cannot be read sets its error.
+void listDirectory(FileBrowser& b);
+// Up, Home and the path field.
+void drawBrowserNavigation(FileBrowser& b);
+// The entries above a footer of the given height; returns whether a file was double-clicked (to open or
+// save it).
+bool drawBrowserEntries(FileBrowser& b, float footer);
 
 }  // namespace vox::app

@@ -1,0 +1,54 @@
+// How the main area is shared between the 3D view and the 2D image of the Section and X-ray panels (ImageLayout,
+// panels.h).
+#include <algorithm>
+#include <cmath>
+
+#include <imgui.h>
+
+#include "app/operations.h"
+#include "app/panels/panels.h"
+
+namespace vox::app {
+namespace {
+
+// Magnification of an image made of a fixed part (legend, labels) and a part that scales (the voxels), in an area.
+// Whole numbers above 1, so every voxel covers the same number of pixels.
+float fitScale(ImVec2 fixed, ImVec2 scalable, ImVec2 area) {
+  const float s = std::min((area.x - fixed.x) / scalable.x, (area.y - fixed.y) / scalable.y);
+  return s >= 1.0f ? std::floor(s) : std::max(s, 0.05f);
+}
+
+}  // namespace
+
+ImageLayout layoutImage(AppState& state, float w, float h) {
+  ImageLayout l;
+  l.view = ImVec2(w, h);
+  if (state.model.empty() || (state.panel != Panel::kSection && state.panel != Panel::kXray)) return l;
+  const float text = 3.0f * ImGui::GetTextLineHeightWithSpacing();  // title and read-out lines around the image
+  constexpr float kMost = 0.6f, kLeast = 0.35f;
+  ImVec2 fixed(40.0f, text + 16.0f), scalable(1.0f, 1.0f);
+  if (state.panel == Panel::kXray) {
+    const XrayResult* x = currentXray(state);
+    if (!x) return l;  // not computed yet: the whole area for the 3D view
+    fixed = ImVec2(xrayLegendSize().x + 40.0f, text + 16.0f);
+    scalable = ImVec2(float(x->thickness.width), float(x->thickness.height));
+  } else if (const Section* s = currentSection(state)) {
+    scalable = ImVec2(float(s->mask.width), float(s->mask.height));
+  }
+  const float side = fitScale(fixed, scalable, ImVec2(kMost * w, h));
+  const float stacked = fitScale(fixed, scalable, ImVec2(w, kMost * h));
+  if (stacked >= side) {
+    const float ih = std::clamp(fixed.y + scalable.y * stacked, kLeast * h, kMost * h);
+    l.image = ImVec2(w, std::floor(ih));
+    l.view = ImVec2(w, h - l.image.y);
+    l.image_offset = ImVec2(0.0f, l.view.y);
+  } else {
+    const float iw = std::clamp(fixed.x + scalable.x * side, kLeast * w, kMost * w);
+    l.image = ImVec2(std::floor(iw), h);
+    l.view = ImVec2(w - l.image.x, h);
+    l.image_offset = ImVec2(l.view.x, 0.0f);
+  }
+  return l;
+}
+
+}  // namespace vox::app
