@@ -184,7 +184,9 @@ TEST(Thickness, tubeCylinderSphereAndLBracket) {
     // every voxel of the middle slice lies in a ball of the axis
     for (int y = 0; y < 24; ++y) {
       for (int x = 0; x < 24; ++x) {
-        if (g.get(x, y, 25)) EXPECT_DOUBLE_EQ(t.voxels(x, y, 25), t.voxels(12, 12, 25));
+        if (g.get(x, y, 25)) {
+          EXPECT_DOUBLE_EQ(t.voxels(x, y, 25), t.voxels(12, 12, 25));
+        }
       }
     }
   }
