@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "cli/model_input.h"
 #include "vox/analysis/analysis.h"
+#include "vox/analysis/distance.h"
 #include "vox/core/units.h"
 #include "vox/io/figure.h"
 #include "vox/io/file_util.h"
@@ -17,18 +18,6 @@
 
 namespace vox::cli {
 namespace {
-
-struct Common {
-  std::string file;
-  bool json = false;
-  MeshOptions mesh;
-};
-
-void addCommon(CLI::App& sub, Common& c, const std::string& mode_names = "--mode,--fill-mode") {
-  sub.add_option("FILE", c.file, "Voxel file (.vxm, .binvox) or mesh (.stl, voxelized with --res)")->required();
-  sub.add_flag("--json", c.json, "Print one JSON object on stdout");
-  addMeshOptions(sub, c.mesh, mode_names);
-}
 
 std::string materialNames() {
   std::string names;
@@ -54,7 +43,7 @@ CLI::Validator xrayModeWords() { return enumWords<XrayMode>(parseXrayMode, "min|
 
 // ---- section ----
 struct SectionOptions {
-  Common c;
+  CommonOptions c;
   SectionParams params;
   std::string out;
   int32_t scale = 1;
@@ -84,16 +73,37 @@ int runSection(const SectionOptions& o) {
 
 // ---- peel ----
 struct PeelOptions {
-  Common c;
+  CommonOptions c;
   int32_t layers = 1;
   bool all = false;
+  double distance = -1.0;  // model units; >= 0: round skin removal instead of layers
   std::string out;
 };
+
+// --distance D: every filled voxel within D of the outside goes (the Euclidean peel, docs/accuracy.md).
+int runPeelByDistance(const PeelOptions& o, const LoadedModel& model, Output& out) {
+  const int64_t before = model.grid.filledCount();
+  auto r = peelByDistance(model.grid, o.distance, terminalProgress("distance"));
+  if (!r) return out.fail(r.error());
+  if (!o.out.empty()) {
+    if (auto s = io::saveVoxelFile(*r, o.out); !s) return out.fail(s.error());
+  }
+  const int64_t left = r->filledCount();
+  auto& d = out.data();
+  d["distance"] = o.distance;
+  d["removed"] = before - left;
+  d["remaining"] = left;
+  if (!o.out.empty()) d["output"] = o.out;
+  out.say("peeled everything within " + significant(o.distance) + " " + model.grid.frame().units +
+          " of the outside: " + std::to_string(before - left) + " voxels removed, " + std::to_string(left) + " remain");
+  return out.finish();
+}
 
 int runPeel(const PeelOptions& o) {
   Output out(o.c.json);
   auto model = loadModel(o.c.file, o.c.mesh, out);
   if (!model) return out.fail(model.error());
+  if (o.distance >= 0.0) return runPeelByDistance(o, *model, out);
   PeelParams p;
   p.layers = o.layers;
   p.all = o.all;
@@ -125,7 +135,7 @@ int runPeel(const PeelOptions& o) {
 
 // ---- xray ----
 struct XrayOptions {
-  Common c;
+  CommonOptions c;
   XrayParams params;
   std::string out, csv;
   int32_t scale = 1;
@@ -173,7 +183,7 @@ int runXray(const XrayOptions& o) {
 
 // ---- mass ----
 struct MassOptions {
-  Common c;
+  CommonOptions c;
   double density = 0.0;  // kg/m^3; 0: unit density only
   std::string material;
 };
@@ -257,7 +267,7 @@ int runMass(const MassOptions& o) {
 
 void addSectionCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<SectionOptions>();
-  addCommon(sub, o->c);
+  addCommonOptions(sub, o->c);
   sub.add_option("--axis", o->params.axis, "Section normal: x, y or z")->required()->transform(axisWords());
   sub.add_option("--index", o->params.index, "Voxel index along the axis (0-based)")->required();
   sub.add_option("-o,--output", o->out, "Output PNG")->required();
@@ -267,15 +277,20 @@ void addSectionCommand(CLI::App& sub, CommandContext& ctx) {
 
 void addPeelCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<PeelOptions>();
-  addCommon(sub, o->c);
+  addCommonOptions(sub, o->c);
   auto* layers =
       sub.add_option("--layers", o->layers, "Number of skin layers to remove")->check(CLI::NonNegativeNumber);
   auto* all = sub.add_flag("--all", o->all, "Peel until nothing is left (reports the core)");
+  auto* distance = sub.add_option("--distance", o->distance,
+                                  "Remove every voxel within this distance of the outside (model units; round, the "
+                                  "same in every orientation)")
+                       ->check(CLI::NonNegativeNumber);
   layers->excludes(all);
+  distance->excludes(layers)->excludes(all);
   sub.add_option("-o,--output", o->out, "Write the remaining voxels to this voxel file");
-  sub.callback([o, layers, all, &ctx] {
-    if (layers->count() == 0 && all->count() == 0) {
-      std::fprintf(stderr, "voxmod peel: give --layers N or --all\n");
+  sub.callback([o, layers, all, distance, &ctx] {
+    if (layers->count() == 0 && all->count() == 0 && distance->count() == 0) {
+      std::fprintf(stderr, "voxmod peel: give --layers N, --all or --distance D\n");
       ctx.exit_code = kExitUsage;
       return;
     }
@@ -285,7 +300,7 @@ void addPeelCommand(CLI::App& sub, CommandContext& ctx) {
 
 void addXrayCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<XrayOptions>();
-  addCommon(sub, o->c, "--fill-mode");  // --mode is the X-ray mode here (docs/conventions.md, "Command line")
+  addCommonOptions(sub, o->c, "--fill-mode");  // --mode is the X-ray mode here (docs/conventions.md, "Command line")
   sub.add_option("--axis", o->params.axis, "Ray direction: x, y or z")->required()->transform(axisWords());
   sub.add_option("--mode", o->params.mode, "Per ray: min, max or total thickness")
       ->required()
@@ -298,7 +313,7 @@ void addXrayCommand(CLI::App& sub, CommandContext& ctx) {
 
 void addMassCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<MassOptions>();
-  addCommon(sub, o->c);
+  addCommonOptions(sub, o->c);
   auto* density = sub.add_option("--density", o->density, "Density in kg/m^3, for the mass in kg (needs --units)")
                       ->check(CLI::PositiveNumber);
   sub.add_option("--material", o->material, "A common material's density instead: " + materialNames())

@@ -11,6 +11,7 @@ void addSectionCommand(CLI::App& sub, CommandContext& ctx);
 void addPeelCommand(CLI::App& sub, CommandContext& ctx);
 void addXrayCommand(CLI::App& sub, CommandContext& ctx);
 void addMassCommand(CLI::App& sub, CommandContext& ctx);
+void addThicknessCommand(CLI::App& sub, CommandContext& ctx);
 void addRenderCommand(CLI::App& sub, CommandContext& ctx);
 void addConvertCommand(CLI::App& sub, CommandContext& ctx);
 }  // namespace vox::cli

@@ -17,6 +17,8 @@ const std::vector<Command>& commands() {
       {"peel", "Remove skin layers (one, N, or all down to the core)", addPeelCommand},
       {"xray", "X-ray thickness map (min, max or total material per ray) as PNG and CSV", addXrayCommand},
       {"mass", "Volume, centroid, inertia tensor and bounding box", addMassCommand},
+      {"thickness", "Wall thickness: exact distance, local thickness, thin walls and hot spots (NRRD, PNG)",
+       addThicknessCommand},
       {"render", "Render the surface voxels as shaded points to a PNG (headless)", addRenderCommand},
       {"convert", "Convert between voxel formats (.vxm, .binvox)", addConvertCommand},
   };

@@ -13,6 +13,12 @@
 
 namespace vox::cli {
 
+void addCommonOptions(CLI::App& sub, CommonOptions& c, const std::string& mode_names) {
+  sub.add_option("FILE", c.file, "Voxel file (.vxm, .binvox) or mesh (.stl, voxelized with --res)")->required();
+  sub.add_flag("--json", c.json, "Print one JSON object on stdout");
+  addMeshOptions(sub, c.mesh, mode_names);
+}
+
 void addMeshOptions(CLI::App& sub, MeshOptions& options, const std::string& mode_names) {
   auto* res = sub.add_option("--res", options.params.resolution,
                              "For a mesh FILE: voxels along the longest axis (1-4096, default 200)");

@@ -48,6 +48,14 @@ Result<VoxelizeParams> voxelizeParams(const MeshOptions& options);
 // Reads FILE; messages and warnings go through `out`. Progress goes to stderr when it is a terminal.
 Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptions& options, Output& out);
 
+// What every analysis subcommand takes: FILE (a voxel file, or a mesh voxelized with the mesh options) and --json.
+struct CommonOptions {
+  std::string file;
+  bool json = false;
+  MeshOptions mesh;
+};
+void addCommonOptions(CLI::App& sub, CommonOptions& c, const std::string& mode_names = "--mode,--fill-mode");
+
 // Progress printer for a terminal: "voxelizing  42%" on stderr, rewritten in place; silent otherwise.
 ProgressFn terminalProgress(const std::string& label);
 

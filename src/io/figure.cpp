@@ -125,9 +125,10 @@ ScalarMapFigure drawScalarMapFigure(const Image2D<int32_t>& values, int64_t max_
   const std::vector<int64_t> ticks = colourBarTicks(max_value);
   std::vector<std::string> value_labels, unit_labels;
   int value_col = textWidth(legend.value_name, ts), unit_col = textWidth(units, ts);
+  const int64_t divisor = std::max<int64_t>(legend.value_divisor, 1);
   for (int64_t v : ticks) {
-    value_labels.push_back(std::to_string(v));
-    unit_labels.push_back(fmt("%.4g", double(v) * legend.units_per_value));
+    value_labels.push_back(divisor == 1 ? std::to_string(v) : fmt("%.4g", double(v) / double(divisor)));
+    unit_labels.push_back(fmt("%.4g", double(v) / double(divisor) * legend.units_per_value));
     value_col = std::max(value_col, textWidth(value_labels.back(), ts));
     unit_col = std::max(unit_col, textWidth(unit_labels.back(), ts));
   }

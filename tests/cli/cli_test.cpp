@@ -1,5 +1,7 @@
 // The command line as scripts use it (docs/conventions.md, "Command line"): exit codes, JSON keys, images, error
 // messages.
+#include <filesystem>
+
 #include <nlohmann/json.hpp>
 
 #include "support/test_support.h"
@@ -32,7 +34,7 @@ json parse(const test::RunResult& r) {
 TEST_F(Cli, helpListsEverySubcommandAndExitsZero) {
   auto r = runVoxmod({"--help"});
   EXPECT_EQ(r.exit_code, 0);
-  for (const char* sub : {"voxelize", "info", "section", "peel", "xray", "mass", "convert"})
+  for (const char* sub : {"voxelize", "info", "section", "peel", "xray", "mass", "thickness", "convert"})
     EXPECT_NE(r.out.find(sub), std::string::npos) << sub;
 }
 
@@ -103,6 +105,55 @@ TEST_F(Cli, peelAllOfABoxRemovesShellsDownToTheCore) {
 }
 
 TEST_F(Cli, peelNeedsLayersOrAll) { EXPECT_EQ(runVoxmod({"peel", box_stl(), "--res", "10"}).exit_code, 1); }
+
+// The unit cube at R = 10: a 10^3 block. Its deepest voxels are 5 voxels (0.5) from the outside, the largest
+// inscribed ball spans the block (thickness 1), and the one hot spot is the plateau of the 8 central voxels.
+TEST_F(Cli, thicknessOfABoxReportsSpecKeysAndWritesItsFilesTogether) {
+  auto r = runVoxmod({"thickness", box_stl(), "--res", "10", "--json", "--min-wall", "0.45", "-o", path("t.nrrd"),
+                      "--distance", path("d.nrrd"), "--signed", "--section-axis", "z", "--section-index", "5", "--png",
+                      path("t.png")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = parse(r);
+  for (const char* key : {"min", "max", "mean", "histogram", "distance_max", "thin_voxels", "thin_regions", "hot_spots",
+                          "distance_s", "thickness_s"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_NEAR(j["max"].get<double>(), 1.0, 1e-9);
+  EXPECT_NEAR(j["distance_max"].get<double>(), 0.5, 1e-9);
+  EXPECT_EQ(j["histogram"]["edges"].size(), j["histogram"]["counts"].size() + 1);
+  ASSERT_EQ(j["hot_spots"].size(), 1u);
+  EXPECT_NEAR(j["hot_spots"][0]["radius"].get<double>(), 0.5, 1e-9);
+  EXPECT_NEAR(j["hot_spots"][0]["modulus"].get<double>(), 0.5 / 3.0, 1e-9);
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(j["hot_spots"][0]["centre"][a].get<double>(), 0.5, 1e-9);
+  EXPECT_GT(j["thin_voxels"].get<int64_t>(), 0);  // the block's corners: no large ball reaches them
+  for (const auto& region : j["thin_regions"]) {
+    for (const char* key : {"voxels", "bbox", "min"}) EXPECT_TRUE(region.contains(key)) << key;
+    EXPECT_LT(region["min"].get<double>(), 0.45);
+  }
+  for (const char* f : {"t.nrrd", "d.nrrd", "t.png"}) EXPECT_TRUE(std::filesystem::exists(path(f))) << f;
+
+  // A PNG that cannot be written: none of the three files is.
+  auto bad = runVoxmod({"thickness", box_stl(), "--res", "10", "-o", path("t2.nrrd"), "--section-axis", "z",
+                        "--section-index", "5", "--png", path("t.png/sub.png")});
+  EXPECT_EQ(bad.exit_code, 2) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(path("t2.nrrd")));
+  EXPECT_EQ(runVoxmod({"thickness", box_stl(), "--res", "10", "--png", path("x.png")}).exit_code, 1);
+  EXPECT_EQ(runVoxmod({"thickness", box_stl(), "--res", "10", "--section-axis", "z", "--section-index", "5", "--png",
+                       path("x.jpg")})
+                .exit_code,
+            1);
+}
+
+TEST_F(Cli, peelByDistanceRemovesEverythingWithinItOfTheOutside) {
+  // In the 10^3 block the outer shell is 1 voxel (0.1) from the outside and the next shell 2 voxels: 0.15 takes
+  // the outer shell only and leaves the 8^3 inside.
+  auto r = runVoxmod({"peel", box_stl(), "--res", "10", "--distance", "0.15", "--json", "-o", path("p.vxm")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = parse(r);
+  EXPECT_EQ(j["removed"], 1000 - 512);
+  EXPECT_EQ(j["remaining"], 512);
+  EXPECT_EQ(runVoxmod({"peel", box_stl(), "--res", "10", "--distance", "0.1", "--layers", "2"}).exit_code, 1);
+}
 
 TEST_F(Cli, massOfABoxIsItsVolumeAndCentre) {
   auto r = runVoxmod({"mass", box_stl(), "--res", "10", "--json"});

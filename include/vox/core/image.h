@@ -38,6 +38,7 @@ struct ScalarMapLegend {
   std::string title;                // e.g. "X-ray along z: max thickness per ray"
   std::string value_name;           // e.g. "voxels"
   double units_per_value = 1.0;     // model units per value (the voxel size)
+  int32_t value_divisor = 1;        // the map holds values times this (10: tenths of a voxel); labels divide by it
   std::string units;                // e.g. "mm", "model units"
   std::string right_axis, up_axis;  // the grid axes along the image's columns and rows, e.g. "x", "y"
   std::vector<std::string> notes;   // statistics, one line each

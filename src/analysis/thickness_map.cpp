@@ -1,0 +1,101 @@
+// Maps of the distance and thickness fields: a section image with its legend, and whole-grid fields for export.
+#include "vox/analysis/thickness_map.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace vox {
+namespace {
+
+// Which grid axes a section image shows (computeSection: X -> (y, z), Y -> (x, z), Z -> (x, y)).
+constexpr Axis kRight[] = {Axis::kY, Axis::kX, Axis::kX};
+constexpr Axis kUp[] = {Axis::kZ, Axis::kZ, Axis::kY};
+
+int32_t along(const Dims& d, Axis a) { return a == Axis::kX ? d.nx : (a == Axis::kY ? d.ny : d.nz); }
+
+}  // namespace
+
+Result<Image2D<int32_t>> thicknessSection(const Thickness& thickness, const SectionParams& params) {
+  const Dims& dims = thickness.radius.gridDims();
+  const int a = int(params.axis);
+  const int32_t n = along(dims, params.axis);
+  if (params.index < 0 || params.index >= n) {
+    return makeError(ErrorCode::kInvalidArgument, std::string("section index ") + std::to_string(params.index) +
+                                                      " is outside 0.." + std::to_string(n - 1) + " along " +
+                                                      axisName(params.axis));
+  }
+  const int32_t w = along(dims, kRight[a]), h = along(dims, kUp[a]);
+  Image2D<int32_t> img(w, h, 0);
+  for (int32_t row = 0; row < h; ++row) {
+    const int32_t up = h - 1 - row;
+    for (int32_t col = 0; col < w; ++col) {
+      int32_t v[3] = {0, 0, 0};
+      v[a] = params.index;
+      v[int(kRight[a])] = col;
+      v[int(kUp[a])] = up;
+      const double t = thickness.voxels(v[0], v[1], v[2]);
+      img.at(col, row) = t > 0.0 ? std::max<int32_t>(1, int32_t(std::lround(t * kThicknessTenths))) : 0;
+    }
+  }
+  return img;
+}
+
+ScalarMapLegend thicknessLegend(const Thickness& thickness, const SectionParams& params, const std::string& units) {
+  const int a = int(params.axis);
+  const double h = thickness.radius.voxelSize();
+  ScalarMapLegend l;
+  l.title = std::string("Local thickness, section ") + axisName(params.axis) + " = " + std::to_string(params.index);
+  l.value_name = "voxels";
+  l.units_per_value = h;
+  l.value_divisor = kThicknessTenths;
+  l.units = units.empty() || units == "model" ? "model units" : units;
+  l.right_axis = axisName(kRight[a]);
+  l.up_axis = axisName(kUp[a]);
+  const ThicknessStats& s = thickness.stats;
+  char buf[200];
+  if (s.voxels == 0) {
+    l.notes.push_back("The model is empty.");
+    return l;
+  }
+  std::snprintf(buf, sizeof buf, "whole part: min %.4g, max %.4g, mean %.4g %s (voxel size %.4g %s)", s.min, s.max,
+                s.mean, l.units.c_str(), h, l.units.c_str());
+  l.notes.push_back(buf);
+  l.notes.push_back("thickness: diameter of the largest inscribed ball containing the voxel");
+  return l;
+}
+
+ScalarField thicknessField(const Thickness& thickness) {
+  const DistanceField& r = thickness.radius;
+  ScalarField f(r.gridDims(), r.frame(), 0.0f);
+  const glm::ivec3 b = r.boxMin();
+  const Dims& bd = r.boxDims();
+  for (int32_t z = 0; z < bd.nz; ++z) {
+    for (int32_t y = 0; y < bd.ny; ++y) {
+      for (int32_t x = 0; x < bd.nx; ++x) {
+        f.at(b.x + x, b.y + y, b.z + z) = float(thickness.model(b.x + x, b.y + y, b.z + z));
+      }
+    }
+  }
+  return f;
+}
+
+ScalarField distanceField(const DistanceField& distance, const DistanceField* clearance) {
+  const Dims& d = distance.gridDims();
+  ScalarField f(d, distance.frame(), 0.0f);
+  for (int32_t z = 0; z < d.nz; ++z) {
+    for (int32_t y = 0; y < d.ny; ++y) {
+      for (int32_t x = 0; x < d.nx; ++x) {
+        const double in = distance.model(x, y, z);
+        if (in > 0.0) {
+          f.at(x, y, z) = float(in);
+        } else if (clearance) {
+          const double out = clearance->model(x, y, z);
+          f.at(x, y, z) = std::isfinite(out) ? -float(out) : 0.0f;
+        }
+      }
+    }
+  }
+  return f;
+}
+
+}  // namespace vox

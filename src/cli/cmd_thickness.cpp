@@ -1,0 +1,187 @@
+// voxmod thickness (docs/conventions.md, "Distance and thickness"): the exact distance field, local thickness with
+// its statistics, thin walls under --min-wall and hot spots; the fields as NRRD and a thickness section as PNG. The
+// files asked for are written together or not at all.
+#include <algorithm>
+#include <optional>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/cmd_list.h"
+#include "cli/commands.h"
+#include "cli/model_input.h"
+#include "vox/analysis/distance.h"
+#include "vox/analysis/thickness.h"
+#include "vox/analysis/thickness_map.h"
+#include "vox/io/figure.h"
+#include "vox/io/file_util.h"
+#include "vox/io/image_io.h"
+#include "vox/io/nrrd.h"
+
+namespace vox::cli {
+namespace {
+
+struct ThicknessOptions {
+  CommonOptions c;
+  double min_wall = 0.0;  // model units; 0: no thin-wall report
+  std::string out, distance_out, png;
+  bool signed_distance = false;
+  std::string section_axis;
+  int32_t section_index = -1;
+  int32_t scale = 1;
+  int32_t hot_spots_shown = 10;
+};
+
+nlohmann::ordered_json bboxJson(const Box3d& b) { return {{"min", jsonVec3(b.min)}, {"max", jsonVec3(b.max)}}; }
+
+void reportThinWalls(const ThinWalls& thin, const std::string& units, Output& out) {
+  auto& d = out.data();
+  d["thin_voxels"] = thin.voxels;
+  nlohmann::ordered_json regions = nlohmann::ordered_json::array();
+  for (const ThinWallRegion& r : thin.regions) {
+    regions.push_back({{"voxels", r.voxels},
+                       {"bbox", bboxJson(r.bbox)},
+                       {"min", r.min},
+                       {"area", r.area},
+                       {"bbox_min_ijk", jsonVec3(r.bbox_min_ijk)},
+                       {"bbox_max_ijk", jsonVec3(r.bbox_max_ijk)}});
+  }
+  d["thin_regions"] = regions;
+  out.say("thinner than " + significant(thin.min_wall) + " " + units + ": " + std::to_string(thin.voxels) +
+          " voxels in " + std::to_string(thin.regions.size()) + " regions");
+  for (size_t i = 0; i < std::min<size_t>(thin.regions.size(), 5); ++i) {
+    const ThinWallRegion& r = thin.regions[i];
+    out.say("  " + std::to_string(r.voxels) + " voxels, thinnest " + significant(r.min, 4) + ", from (" +
+            significant(r.bbox.min.x, 4) + ", " + significant(r.bbox.min.y, 4) + ", " + significant(r.bbox.min.z, 4) +
+            ") to (" + significant(r.bbox.max.x, 4) + ", " + significant(r.bbox.max.y, 4) + ", " +
+            significant(r.bbox.max.z, 4) + ")");
+  }
+}
+
+void reportHotSpots(const std::vector<HotSpot>& spots, int32_t shown, Output& out) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const HotSpot& h : spots) {
+    list.push_back({{"centre", jsonVec3(h.centre)},
+                    {"radius", h.radius},
+                    {"modulus", h.modulus},
+                    {"isolated", h.isolated},
+                    {"voxel", jsonVec3(h.voxel)},
+                    {"dynamic", h.dynamic}});
+  }
+  out.data()["hot_spots"] = list;
+  out.say(std::to_string(spots.size()) + " hot spots (regional maxima of the distance, largest first):");
+  for (size_t i = 0; i < std::min<size_t>(spots.size(), size_t(shown)); ++i) {
+    const HotSpot& h = spots[i];
+    out.say("  at (" + significant(h.centre.x, 5) + ", " + significant(h.centre.y, 5) + ", " +
+            significant(h.centre.z, 5) + "): radius " + significant(h.radius, 4) + ", modulus " +
+            significant(h.modulus, 4) + (h.isolated ? ", isolated (fed through a thinner neck)" : ""));
+  }
+}
+
+// The section PNG's bytes: the thickness map with its colour bar and legend.
+Result<std::vector<uint8_t>> sectionPng(const Thickness& t, const SectionParams& p, const std::string& units,
+                                        const ThicknessOptions& o) {
+  auto map = thicknessSection(t, p);
+  if (!map) return map.error();
+  const int64_t max_value = std::max<int64_t>(1, int64_t(std::lround(2.0 * t.radius.maxVoxels() * kThicknessTenths)));
+  return io::encodePng(io::drawScalarMapFigure(*map, max_value, thicknessLegend(t, p, units), o.scale).image, o.png);
+}
+
+int runThickness(const ThicknessOptions& o) {
+  Output out(o.c.json);
+  if (!o.png.empty()) {
+    if (const std::string why = pngOutputProblem(o.png); !why.empty()) return out.fail(kExitUsage, why);
+    if (o.section_axis.empty()) return out.fail(kExitUsage, "--png needs --section-axis and --section-index");
+  }
+  auto model = loadModel(o.c.file, o.c.mesh, out);
+  if (!model) return out.fail(model.error());
+  const VoxelGrid& grid = model->grid;
+  const std::string units = grid.frame().units;
+  const double t0 = nowSeconds();
+  auto distance = computeDistance(grid, terminalProgress("distance"));
+  if (!distance) return out.fail(distance.error());
+  const double t1 = nowSeconds();
+  auto thickness = computeThickness(*distance, ThicknessParams{}, terminalProgress("thickness"));
+  if (!thickness) return out.fail(thickness.error());
+  const double t2 = nowSeconds();
+
+  const ThicknessStats& s = thickness->stats;
+  auto& d = out.data();
+  d["units"] = units;
+  d["voxel_size"] = grid.voxelSize();
+  d["filled"] = s.voxels;
+  d["min"] = s.min;
+  d["max"] = s.max;
+  d["mean"] = s.mean;
+  d["histogram"] = {{"edges", s.edges}, {"counts", s.counts}};
+  d["distance_max"] = distance->maxModel();
+  out.say("local thickness over " + std::to_string(s.voxels) + " voxels: min " + significant(s.min, 4) + ", max " +
+          significant(s.max, 4) + ", mean " + significant(s.mean, 4) + " " + units + "; deepest voxel " +
+          significant(distance->maxModel(), 4) + " from the surface");
+  if (o.min_wall > 0.0) {
+    auto thin = findThinWalls(*thickness, o.min_wall);
+    if (!thin) return out.fail(thin.error());
+    reportThinWalls(*thin, units, out);
+  }
+  auto spots = findHotSpots(*distance);
+  if (!spots) return out.fail(spots.error());
+  reportHotSpots(*spots, o.hot_spots_shown, out);
+
+  std::vector<io::PendingFile> files;
+  if (!o.out.empty()) {
+    auto bytes = io::encodeNrrd(thicknessField(*thickness));
+    if (!bytes) return out.fail(bytes.error());
+    files.push_back({o.out, std::move(bytes).value()});
+  }
+  if (!o.distance_out.empty()) {
+    std::optional<DistanceField> clearance;
+    if (o.signed_distance) {
+      auto c = computeClearance(grid, terminalProgress("clearance"));
+      if (!c) return out.fail(c.error());
+      clearance = std::move(c).value();
+    }
+    auto bytes = io::encodeNrrd(distanceField(*distance, clearance ? &*clearance : nullptr));
+    if (!bytes) return out.fail(bytes.error());
+    files.push_back({o.distance_out, std::move(bytes).value()});
+  }
+  if (!o.png.empty()) {
+    SectionParams p;
+    p.axis = parseAxis(o.section_axis).value();
+    p.index = o.section_index;
+    auto png = sectionPng(*thickness, p, units, o);
+    if (!png) return out.fail(png.error());
+    files.push_back({o.png, std::move(png).value()});
+  }
+  if (!files.empty()) {
+    if (auto st = io::writeFilesAtomic(files); !st) return out.fail(st.error());
+    std::string wrote;
+    for (const io::PendingFile& f : files) wrote += (wrote.empty() ? "" : ", ") + f.path.string();
+    out.say("wrote " + wrote);
+  }
+  d["distance_s"] = t1 - t0;
+  d["thickness_s"] = t2 - t1;
+  return out.finish();
+}
+
+}  // namespace
+
+void addThicknessCommand(CLI::App& sub, CommandContext& ctx) {
+  auto o = std::make_shared<ThicknessOptions>();
+  addCommonOptions(sub, o->c);
+  sub.add_option("--min-wall", o->min_wall, "Report walls thinner than this (model units), grouped in regions")
+      ->check(CLI::PositiveNumber);
+  sub.add_option("-o,--output", o->out, "Write the local thickness (model units) as NRRD");
+  sub.add_option("--distance", o->distance_out, "Write the distance to the surface (model units) as NRRD");
+  sub.add_flag("--signed", o->signed_distance, "With --distance: empty voxels hold minus their distance to the part");
+  auto* axis = sub.add_option("--section-axis", o->section_axis, "Section for --png: x, y or z")
+                   ->check(CLI::IsMember({"x", "y", "z"}));
+  auto* index = sub.add_option("--section-index", o->section_index, "Voxel index of the section along its axis");
+  axis->needs(index);
+  index->needs(axis);
+  sub.add_option("--png", o->png, "Write the section coloured by local thickness as PNG")->needs(axis);
+  sub.add_option("--scale", o->scale, "Pixels per voxel in the PNG (default 1)")->check(CLI::Range(1, 64));
+  sub.add_option("--hot-spots", o->hot_spots_shown, "Hot spots listed in the text summary (JSON lists all)")
+      ->check(CLI::NonNegativeNumber);
+  sub.callback([o, &ctx] { ctx.exit_code = runThickness(*o); });
+}
+
+}  // namespace vox::cli
