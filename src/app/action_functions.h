@@ -74,6 +74,9 @@ void panelXray(AppState& s);
 bool onXray(const AppState& s);
 void panelMass(AppState& s);
 bool onMass(const AppState& s);
+void panelThickness(AppState& s);
+bool onThickness(const AppState& s);
+Status minWallAt(AppState& s, const ActionArgs& a);
 
 // ---- Section ----
 void sectionPrev(AppState& s);
@@ -89,6 +92,8 @@ Status peelCount(AppState& s, const ActionArgs& a);
 void peelBack(AppState& s);
 void peelCore(AppState& s);
 void peelReset(AppState& s);
+void peelDistanceN(AppState& s);
+Status peelDistanceAt(AppState& s, const ActionArgs& a);
 
 // ---- X-ray ----
 Status xrayAlong(AppState& s, const ActionArgs& a);

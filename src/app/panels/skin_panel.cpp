@@ -14,6 +14,7 @@
 #include "app/operations.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
+#include "vox/core/units.h"
 
 namespace vox::app {
 namespace {
@@ -58,6 +59,21 @@ void drawSkinPanel(AppState& state) {
     state.skin.peel_count = std::clamp(state.skin.peel_count, 1, 100000);
   ImGui::SameLine();
   actionButton(state, ActionId::kPeelCore, "Peel to core", "peel_core", w);
+
+  // The round peel: every voxel within a distance of the empty space (a layer peel removes by face steps).
+  if (state.skin.peel_distance <= 0.0f) state.skin.peel_distance = float(snap.grid.voxelSize());
+  ImGui::SetNextItemWidth(w);
+  const std::string fmt = "%.4g " + unitsLabel(snap.grid.frame().units);
+  ImGui::InputFloat("##peel_distance", &state.skin.peel_distance, 0.0f, 0.0f, fmt.c_str());
+  state.skin.peel_distance = std::max(state.skin.peel_distance, 0.0f);
+  ImGui::SameLine();
+  if (ImGui::Button("Peel by distance", ImVec2(2.0f * w + ImGui::GetStyle().ItemSpacing.x, 0.0f))) {
+    dispatchValues(state, ActionId::kPeelDistance, {std::to_string(state.skin.peel_distance)});
+  }
+  markWidget("peel_distance");
+  helpMarker(
+      "Removes every voxel whose centre lies within this distance of the empty space: a round skin of even "
+      "thickness, where the layer peel removes face steps (thinner on slopes). Undoable.");
 
   // What peeling will hold, before it starts (the bound the depth map stays under).
   wrappedColoured(ImGui::GetStyle().Colors[ImGuiCol_TextDisabled],
