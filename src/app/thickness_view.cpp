@@ -16,6 +16,7 @@ namespace vox::app {
 namespace {
 
 constexpr ImU32 kThinColour = IM_COL32(242, 31, 26, 255);  // points.vert's red for walls under the minimum
+constexpr ImU32 kThinTextColour = IM_COL32(255, 120, 110, 255);
 constexpr ImU32 kHotSpotColour = IM_COL32(255, 60, 220, 255);
 constexpr int kMostHotSpotsShown = 20;
 
@@ -129,10 +130,38 @@ float drawThicknessBar(ImDrawList* dl, ImVec2 at, float height, double max, doub
     const std::string label = "min wall " + formatLength(min_wall, units);
     // Kept clear of the labels at the ends.
     const float ly = std::clamp(y - th * 0.5f, at.y + th * 1.2f, at.y + height - th * 2.2f);
-    shadowText(dl, ImVec2(lx, ly), kThinColour | IM_COL32(0, 90, 90, 0), label.c_str());
+    shadowText(dl, ImVec2(lx, ly), kThinTextColour, label.c_str());
     width = std::max(width, ImGui::CalcTextSize(label.c_str()).x);
   }
   return kBarW + 6.0f + width;
+}
+
+// The same ramp lying along the top of the 3D view (the model fills the view's middle): 0 at the left, the maximum
+// at the right, the minimum wall marked.
+void drawThicknessStrip(ImDrawList* dl, ImVec2 at, float width, double max, double min_wall, const std::string& units) {
+  constexpr float kStripH = 12.0f;
+  constexpr int kBands = 48;
+  for (int i = 0; i < kBands; ++i) {
+    const double t0 = max * double(i) / kBands, t1 = max * double(i + 1) / kBands;
+    const float x0 = at.x + width * float(i) / kBands, x1 = at.x + width * float(i + 1) / kBands;
+    const ImU32 c0 = thicknessColour(t0, max, min_wall), c1 = thicknessColour(t1, max, min_wall);
+    dl->AddRectFilledMultiColor(ImVec2(x0, at.y), ImVec2(x1, at.y + kStripH), c0, c1, c1, c0);
+  }
+  dl->AddRect(ImVec2(at.x - 1.0f, at.y - 1.0f), ImVec2(at.x + width + 1.0f, at.y + kStripH + 1.0f),
+              IM_COL32(160, 160, 160, 255));
+  const ImU32 ink = IM_COL32(230, 230, 230, 255);
+  const float ly = at.y + kStripH + 3.0f;
+  const std::string top = formatLength(max, units);
+  shadowText(dl, ImVec2(at.x, ly), ink, "0");
+  shadowText(dl, ImVec2(at.x + width - ImGui::CalcTextSize(top.c_str()).x, ly), ink, top.c_str());
+  if (max > 0.0 && min_wall > 0.0 && min_wall < max) {
+    const float x = at.x + width * float(min_wall / max);
+    dl->AddLine(ImVec2(x, at.y - 3.0f), ImVec2(x, at.y + kStripH + 3.0f), ink, 1.5f);
+    const std::string label = "min wall " + formatLength(min_wall, units);
+    const float lw = ImGui::CalcTextSize(label.c_str()).x;
+    const float lx = std::clamp(x - lw * 0.5f, at.x, at.x + width - lw);
+    shadowText(dl, ImVec2(lx, ly + ImGui::GetTextLineHeight()), kThinTextColour, label.c_str());
+  }
 }
 
 void drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, int h, double aspect) {
@@ -153,15 +182,16 @@ void drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, in
     dl->AddCircle(c, 8.0f, kHotSpotColour, 0, 2.0f);
     shadowText(dl, ImVec2(c.x + 10.0f, c.y - 18.0f), kHotSpotColour, std::to_string(i + 1).c_str());
   }
-  // The colour bar at the right, under the view's buttons.
-  const double max = r->thickness.stats.max;
-  const float bar_h = std::clamp(float(h) * 0.45f, 80.0f, 320.0f);
-  const float bar_x = pos.x + float(w) - 150.0f, bar_y = pos.y + 40.0f + lh;
-  shadowText(dl, ImVec2(bar_x, pos.y + 36.0f - lh * 0.2f), IM_COL32(230, 230, 230, 255), "Thickness");
-  drawThicknessBar(dl, ImVec2(bar_x, bar_y), bar_h, max, minWall(state), units);
-  shadowText(dl, ImVec2(bar_x, bar_y + bar_h + lh), kHotSpotColour, "O hot spot");
+  // The colour scale along the top, under the view's buttons, with the hot spots' ring explained beside its title.
+  const float strip_w = std::clamp(float(w) - 24.0f, 60.0f, 300.0f);
+  const float y0 = pos.y + 30.0f;
+  shadowText(dl, ImVec2(pos.x + 12.0f, y0), IM_COL32(230, 230, 230, 255), "Thickness");
+  const float ring_x = pos.x + 12.0f + ImGui::CalcTextSize("Thickness").x + 24.0f;
+  dl->AddCircle(ImVec2(ring_x, y0 + lh * 0.45f), 6.0f, kHotSpotColour, 0, 2.0f);
+  shadowText(dl, ImVec2(ring_x + 10.0f, y0), kHotSpotColour, "hot spot");
+  drawThicknessStrip(dl, ImVec2(pos.x + 12.0f, y0 + lh + 2.0f), strip_w, r->thickness.stats.max, minWall(state), units);
   if (!state.thickness_ui.volume_problem.empty()) {
-    shadowText(dl, ImVec2(pos.x + 8.0f, pos.y + 8.0f), IM_COL32(255, 200, 80, 255),
+    shadowText(dl, ImVec2(pos.x + 12.0f, y0 + 4.0f * lh), IM_COL32(255, 200, 80, 255),
                state.thickness_ui.volume_problem.c_str());
   }
   hoverReadout(state, *r, dl, pos, w, h, aspect);

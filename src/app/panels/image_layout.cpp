@@ -37,7 +37,7 @@ ImageLayout layoutImage(AppState& state, float w, float h) {
     return l;  // not computed yet: the whole area for the 3D view
   } else if (const Section* s = currentSection(state)) {
     scalable = ImVec2(float(s->mask.width), float(s->mask.height));
-    if (thickness) fixed.x += 150.0f;  // the colour bar and its labels
+    if (thickness) fixed.x += 230.0f;  // the colour bar and its labels
   }
   const float side = fitScale(fixed, scalable, ImVec2(kMost * w, h));
   const float stacked = fitScale(fixed, scalable, ImVec2(w, kMost * h));

@@ -64,7 +64,7 @@ void drawThicknessImage(AppState& state) {
   ImGui::Text("Thickness in the section %s = %d (Section panel's slider)", axisName(axis), state.section.index);
   const ImageAxes ax = imageAxes(axis);
   const float line = ImGui::GetTextLineHeightWithSpacing();
-  const float bar_room = 150.0f;
+  const float bar_room = 230.0f;  // the colour bar and its labels ("min wall 0.125 model units")
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   float scale = std::min(std::max(1.0f, avail.x - bar_room - 24.0f) / float(iw),
                          std::max(1.0f, avail.y - 3.0f * line) / float(ih));

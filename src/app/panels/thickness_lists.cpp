@@ -10,6 +10,7 @@
 #include "app/operations.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
+#include "vox/core/units.h"
 
 namespace vox::app {
 namespace {
@@ -40,14 +41,14 @@ void drawThinWallList(AppState& state, const ThinWalls& thin, const std::string&
     ImGui::TextWrapped("No voxel is thinner than %s.", formatLength(thin.min_wall, units).c_str());
     return;
   }
-  ImGui::TextWrapped("%s voxels thinner than %s, in %s regions (red in the views). Click one to see it.",
+  ImGui::TextWrapped("%s voxels thinner than %s, in %s regions (red in the views; lengths in %s). Click one to see it.",
                      groupDigits(thin.voxels).c_str(), formatLength(thin.min_wall, units).c_str(),
-                     groupDigits(int64_t(thin.regions.size())).c_str());
+                     groupDigits(int64_t(thin.regions.size())).c_str(), unitsLabel(units).c_str());
   const int rows = std::min(int(thin.regions.size()), kMostRows);
   if (!beginList("thin_walls", 3, rows)) return;
   ImGui::TableSetupColumn("Voxels", ImGuiTableColumnFlags_WidthFixed, 70.0f);
-  ImGui::TableSetupColumn("Thinnest", ImGuiTableColumnFlags_WidthFixed, 90.0f);
-  ImGui::TableSetupColumn("Box (voxels)");
+  ImGui::TableSetupColumn("Thinnest");
+  ImGui::TableSetupColumn("Box, voxels");
   ImGui::TableHeadersRow();
   for (int i = 0; i < rows; ++i) {
     const ThinWallRegion& g = thin.regions[size_t(i)];
@@ -59,10 +60,14 @@ void drawThinWallList(AppState& state, const ThinWalls& thin, const std::string&
     }
     ImGui::PopID();
     ImGui::TableSetColumnIndex(1);
-    ImGui::TextUnformatted(formatLength(g.min, units).c_str());
+    ImGui::Text("%.4g", g.min);
     ImGui::TableSetColumnIndex(2);
     const glm::ivec3 e = g.bbox_max_ijk - g.bbox_min_ijk + 1;
-    ImGui::Text("%d x %d x %d at %d %d %d", e.x, e.y, e.z, g.bbox_min_ijk.x, g.bbox_min_ijk.y, g.bbox_min_ijk.z);
+    ImGui::Text("%d x %d x %d", e.x, e.y, e.z);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("voxels (%d, %d, %d) to (%d, %d, %d)", g.bbox_min_ijk.x, g.bbox_min_ijk.y, g.bbox_min_ijk.z,
+                        g.bbox_max_ijk.x, g.bbox_max_ijk.y, g.bbox_max_ijk.z);
+    }
   }
   ImGui::EndTable();
   markWidget("thin_wall_list");
@@ -71,7 +76,8 @@ void drawThinWallList(AppState& state, const ThinWalls& thin, const std::string&
 void drawHotSpotList(AppState& state, const ThicknessResult& r, const std::string& units) {
   ImGui::TextWrapped(
       "The centres of the thickest regions (magenta rings in the 3D view): where a casting solidifies last. "
-      "Isolated: cut off from thicker ones by a thinner neck, so it needs its own feeder.");
+      "Isolated: cut off from thicker ones by a thinner neck, so it needs its own feeder. Lengths in %s.",
+      unitsLabel(units).c_str());
   if (r.hot_spots.empty()) return;
   const int rows = std::min(int(r.hot_spots.size()), kMostRows);
   if (!beginList("hot_spots", 4, rows)) return;
@@ -90,9 +96,9 @@ void drawHotSpotList(AppState& state, const ThicknessResult& r, const std::strin
     }
     ImGui::PopID();
     ImGui::TableSetColumnIndex(1);
-    ImGui::TextUnformatted(formatLength(s.radius, units).c_str());
+    ImGui::Text("%.4g", s.radius);
     ImGui::TableSetColumnIndex(2);
-    ImGui::TextUnformatted(formatLength(s.modulus, units).c_str());
+    ImGui::Text("%.4g", s.modulus);
     ImGui::TableSetColumnIndex(3);
     ImGui::TextUnformatted(s.isolated ? "yes" : "no");
   }

@@ -14,6 +14,7 @@
 #include "app/operations.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
+#include "vox/core/units.h"
 
 namespace vox::app {
 namespace {
@@ -75,7 +76,7 @@ void drawThicknessPanel(AppState& state) {
   heading("Minimum wall");
   float v = float(wall);
   ImGui::SetNextItemWidth(-1.0f);
-  const std::string fmt = "%.4g " + units;
+  const std::string fmt = "%.4g " + unitsLabel(units);
   if (ImGui::SliderFloat("##min_wall", &v, 0.0f, float(st.max), fmt.c_str())) {
     dispatchValues(state, ActionId::kMinWall, {std::to_string(v)});
   }
