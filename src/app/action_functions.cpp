@@ -56,6 +56,8 @@ bool hasDisputed(const AppState& s) {
   return s.doc.model && s.doc.model->origin && s.doc.model->origin->disputed != nullptr;
 }
 
+bool canCancel(const AppState& s) { return modelBusy(s) || s.thickness.computing(s.model_version); }
+
 // ---- File ----
 void open(AppState& s) { openBrowser(s, BrowserPurpose::kOpen); }
 Status openPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kOpen, a); }
@@ -115,6 +117,11 @@ Status voxelizeAt(AppState& s, const ActionArgs& a) {  // R [MODE], as the dialo
   s.voxelize.params = p;
   startVoxelize(s, p);
   return Ok{};
+}
+
+void cancelAll(AppState& s) {
+  cancelJobs(s);
+  cancelThickness(s);
 }
 
 // ---- View ----

@@ -14,6 +14,7 @@ bool hasMeasure(const AppState& s);
 bool canPeel(const AppState& s);
 bool canPeelBack(const AppState& s);
 bool hasDisputed(const AppState& s);
+bool canCancel(const AppState& s);  // voxelizing, loading or the thickness runs
 
 // ---- File ----
 void open(AppState& s);
@@ -40,6 +41,7 @@ Status measureAt(AppState& s, const ActionArgs& a);
 // ---- Model ----
 void voxelizeDialog(AppState& s);
 Status voxelizeAt(AppState& s, const ActionArgs& a);
+void cancelAll(AppState& s);
 
 // ---- View ----
 void fit(AppState& s);

@@ -267,6 +267,11 @@ TEST(RenderProperties, scalarVolumeColoursTheSurface) {
   EXPECT_GT(left.b, left.r);        // dark blue
   EXPECT_GT(right.r, 2 * right.b);  // yellow
   EXPECT_GT(right.g, 2 * right.b);
+  DrawParams coarse = coloured;  // a level-of-detail point looks at its fine voxels' values
+  coarse.coarse = true;
+  coarse.lod_point_budget = 2'000;
+  const Rgba8 coarse_right = draw(coarse).at(128 + 30, 128);
+  EXPECT_GT(coarse_right.r, 2 * coarse_right.b);
   coloured.scalar_threshold = 0.5f;  // the left half is under it: red
   const Rgba8 red = draw(coloured).at(128 - 30, 128);
   EXPECT_GT(red.r, 3 * std::max<int>(red.g, 1));

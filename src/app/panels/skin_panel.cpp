@@ -71,9 +71,11 @@ void drawSkinPanel(AppState& state) {
     dispatchValues(state, ActionId::kPeelDistance, {std::to_string(state.skin.peel_distance)});
   }
   markWidget("peel_distance");
-  helpMarker(
-      "Removes every voxel whose centre lies within this distance of the empty space: a round skin of even "
-      "thickness, where the layer peel removes face steps (thinner on slopes). Undoable.");
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Removes every voxel whose centre lies within this distance of the empty space: a round skin of even\n"
+        "thickness, where a layer removes face steps (thinner on slopes). Undo (Ctrl+Z) brings it back.");
+  }
 
   // What peeling will hold, before it starts (the bound the depth map stays under).
   wrappedColoured(ImGui::GetStyle().Colors[ImGuiCol_TextDisabled],
