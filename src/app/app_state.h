@@ -68,6 +68,9 @@ struct ModelSnapshot {
   VoxelGrid grid;        // the model: base minus its outer `peeled` layers (kept, so undo needs no depth map)
   std::shared_ptr<const ModelOrigin> origin;
   std::string label;  // the change that produced this state, for "Undo <label>"
+  // The round peels (peel by distance) that made `base` from the part, e.g. "0.5 mm + 0.2 mm"; empty: none. Each
+  // makes a new base, so layer peels continue from what it left.
+  std::string round_peels;
 };
 
 struct Document {

@@ -82,8 +82,11 @@ Status peelDistance(AppState& state, double distance) {
   auto peeled = peelByDistance(cur.grid, distance);
   if (!peeled) return peeled.error();
   // A new base: the layer peel (the depth map) then works on what the round peel left.
-  ModelSnapshot next = newBase(state, std::move(peeled).value(), cur.origin,
-                               "peel " + formatLength(distance, cur.grid.frame().units) + " round");
+  const std::string d = formatLength(distance, cur.grid.frame().units);
+  const std::string before = cur.peeled > 0 ? std::to_string(cur.peeled) + " layers + " : std::string();
+  const std::string round_peels = cur.round_peels.empty() ? before + d : cur.round_peels + " + " + before + d;
+  ModelSnapshot next = newBase(state, std::move(peeled).value(), cur.origin, "peel " + d + " round");
+  next.round_peels = round_peels;
   setModel(state, std::move(next), true);
   return Ok{};
 }

@@ -606,6 +606,8 @@ TEST(AppScriptRun, thicknessPanelThinWallsAndPeelByDistance) {
   EXPECT_EQ(currentThickness(state), nullptr);  // another model: its thickness is not the block's
   ASSERT_TRUE(canUndo(state));
   EXPECT_NE(state.doc.model->label.find("round"), std::string::npos) << state.doc.model->label;
+  EXPECT_FALSE(state.doc.model->round_peels.empty());
+  EXPECT_EQ(state.doc.model->peeled, 0);  // a new base: layer peels continue from it
 
   // Undo brings the block back with its version, and the thickness computed for it is still there.
   Harness h4;

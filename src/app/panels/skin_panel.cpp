@@ -107,9 +107,10 @@ void drawSkinPanel(AppState& state) {
     // The CLI's words: the model has L skin layers, the last (layer L) is the core; peeling stops before it.
     tableRow("Skin layers", std::to_string(layers) + " (the core is layer " + std::to_string(layers) + ")");
     tableRow("Core depth", formatLength(double(layers) * h, units) + " in face steps");
-    tableRow("Peeled", k == 0 ? std::string("none (the whole model)")
+    tableRow("Peeled", k == 0 ? std::string(snap.round_peels.empty() ? "none (the whole model)" : "no layers")
                               : std::to_string(k) + " of " + std::to_string(layers) + " layers" +
                                     (k == layers - 1 ? ": only the core remains" : ""));
+    if (!snap.round_peels.empty()) tableRow("Peeled round", snap.round_peels + " before these layers");
     tableRow("Remaining voxels", groupDigits(total - gone) + " of " + groupDigits(total));
     if (k > 0 && size_t(k) <= removed.size()) tableRow("Layer removed", groupDigits(removed[size_t(k) - 1]));
     tableRow("Core voxels", groupDigits(depth->coreVoxels()));
