@@ -56,6 +56,8 @@ bool hasDisputed(const AppState& s) {
   return s.doc.model && s.doc.model->origin && s.doc.model->origin->disputed != nullptr;
 }
 
+bool canCancel(const AppState& s) { return modelBusy(s) || s.thickness.computing(s.model_version); }
+
 // ---- File ----
 void open(AppState& s) { openBrowser(s, BrowserPurpose::kOpen); }
 Status openPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kOpen, a); }
@@ -117,6 +119,11 @@ Status voxelizeAt(AppState& s, const ActionArgs& a) {  // R [MODE], as the dialo
   return Ok{};
 }
 
+void cancelAll(AppState& s) {
+  cancelJobs(s);
+  cancelThickness(s);
+}
+
 // ---- View ----
 void fit(AppState& s) { s.view.fit_pending = true; }
 void viewIso(AppState& s) { standardView(s, render::StandardView::kIso); }
@@ -167,6 +174,15 @@ void panelXray(AppState& s) { showPanel(s, Panel::kXray); }
 bool onXray(const AppState& s) { return s.panel == Panel::kXray; }
 void panelMass(AppState& s) { showPanel(s, Panel::kMass); }
 bool onMass(const AppState& s) { return s.panel == Panel::kMass; }
+void panelThickness(AppState& s) { showPanel(s, Panel::kThickness); }
+bool onThickness(const AppState& s) { return s.panel == Panel::kThickness; }
+Status minWallAt(AppState& s, const ActionArgs& a) {  // VALUE: the Thickness panel's minimum wall, model units
+  double v = 0.0;
+  if (!parseNumber(a.words[0], v) || !(v >= 0.0)) return badValues("min-wall takes a length >= 0 in model units");
+  s.thickness_ui.min_wall = v;
+  showPanel(s, Panel::kThickness);
+  return Ok{};
+}
 
 // ---- Section ----
 void sectionPrev(AppState& s) { stepSection(s, -s.section.step); }
@@ -207,6 +223,19 @@ void peelBack(AppState& s) { peelTo(s, peeled(s) - 1); }
 // Every layer but the last; peelTo clamps, and a queued peel resolves once the layers are known.
 void peelCore(AppState& s) { peelTo(s, std::numeric_limits<int32_t>::max()); }
 void peelReset(AppState& s) { peelTo(s, 0); }
+// The Skin panel's distance (one voxel when none was chosen), or D model units: the round skin removal.
+void peelDistanceN(AppState& s) {
+  const double d = s.skin.peel_distance > 0.0f ? double(s.skin.peel_distance) : s.model.voxelSize();
+  if (Status st = peelDistance(s, d); !st) reportError(s, st.error().message);
+}
+Status peelDistanceAt(AppState& s, const ActionArgs& a) {
+  double d = 0.0;
+  if (!parseNumber(a.words[0], d) || !(d >= 0.0))
+    return badValues("peel-distance takes a distance >= 0 in model units");
+  s.skin.peel_distance = float(d);
+  showPanel(s, Panel::kSkin);
+  return peelDistance(s, d);
+}
 
 // ---- X-ray ----
 Status xrayAlong(AppState& s, const ActionArgs& a) {  // AXIS MODE, as the X-ray panel's buttons

@@ -14,6 +14,7 @@ bool hasMeasure(const AppState& s);
 bool canPeel(const AppState& s);
 bool canPeelBack(const AppState& s);
 bool hasDisputed(const AppState& s);
+bool canCancel(const AppState& s);  // voxelizing, loading or the thickness runs
 
 // ---- File ----
 void open(AppState& s);
@@ -40,6 +41,7 @@ Status measureAt(AppState& s, const ActionArgs& a);
 // ---- Model ----
 void voxelizeDialog(AppState& s);
 Status voxelizeAt(AppState& s, const ActionArgs& a);
+void cancelAll(AppState& s);
 
 // ---- View ----
 void fit(AppState& s);
@@ -74,6 +76,9 @@ void panelXray(AppState& s);
 bool onXray(const AppState& s);
 void panelMass(AppState& s);
 bool onMass(const AppState& s);
+void panelThickness(AppState& s);
+bool onThickness(const AppState& s);
+Status minWallAt(AppState& s, const ActionArgs& a);
 
 // ---- Section ----
 void sectionPrev(AppState& s);
@@ -89,6 +94,8 @@ Status peelCount(AppState& s, const ActionArgs& a);
 void peelBack(AppState& s);
 void peelCore(AppState& s);
 void peelReset(AppState& s);
+void peelDistanceN(AppState& s);
+Status peelDistanceAt(AppState& s, const ActionArgs& a);
 
 // ---- X-ray ----
 Status xrayAlong(AppState& s, const ActionArgs& a);

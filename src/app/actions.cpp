@@ -38,7 +38,7 @@ const Action kActions[] = {
   {ActionId::kMeasure,        "measure",         nullptr,   "Pick a voxel to measure",            kNone,                       3, 3,  nullptr,       measureAt,         hasSection,  nullptr},
 
   {ActionId::kVoxelize,       "voxelize",        "Model",   "Voxelize...",                        {GLFW_KEY_R, kCtrl},         1, 2,  voxelizeDialog, voxelizeAt,       hasMesh,     nullptr},
-  {ActionId::kCancelJob,      "cancel",          "Model",   "Cancel voxelizing / loading",        {GLFW_KEY_ESCAPE, 0},        0, 0,  cancelJobs,    nullptr,           modelBusy,   nullptr},
+  {ActionId::kCancelJob,      "cancel",          "Model",   "Cancel voxelizing / loading / thickness", {GLFW_KEY_ESCAPE, 0},     0, 0,  cancelAll,     nullptr,           canCancel,   nullptr},
 
   {ActionId::kViewFit,        "fit",             "View",    "Fit model",                          {GLFW_KEY_F, 0},             0, 0,  fit,           nullptr,           nullptr,     nullptr},
   {ActionId::kViewIso,        "view-iso",        "View",    "Isometric",                          {GLFW_KEY_0, 0},             0, 0,  viewIso,       nullptr,           nullptr,     nullptr},
@@ -63,6 +63,8 @@ const Action kActions[] = {
   {ActionId::kPanelSkin,      "panel-skin",      "View",    "Skin removal panel",                 {GLFW_KEY_3, kCtrl},         0, 0,  panelSkin,     nullptr,           nullptr,     onSkin},
   {ActionId::kPanelXray,      "panel-xray",      "View",    "X-ray panel",                        {GLFW_KEY_4, kCtrl},         0, 0,  panelXray,     nullptr,           nullptr,     onXray},
   {ActionId::kPanelMass,      "panel-mass",      "View",    "Mass properties panel",              {GLFW_KEY_5, kCtrl},         0, 0,  panelMass,     nullptr,           nullptr,     onMass},
+  {ActionId::kPanelThickness, "panel-thickness", "View",    "Thickness panel",                    {GLFW_KEY_6, kCtrl},         0, 0,  panelThickness, nullptr,          nullptr,     onThickness},
+  {ActionId::kMinWall,        "min-wall",        nullptr,   "Minimum wall (model units)",         kNone,                       1, 1,  nullptr,       minWallAt,         hasSection,  nullptr},
 
   {ActionId::kSectionPrev,    "section-prev",    "Section", "Previous section",                   {GLFW_KEY_PAGE_DOWN, 0},     0, 0,  sectionPrev,   nullptr,           hasSection,  nullptr},
   {ActionId::kSectionNext,    "section-next",    "Section", "Next section",                       {GLFW_KEY_PAGE_UP, 0},       0, 0,  sectionNext,   nullptr,           hasSection,  nullptr},
@@ -74,6 +76,7 @@ const Action kActions[] = {
   {ActionId::kPeelBack,       "peel-back",       "Skin",    "Back one layer",                     {GLFW_KEY_P, kShift},        0, 0,  peelBack,      nullptr,           canPeelBack, nullptr},
   {ActionId::kPeelCore,       "peel-core",       "Skin",    "Peel to the core",                   {GLFW_KEY_C, 0},             0, 0,  peelCore,      nullptr,           canPeel,     nullptr},
   {ActionId::kPeelReset,      "peel-reset",      "Skin",    "Reset skin",                         kNone,                       0, 0,  peelReset,     nullptr,           canPeelBack, nullptr},
+  {ActionId::kPeelDistance,   "peel-distance",   "Skin",    "Peel by distance (round)",           kNone,                       1, 1,  peelDistanceN, peelDistanceAt,    hasModel,    nullptr},
 
   {ActionId::kXray,           "xray",            nullptr,   "X-ray along an axis",                kNone,                       2, 2,  nullptr,       xrayAlong,         hasSection,  nullptr},
 

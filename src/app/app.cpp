@@ -111,7 +111,8 @@ std::filesystem::path bundledModel() {
 }
 
 bool anyWork(const AppState& s) {
-  return modelBusy(s) || s.depth.busy() || s.surface_stats.busy() || s.mass.busy() || s.xray_result.busy();
+  return modelBusy(s) || s.depth.busy() || s.surface_stats.busy() || s.mass.busy() || s.xray_result.busy() ||
+         s.thickness.busy();
 }
 
 bool writeScreenshot(AppState& state, GLFWwindow* window, const std::string& path) {

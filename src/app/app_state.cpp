@@ -14,6 +14,8 @@ const char* panelName(Panel p) {
       return "xray";
     case Panel::kMass:
       return "mass";
+    case Panel::kThickness:
+      return "thickness";
   }
   return "model";
 }

@@ -16,6 +16,7 @@
 #include "app/settings.h"
 #include "app/texture.h"
 #include "vox/analysis/analysis.h"
+#include "vox/analysis/thickness.h"
 #include "vox/core/mesh.h"
 #include "vox/core/voxel_grid.h"
 #include "vox/render/camera.h"
@@ -67,6 +68,9 @@ struct ModelSnapshot {
   VoxelGrid grid;        // the model: base minus its outer `peeled` layers (kept, so undo needs no depth map)
   std::shared_ptr<const ModelOrigin> origin;
   std::string label;  // the change that produced this state, for "Undo <label>"
+  // The round peels (peel by distance) that made `base` from the part, e.g. "0.5 mm + 0.2 mm"; empty: none. Each
+  // makes a new base, so layer peels continue from what it left.
+  std::string round_peels;
 };
 
 struct Document {
@@ -81,8 +85,8 @@ struct Document {
 
 // ---- Params the widgets edit ----
 
-enum class Panel { kModel, kSection, kSkin, kXray, kMass };
-inline constexpr int kPanelCount = 5;
+enum class Panel { kModel, kSection, kSkin, kXray, kMass, kThickness };
+inline constexpr int kPanelCount = 6;
 const char* panelName(Panel p);  // "model", "section", ...
 
 struct ViewParams {
@@ -111,6 +115,7 @@ struct SectionUi {
 struct SkinUi {
   int32_t peel_count = 5;               // "Peel N"
   std::optional<int32_t> pending_peel;  // a peel asked for before the depth map was ready
+  float peel_distance = 0.0f;           // "Peel by distance": model units (0: not chosen yet, one voxel is offered)
 };
 
 struct XrayUi {
@@ -182,6 +187,28 @@ struct XrayKey {
   bool operator==(const XrayKey&) const = default;
 };
 
+// Distance, local thickness and hot spots of one model version (the Thickness panel's background result).
+struct ThicknessResult {
+  Thickness thickness;
+  std::vector<HotSpot> hot_spots;
+  double seconds = 0.0;
+};
+
+// The Thickness panel: the minimum wall (model units; < 0: not chosen, a quarter of the maximum is used) and the
+// thin walls under it, recomputed on the main thread when the value or the model changes.
+struct ThicknessUi {
+  double min_wall = -1.0;
+  uint64_t cancelled_version = 0;  // the model version whose computation the user cancelled (not asked again)
+  uint64_t thin_version = 0;       // the model version and the minimum wall `thin` was found for
+  double thin_min_wall = -1.0;
+  std::optional<ThinWalls> thin;
+  SectionKey image_key;  // what the section texture shows, with the minimum wall it paints red
+  double image_min_wall = -1.0;
+  Texture image_texture;
+  uint64_t volume_key = 0;     // the model version whose thickness the 3D view's volume holds (0: none)
+  std::string volume_problem;  // why the 3D view cannot colour by thickness (empty: it can)
+};
+
 struct LoadedFile {
   std::filesystem::path path;
   std::shared_ptr<const MeshSource> mesh;  // an STL
@@ -236,6 +263,7 @@ struct AppState {
   SkinUi skin;
   XrayUi xray;
   MassUi mass_ui;
+  ThicknessUi thickness_ui;
   MeasureUi measure;
   VoxelizeDialog voxelize;
   FileBrowser browser;
@@ -249,6 +277,7 @@ struct AppState {
   AsyncValue<uint64_t, SurfaceStats> surface_stats;             // keyed by model_version
   AsyncValue<uint64_t, MassProperties> mass;                    // keyed by model_version
   AsyncValue<XrayKey, std::shared_ptr<const XrayResult>> xray_result;
+  AsyncValue<uint64_t, std::shared_ptr<const ThicknessResult>> thickness;  // keyed by model_version
 
   // Derived images (main thread: sections are cheap enough to compute while a slider moves).
   SectionKey section_key;

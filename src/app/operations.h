@@ -11,4 +11,5 @@
 #include "app/model_jobs.h"        // voxelizing in the background; cancel, busy
 #include "app/settings_sync.h"     // params <-> remembered settings
 #include "app/skin.h"              // skin removal (peeling) and its memory limit
+#include "app/thickness.h"         // thickness, thin walls, hot spots; peel by distance
 #include "app/update.h"            // each frame: finished jobs in, derived results out; section, X-ray

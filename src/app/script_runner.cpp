@@ -245,7 +245,7 @@ bool checkExpectedError(Harness& h, const Context& c, Step step) {
 
 bool settled(const AppState& s) {
   return !modelBusy(s) && !s.depth.busy() && !s.surface_stats.busy() && !s.mass.busy() && !s.xray_result.busy() &&
-         !s.skin.pending_peel;
+         !s.thickness.busy() && !s.skin.pending_peel;
 }
 
 void stepScript(Harness& h, AppState& state) {
@@ -301,6 +301,14 @@ std::string describeState(const AppState& s, const Harness& h) {
   }
   out << "peeled = " << (s.doc.model ? s.doc.model->peeled : 0) << "\n";
   if (const DepthMap* d = currentDepthMap(s)) out << "layers = " << d->layers() << "\n";
+  if (const ThicknessResult* t = currentThickness(s)) {
+    out << "thickness_max = " << t->thickness.stats.max << "\n";
+    out << "hot_spots = " << t->hot_spots.size() << "\n";
+    if (!t->hot_spots.empty()) {
+      const glm::ivec3 v = t->hot_spots[0].voxel;
+      out << "hot_spot_1 = " << v.x << " " << v.y << " " << v.z << "\n";
+    }
+  }
   out << "xray_axis = " << axisName(s.xray.params.axis) << "\n";
   out << "xray_mode = " << xrayModeName(s.xray.params.mode) << "\n";
   out << "view_yaw = " << s.view.camera.yaw_deg << "\n";

@@ -51,6 +51,7 @@ void peelTo(AppState& state, int32_t layers) {
   next.grid = depth->peeled(k).remaining;
   next.grid.frame() = cur.base.frame();  // the depth map keeps the frame it was computed with; units may differ now
   next.origin = cur.origin;
+  next.round_peels = cur.round_peels;
   next.label = k == 0 ? "reset skin" : "peel to layer " + std::to_string(k);
   setModel(state, std::move(next), true);
 }

@@ -108,6 +108,10 @@ void drawScaleBar(ImVec2 at, float pixels_per_unit, const std::string& units, fl
 }
 
 void peeledNotice(const AppState& state) {
+  if (state.doc.model && !state.doc.model->round_peels.empty()) {
+    wrappedColoured(kWarningColour, "On the model peeled by distance (" + state.doc.model->round_peels +
+                                        "; Edit > Undo brings the part back).");
+  }
   if (!state.doc.model || state.doc.model->peeled <= 0) return;
   wrappedColoured(kWarningColour, "On the model peeled by " + std::to_string(state.doc.model->peeled) +
                                       " skin layers (Skin > Reset skin for the whole part).");

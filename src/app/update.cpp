@@ -8,6 +8,7 @@
 #include "app/messages.h"
 #include "app/model_jobs.h"
 #include "app/skin.h"
+#include "app/thickness.h"
 
 namespace vox::app {
 
@@ -50,6 +51,7 @@ void updateDocument(AppState& state) {
   state.surface_stats.poll();
   state.mass.poll();
   state.xray_result.poll();
+  requestThickness(state);
   if (!state.doc.model) return;
 
   const ModelSnapshot& m = *state.doc.model;

@@ -140,9 +140,48 @@ PointRenderer::~PointRenderer() {
   if (cut_vbo_) glDeleteBuffers(1, &cut_vbo_);
   if (vao_) glDeleteVertexArrays(1, &vao_);
   if (cut_vao_) glDeleteVertexArrays(1, &cut_vao_);
+  clearScalarVolume();
   for (GLuint p : programs_) {
     if (p) glDeleteProgram(p);
   }
+}
+
+Status PointRenderer::setScalarVolume(glm::ivec3 box_min, Dims box_dims, const std::vector<uint8_t>& values) {
+  clearScalarVolume();
+  if (int64_t(values.size()) != box_dims.count()) {
+    return makeError(ErrorCode::kInvalidArgument, "scalar volume: the values do not fill the box");
+  }
+  GLint most = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &most);
+  if (box_dims.nx > most || box_dims.ny > most || box_dims.nz > most) {
+    return makeError(ErrorCode::kLimit, "the " + std::to_string(box_dims.nx) + " x " + std::to_string(box_dims.ny) +
+                                            " x " + std::to_string(box_dims.nz) +
+                                            " voxel box is larger than this OpenGL's 3D textures (" +
+                                            std::to_string(most) + " per side)");
+  }
+  if (box_dims.count() == 0) return Ok{};
+  glGenTextures(1, &scalar_texture_);
+  glBindTexture(GL_TEXTURE_3D, scalar_texture_);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_R8, box_dims.nx, box_dims.ny, box_dims.nz, 0, GL_RED, GL_UNSIGNED_BYTE,
+               values.data());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glBindTexture(GL_TEXTURE_3D, 0);
+  if (glGetError() != GL_NO_ERROR) {
+    clearScalarVolume();
+    return makeError(ErrorCode::kNoOpenGL, "the scalar volume could not be uploaded (out of texture memory?)");
+  }
+  scalar_min_ = box_min;
+  scalar_dims_ = glm::ivec3(box_dims.nx, box_dims.ny, box_dims.nz);
+  return Ok{};
+}
+
+void PointRenderer::clearScalarVolume() {
+  if (scalar_texture_) glDeleteTextures(1, &scalar_texture_);
+  scalar_texture_ = 0;
+  scalar_dims_ = glm::ivec3(0);
 }
 
 void PointRenderer::setGrid(const VoxelGrid& grid) {
@@ -262,6 +301,17 @@ DrawStats PointRenderer::draw(const Camera& camera, int32_t width, int32_t heigh
   glUniform1i(loc("u_section_axis"), int(section.axis) - 1);
   glUniform1i(loc("u_section_index"), section.index);
   glUniform1i(loc("u_section_keep_below"), section.side == SectionSide::kBelow ? 1 : 0);
+  const bool scalar = params.scalar_colour && scalar_texture_ != 0;
+  glUniform1i(loc("u_scalar_on"), scalar ? 1 : 0);
+  if (scalar) {
+    glActiveTexture(GL_TEXTURE1);  // unit 0 is ImGui's
+    glBindTexture(GL_TEXTURE_3D, scalar_texture_);
+    glActiveTexture(GL_TEXTURE0);
+    glUniform1i(loc("u_scalar"), 1);
+    glUniform3i(loc("u_scalar_min"), scalar_min_.x, scalar_min_.y, scalar_min_.z);
+    glUniform3i(loc("u_scalar_dims"), scalar_dims_.x, scalar_dims_.y, scalar_dims_.z);
+    glUniform1f(loc("u_scalar_threshold"), params.scalar_threshold);
+  }
 
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);

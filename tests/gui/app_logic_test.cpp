@@ -566,6 +566,83 @@ TEST(AppScriptRun, commandsReachTheDocumentThroughTheActions) {
   EXPECT_FALSE(hasUnsavedChanges(state));
 }
 
+// The Thickness panel: thickness computed in the background while the panel is open, thin walls under the minimum
+// wall set by the script, and the round peel as an undoable change that leaves the thickness of the model before it
+// in place for its undo.
+TEST(AppScriptRun, thicknessPanelThinWallsAndPeelByDistance) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
+  AppState state;
+  Harness h;
+  ASSERT_TRUE(runScript(state, h, "open " + (dir / "block.vxm").string() + "\npanel-thickness\nmin-wall 0.3\n"))
+      << h.last_error;
+  EXPECT_EQ(state.panel, Panel::kThickness);
+  const uint64_t version = state.model_version;
+  const ThicknessResult* r = currentThickness(state);
+  ASSERT_NE(r, nullptr);
+  EXPECT_EQ(r->thickness.stats.voxels, block().filledCount());
+  EXPECT_GT(r->thickness.stats.max, 0.3);
+  ASSERT_FALSE(r->hot_spots.empty());
+  EXPECT_DOUBLE_EQ(minWall(state), 0.3);
+  const ThinWalls* thin = currentThinWalls(state);
+  ASSERT_NE(thin, nullptr);
+  EXPECT_EQ(thin->voxels, 0);  // nothing in a 12 x 10 x 8 block is thinner than 0.3 voxels
+
+  // Every voxel is thinner than a wall thicker than the block: one region, all of it.
+  Harness h2;
+  ASSERT_TRUE(runScript(state, h2, "min-wall 100\n")) << h2.last_error;
+  thin = currentThinWalls(state);
+  ASSERT_NE(thin, nullptr);
+  EXPECT_EQ(thin->voxels, block().filledCount());
+  ASSERT_EQ(thin->regions.size(), 1u);
+  EXPECT_EQ(currentThickness(state), r);  // the minimum wall does not recompute the thickness
+
+  // The round peel by one voxel removes the outer shell (distance 1): a 10 x 8 x 6 block remains, undoably.
+  Harness h3;
+  ASSERT_TRUE(runScript(state, h3, "peel-distance 1\n")) << h3.last_error;
+  EXPECT_EQ(state.panel, Panel::kSkin);
+  EXPECT_EQ(state.model.filledCount(), 10 * 8 * 6);
+  EXPECT_NE(state.model_version, version);
+  EXPECT_EQ(currentThickness(state), nullptr);  // another model: its thickness is not the block's
+  ASSERT_TRUE(canUndo(state));
+  EXPECT_NE(state.doc.model->label.find("round"), std::string::npos) << state.doc.model->label;
+  EXPECT_FALSE(state.doc.model->round_peels.empty());
+  EXPECT_EQ(state.doc.model->peeled, 0);  // a new base: layer peels continue from it
+
+  // Undo brings the block back with its version, and the thickness computed for it is still there.
+  Harness h4;
+  ASSERT_TRUE(runScript(state, h4, "undo\nlit off\npanel-thickness\n")) << h4.last_error;
+  EXPECT_EQ(state.model_version, version);
+  EXPECT_EQ(currentThickness(state), r);
+  EXPECT_EQ(state.model.filledCount(), block().filledCount());
+
+  // Values that do not fit are refused with the action's words.
+  Harness h5;
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE(runScript(state, h5, "min-wall -1\n"));
+  EXPECT_NE(testing::internal::GetCapturedStderr().find("min-wall takes a length"), std::string::npos);
+}
+
+// Cancelling the thickness (Esc, or the panel's Cancel) stops it for this model version; it is not asked for again
+// until the user does.
+TEST(AppThickness, cancelStopsUntilRetried) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
+  AppState state;
+  Harness h;
+  ASSERT_TRUE(runScript(state, h, "open " + (dir / "block.vxm").string() + "\n")) << h.last_error;
+  state.panel = Panel::kThickness;
+  updateDocument(state);
+  ASSERT_TRUE(state.thickness.computing(state.model_version));
+  EXPECT_TRUE(dispatch(state, ActionId::kCancelJob));  // Esc, as for voxelizing
+  EXPECT_FALSE(state.thickness.busy());
+  updateDocument(state);
+  EXPECT_FALSE(state.thickness.busy());  // not asked again
+  retryThickness(state);
+  updateDocument(state);
+  EXPECT_TRUE(state.thickness.computing(state.model_version));
+}
+
 // Every action a script names goes through dispatch: where the action is not enabled (no model yet), the script
 // fails with dispatch's own words, for each of them.
 TEST(AppScriptRun, everyActionCommandIsDispatched) {

@@ -168,6 +168,28 @@ expect_same "$out/06_xray_total.png" "$out/09_xray_total_again.png" "$image" "X-
 expect_same "$out/06_xray_total.png" "$out/08_xray_max.png" "$(viewport_picture_rect "$s6")" \
   "3D view untouched by X-ray modes"
 
+# ---- 3b. The Thickness panel: a click on the first hot spot moves the section through its voxel.
+wait_for "$out/09t_state.txt"
+st="$out/09t_state.txt"
+hs=$(get "$st" hot_spot_1)
+[[ -n "$hs" ]] || fail "no hot spot listed in the Thickness panel"
+read -r hx hy hz <<<"$hs"
+axis=$(get "$st" section_axis)
+read -r lx0 ly0 lx1 ly1 <<<"$(rect "$st" hot_spot_list)"
+click $((lx0 + 30)) $((ly0 + 30)) # the first row, under the header
+touch "$out/go_hot_spot"
+wait_for "$out/09u_state.txt"
+su="$out/09u_state.txt"
+case $axis in x) want=$hx ;; y) want=$hy ;; *) want=$hz ;; esac
+[[ "$(get "$su" section_index)" == "$want" ]] ||
+  fail "clicking hot spot 1 at ($hs) left the section at $axis = $(get "$su" section_index), expected $want"
+[[ "$(get "$su" panel)" == thickness ]] || fail "clicking a hot spot left the Thickness panel for $(get "$su" panel)"
+pass "clicking hot spot 1 moved the section to $axis = $want (was $(get "$st" section_index))"
+if [[ "$want" != "$(get "$st" section_index)" ]]; then
+  expect_differ "$out/09t_thickness.png" "$out/09u_hot_spot.png" "$(rect "$st" thickness_image)" 200 \
+    "thickness section image after the click"
+fi
+
 # ---- 4. Drag in the 3D view: the camera orbits.
 wait_for "$out/10_state.txt"
 s10="$out/10_state.txt"

@@ -5,6 +5,7 @@
 
 #include "render_fixture.h"
 #include "vox/render/framebuffer.h"
+#include "vox/render/gl.h"
 #include "vox/render/point_renderer.h"
 #include "vox/render/render.h"
 
@@ -231,6 +232,57 @@ TEST(RenderProperties, sectionShowsTheCutFaceInTheCutColour) {
   const Rgba8 outside = render(g, p).at(128, 128);
   EXPECT_EQ(outside.r, 0);
   EXPECT_GT(outside.g, 100);
+}
+
+// A scalar volume colours the surface points by the ramp (dark blue at 0, yellow at 1) and paints values under the
+// threshold red; the section face keeps its colour; without the flag the draw is the plain one.
+TEST(RenderProperties, scalarVolumeColoursTheSurface) {
+  VOX_REQUIRE_GL();
+  const VoxelGrid g = ball(40);
+  auto renderer = PointRenderer::create();
+  ASSERT_TRUE(renderer.ok());
+  (*renderer)->setGrid(g);
+  Framebuffer fb;
+  ASSERT_TRUE(fb.resize(256, 256).ok());
+  const Camera cam = cameraFor((*renderer)->bounds(), small(0, 0));
+  const auto draw = [&](const DrawParams& d) {
+    fb.clear(kBlack);
+    (*renderer)->draw(cam, 256, 256, d);
+    return fb.readPixels();
+  };
+  DrawParams plain;
+  plain.lut = Lut::kLit;
+  const ImageRgba before = draw(plain);
+  // Values along X: 0 (dark blue) on the left half, 1 (yellow) on the right half.
+  const Dims d = g.dims();
+  std::vector<uint8_t> values(size_t(d.count()));
+  for (int64_t i = 0; i < d.count(); ++i) values[size_t(i)] = (i % d.nx) < d.nx / 2 ? 1 : 255;
+  ASSERT_TRUE((*renderer)->setScalarVolume({0, 0, 0}, d, values).ok());
+  EXPECT_EQ(compareImages(draw(plain), before).max_difference, 0);  // not asked for: the plain draw
+  DrawParams coloured = plain;
+  coloured.scalar_colour = true;
+  const ImageRgba image = draw(coloured);
+  EXPECT_GT(compareImages(image, before).different, 1000);
+  const Rgba8 left = image.at(128 - 30, 128), right = image.at(128 + 30, 128);
+  EXPECT_GT(left.b, left.r);        // dark blue
+  EXPECT_GT(right.r, 2 * right.b);  // yellow
+  EXPECT_GT(right.g, 2 * right.b);
+  DrawParams coarse = coloured;  // a level-of-detail point looks at its fine voxels' values
+  coarse.coarse = true;
+  coarse.lod_point_budget = 2'000;
+  const Rgba8 coarse_right = draw(coarse).at(128 + 30, 128);
+  EXPECT_GT(coarse_right.r, 2 * coarse_right.b);
+  coloured.scalar_threshold = 0.5f;  // the left half is under it: red
+  const Rgba8 red = draw(coloured).at(128 - 30, 128);
+  EXPECT_GT(red.r, 3 * std::max<int>(red.g, 1));
+  // A box larger than the GL allows is refused, and the colouring is gone.
+  GLint most = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &most);
+  const Status big =
+      (*renderer)->setScalarVolume({0, 0, 0}, Dims{most + 1, 1, 1}, std::vector<uint8_t>(size_t(most) + 1));
+  EXPECT_FALSE(big.ok());
+  EXPECT_FALSE((*renderer)->hasScalarVolume());
+  EXPECT_EQ(compareImages(draw(coloured), before).max_difference, 0);
 }
 
 TEST(RenderProperties, imageRowZeroIsTheTop) {

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -45,6 +46,12 @@ struct DrawParams {
   // roughly 8 million points a second on 2 cores). Ignored when the full set already fits the budget.
   bool coarse = false;
   int64_t lod_point_budget = 1'000'000;
+  // Colour by the scalar volume (PointRenderer::setScalarVolume): each surface point (not the section face) takes
+  // the ramp colour of its voxel's value (dark blue, teal, green, yellow: io::rampColour) times its shading, and
+  // values under scalar_threshold (0..1 of the ramp) are red. Points without a value keep `colour`. Ignored without
+  // a volume.
+  bool scalar_colour = false;
+  float scalar_threshold = 0.0f;
 };
 
 struct DrawStats {
@@ -76,6 +83,13 @@ class PointRenderer {
   // use. Lets a caller time the upload or do it outside a frame. O(points): a copy into draw order and one
   // glBufferSubData (glBufferData when the buffer must grow).
   void prepare();
+
+  // A scalar per voxel over a box of the grid (voxels box_min .. box_min + box_dims - 1), x fastest: 0 = no value,
+  // 1..255 = 0..1 along the colour ramp (DrawParams::scalar_colour). Uploaded as a GL_R8 3D texture; refused,
+  // saying why, when the box is larger than the GL's GL_MAX_3D_TEXTURE_SIZE (the previous volume is then cleared).
+  Status setScalarVolume(glm::ivec3 box_min, Dims box_dims, const std::vector<uint8_t>& values);
+  void clearScalarVolume();
+  bool hasScalarVolume() const { return scalar_texture_ != 0; }
 
   // Tight box of the surface voxels in voxel-index space (the grid's box when it has none): for Camera::fitToBox.
   Box3 bounds() const;
@@ -110,6 +124,9 @@ class PointRenderer {
   int cut_level_ = -1;
   uint64_t cut_version_ = ~uint64_t(0);
   int64_t cut_count_ = 0;
+  uint32_t scalar_texture_ = 0;  // GL_TEXTURE_3D, GL_R8; 0: none
+  glm::ivec3 scalar_min_{0};
+  glm::ivec3 scalar_dims_{0};
 };
 
 }  // namespace vox::render

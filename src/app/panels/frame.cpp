@@ -23,7 +23,7 @@ struct PanelEntry {
 constexpr PanelEntry kPanels[] = {
     {Panel::kModel, "Model", drawModelPanel}, {Panel::kSection, "Section", drawSectionPanel},
     {Panel::kSkin, "Skin", drawSkinPanel},    {Panel::kXray, "X-ray", drawXrayPanel},
-    {Panel::kMass, "Mass", drawMassPanel},
+    {Panel::kMass, "Mass", drawMassPanel},    {Panel::kThickness, "Thickness", drawThicknessPanel},
 };
 
 void drawSidebar(AppState& state, ImVec2 pos, ImVec2 size) {
@@ -80,6 +80,8 @@ void drawFrame(AppState& state) {
     ImGui::Begin("##image", nullptr, kFixedWindow | ImGuiWindowFlags_NoScrollWithMouse);
     if (state.panel == Panel::kSection) {
       drawSectionImage(state);
+    } else if (state.panel == Panel::kThickness) {
+      drawThicknessImage(state);
     } else {
       drawXrayImage(state);
     }

@@ -23,7 +23,8 @@ float fitScale(ImVec2 fixed, ImVec2 scalable, ImVec2 area) {
 ImageLayout layoutImage(AppState& state, float w, float h) {
   ImageLayout l;
   l.view = ImVec2(w, h);
-  if (state.model.empty() || (state.panel != Panel::kSection && state.panel != Panel::kXray)) return l;
+  const bool thickness = state.panel == Panel::kThickness;
+  if (state.model.empty() || (state.panel != Panel::kSection && state.panel != Panel::kXray && !thickness)) return l;
   const float text = 3.0f * ImGui::GetTextLineHeightWithSpacing();  // title and read-out lines around the image
   constexpr float kMost = 0.6f, kLeast = 0.35f;
   ImVec2 fixed(40.0f, text + 16.0f), scalable(1.0f, 1.0f);
@@ -32,8 +33,11 @@ ImageLayout layoutImage(AppState& state, float w, float h) {
     if (!x) return l;  // not computed yet: the whole area for the 3D view
     fixed = ImVec2(xrayLegendSize().x + 40.0f, text + 16.0f);
     scalable = ImVec2(float(x->thickness.width), float(x->thickness.height));
+  } else if (thickness && !currentThickness(state)) {
+    return l;  // not computed yet: the whole area for the 3D view
   } else if (const Section* s = currentSection(state)) {
     scalable = ImVec2(float(s->mask.width), float(s->mask.height));
+    if (thickness) fixed.x += 230.0f;  // the colour bar and its labels
   }
   const float side = fitScale(fixed, scalable, ImVec2(kMost * w, h));
   const float stacked = fitScale(fixed, scalable, ImVec2(w, kMost * h));

@@ -27,10 +27,12 @@ void drawSectionPanel(AppState& state);
 void drawSkinPanel(AppState& state);
 void drawXrayPanel(AppState& state);
 void drawMassPanel(AppState& state);
+void drawThicknessPanel(AppState& state);
 
 // The 2D images beside the 3D view (Section and X-ray panels).
 void drawSectionImage(AppState& state);
 void drawXrayImage(AppState& state);
+void drawThicknessImage(AppState& state);  // the section coloured by thickness (Thickness panel)
 // Room the X-ray image needs besides its map (title, colour bar and labels, read-out), in screen pixels.
 ImVec2 xrayLegendSize();
 
@@ -71,6 +73,10 @@ ImageAxes imageAxes(Axis a);
 // xray_colour_bar.cpp: the colour bar beside the X-ray map drawn at map0 with the given size: 0 at the bottom, the
 // maximum at the top. Returns its height.
 float drawXrayColourBar(const XrayResult& x, const ScalarMapLegend& legend, ImVec2 map0, ImVec2 size);
+
+// thickness_lists.cpp: the Thickness panel's thin-wall regions and hot spots; a click moves the section there.
+void drawThinWallList(AppState& state, const ThinWalls& thin, const std::string& units);
+void drawHotSpotList(AppState& state, const ThicknessResult& r, const std::string& units);
 
 // dialogs.cpp: the next window appears at the middle of the main viewport.
 void centreNextWindow();

@@ -14,6 +14,7 @@
 #include "app/operations.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
+#include "vox/core/units.h"
 
 namespace vox::app {
 namespace {
@@ -59,6 +60,23 @@ void drawSkinPanel(AppState& state) {
   ImGui::SameLine();
   actionButton(state, ActionId::kPeelCore, "Peel to core", "peel_core", w);
 
+  // The round peel: every voxel within a distance of the empty space (a layer peel removes by face steps).
+  if (state.skin.peel_distance <= 0.0f) state.skin.peel_distance = float(snap.grid.voxelSize());
+  ImGui::SetNextItemWidth(w);
+  const std::string fmt = "%.4g " + unitsLabel(snap.grid.frame().units);
+  ImGui::InputFloat("##peel_distance", &state.skin.peel_distance, 0.0f, 0.0f, fmt.c_str());
+  state.skin.peel_distance = std::max(state.skin.peel_distance, 0.0f);
+  ImGui::SameLine();
+  if (ImGui::Button("Peel by distance", ImVec2(2.0f * w + ImGui::GetStyle().ItemSpacing.x, 0.0f))) {
+    dispatchValues(state, ActionId::kPeelDistance, {std::to_string(state.skin.peel_distance)});
+  }
+  markWidget("peel_distance");
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Removes every voxel whose centre lies within this distance of the empty space: a round skin of even\n"
+        "thickness, where a layer removes face steps (thinner on slopes). Undo (Ctrl+Z) brings it back.");
+  }
+
   // What peeling will hold, before it starts (the bound the depth map stays under).
   wrappedColoured(ImGui::GetStyle().Colors[ImGuiCol_TextDisabled],
                   "Memory for the skin layers: up to " + formatBytes(estimateDepthMapBytes(snap.base)) + " (limit " +
@@ -89,9 +107,10 @@ void drawSkinPanel(AppState& state) {
     // The CLI's words: the model has L skin layers, the last (layer L) is the core; peeling stops before it.
     tableRow("Skin layers", std::to_string(layers) + " (the core is layer " + std::to_string(layers) + ")");
     tableRow("Core depth", formatLength(double(layers) * h, units) + " in face steps");
-    tableRow("Peeled", k == 0 ? std::string("none (the whole model)")
+    tableRow("Peeled", k == 0 ? std::string(snap.round_peels.empty() ? "none (the whole model)" : "no layers")
                               : std::to_string(k) + " of " + std::to_string(layers) + " layers" +
                                     (k == layers - 1 ? ": only the core remains" : ""));
+    if (!snap.round_peels.empty()) tableRow("Peeled round", snap.round_peels + " before these layers");
     tableRow("Remaining voxels", groupDigits(total - gone) + " of " + groupDigits(total));
     if (k > 0 && size_t(k) <= removed.size()) tableRow("Layer removed", groupDigits(removed[size_t(k) - 1]));
     tableRow("Core voxels", groupDigits(depth->coreVoxels()));

@@ -23,6 +23,10 @@ void drawStatusBar(AppState& state) {
     ImGui::TextUnformatted(label.c_str());
     ImGui::SameLine();
     ImGui::ProgressBar(float(p), ImVec2(200.0f, 0.0f));
+  } else if (state.thickness.busy()) {  // the Thickness panel's analysis; its Cancel button is in the panel
+    ImGui::TextUnformatted("Computing thickness");
+    ImGui::SameLine();
+    ImGui::ProgressBar(float(state.thickness.progress()), ImVec2(200.0f, 0.0f));
   } else if (!state.status_message.empty() && nowSeconds() - state.status_since < 8.0) {
     ImGui::TextUnformatted(state.status_message.c_str());
   } else if (!state.model.empty()) {

@@ -1,0 +1,104 @@
+// The section image while the Thickness panel is open: the section (Section panel's axis and index) coloured by
+// local thickness, red under the minimum wall, with a colour bar and the thickness under the mouse.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <imgui.h>
+
+#include "app/operations.h"
+#include "app/panels/panels.h"
+#include "app/thickness_view.h"
+#include "app/ui.h"
+#include "vox/analysis/thickness_map.h"
+#include "vox/io/figure.h"
+
+namespace vox::app {
+namespace {
+
+// Colours the section's thickness map (tenths of a voxel) into the texture when the section, the model or the
+// minimum wall changed. Returns the map's size, or false when there is no section.
+bool uploadThicknessSection(AppState& state, const ThicknessResult& r, int32_t& iw, int32_t& ih) {
+  ThicknessUi& ui = state.thickness_ui;
+  const SectionKey key{state.model_version, state.section.axis, state.section.index};
+  const double wall = minWall(state), max = r.thickness.stats.max, h = state.model.voxelSize();
+  auto map = thicknessSection(r.thickness, SectionParams{state.section.axis, state.section.index});
+  if (!map) return false;
+  iw = map->width;
+  ih = map->height;
+  if (key == ui.image_key && wall == ui.image_min_wall && !ui.image_texture.empty()) return true;
+  ImageRgb picture(iw, ih);
+  for (int32_t v = 0; v < ih; ++v) {
+    for (int32_t u = 0; u < iw; ++u) {
+      const int32_t tenths = map->at(u, v);
+      if (tenths <= 0) {
+        picture.at(u, v) = io::kNoMaterialColour;
+        continue;
+      }
+      const ImU32 c = thicknessColour(double(tenths) / kThicknessTenths * h, max, wall);
+      picture.at(u, v) = Rgb8{uint8_t(c & 0xff), uint8_t((c >> 8) & 0xff), uint8_t((c >> 16) & 0xff)};
+    }
+  }
+  ui.image_texture.upload(picture);
+  ui.image_key = key;
+  ui.image_min_wall = wall;
+  return true;
+}
+
+}  // namespace
+
+void drawThicknessImage(AppState& state) {
+  const ThicknessResult* r = currentThickness(state);
+  if (!r) {
+    ImGui::TextUnformatted("Computing thickness...");
+    return;
+  }
+  currentSection(state);  // clamps the index to the model
+  int32_t iw = 0, ih = 0;
+  if (!uploadThicknessSection(state, *r, iw, ih) || iw <= 0 || ih <= 0) {
+    ImGui::TextUnformatted("No section.");
+    return;
+  }
+  const Axis axis = state.section.axis;
+  const std::string units = state.model.frame().units;
+  ImGui::Text("Thickness in the section %s = %d (Section panel's slider)", axisName(axis), state.section.index);
+  const ImageAxes ax = imageAxes(axis);
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  const float bar_room = 230.0f;  // the colour bar and its labels ("min wall 0.125 model units")
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  float scale = std::min(std::max(1.0f, avail.x - bar_room - 24.0f) / float(iw),
+                         std::max(1.0f, avail.y - 3.0f * line) / float(ih));
+  if (scale >= 1.0f) scale = std::floor(scale);
+  scale = std::max(scale, 0.05f);
+  const ImVec2 size(float(iw) * scale, float(ih) * scale);
+  ImGui::Text("%s ^", axisName(Axis(ax.up)));
+  const ImVec2 origin(ImGui::GetCursorScreenPos().x + 20.0f, ImGui::GetCursorScreenPos().y);
+  ImGui::SetCursorScreenPos(origin);
+  ImGui::Image(textureId(state.thickness_ui.image_texture.id()), size);
+  markWidget("thickness_image");
+  const bool hovered = ImGui::IsItemHovered();
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const float bar_h = std::max(size.y, 6.0f * line);
+  drawThicknessBar(dl, ImVec2(origin.x + size.x + 16.0f, origin.y), bar_h, r->thickness.stats.max, minWall(state),
+                   units);
+  ImGui::SetCursorScreenPos(ImVec2(origin.x + size.x - 40.0f, origin.y + size.y + 2.0f));
+  ImGui::Text("%s >", axisName(Axis(ax.right)));
+  drawScaleBar(ImVec2(origin.x, origin.y + size.y + 2.0f + line), scale / float(state.model.voxelSize()), units,
+               std::max(size.x * 0.5f, 60.0f));
+  ImGui::Dummy(ImVec2(0.0f, std::max(0.0f, bar_h - size.y) + line));
+  if (!hovered) return;
+  const ImVec2 m = ImGui::GetIO().MousePos;
+  const int32_t u = std::clamp(int32_t((m.x - origin.x) / scale), 0, iw - 1);
+  const int32_t row = std::clamp(int32_t((m.y - origin.y) / scale), 0, ih - 1);
+  int32_t voxel[3];
+  voxel[int(axis)] = state.section.index;
+  voxel[ax.right] = u;
+  voxel[ax.up] = ih - 1 - row;  // row 0 holds the largest "up" index
+  const ImVec2 cell(origin.x + float(u) * scale, origin.y + float(row) * scale);
+  markCell(origin, ImVec2(origin.x + size.x, origin.y + size.y), cell, ImVec2(cell.x + scale, cell.y + scale));
+  const double t = r->thickness.model(voxel[0], voxel[1], voxel[2]);
+  ImGui::SetTooltip("voxel (%d, %d, %d): %s", voxel[0], voxel[1], voxel[2],
+                    t > 0.0 ? ("thickness " + formatLength(t, units)).c_str() : "empty");
+}
+
+}  // namespace vox::app

@@ -1,0 +1,109 @@
+// The Thickness panel's lists (thickness_panel.cpp): thin-wall regions, largest first, and hot spots, thickest
+// first. Clicking a row moves the section through it (the section action) and shows it in the section image.
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include <imgui.h>
+
+#include "app/actions.h"
+#include "app/operations.h"
+#include "app/panels/panels.h"
+#include "app/ui.h"
+#include "vox/core/units.h"
+
+namespace vox::app {
+namespace {
+
+constexpr int kMostRows = 200;  // more would not be read; the count above the list says how many there are
+
+// The section along the current axis through `voxel`, shown beside the Thickness panel.
+void sectionThrough(AppState& state, glm::ivec3 voxel) {
+  const Axis axis = state.section.axis;
+  dispatchValues(state, ActionId::kSectionAt, {axisName(axis), std::to_string(voxel[int(axis)])});
+  dispatch(state, ActionId::kPanelThickness);
+}
+
+bool beginList(const char* id, int columns, int rows) {
+  const float row_h = ImGui::GetTextLineHeightWithSpacing() + 2.0f;
+  const float height = std::min(float(std::min(rows, 8) + 1) * row_h + 6.0f, 10.0f * row_h);
+  if (!ImGui::BeginTable(id, columns, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersOuter,
+                         ImVec2(0.0f, height)))
+    return false;
+  ImGui::TableSetupScrollFreeze(0, 1);
+  return true;
+}
+
+}  // namespace
+
+void drawThinWallList(AppState& state, const ThinWalls& thin, const std::string& units) {
+  if (thin.voxels == 0) {
+    ImGui::TextWrapped("No voxel is thinner than %s.", formatLength(thin.min_wall, units).c_str());
+    return;
+  }
+  ImGui::TextWrapped("%s voxels thinner than %s, in %s regions (red in the views; lengths in %s). Click one to see it.",
+                     groupDigits(thin.voxels).c_str(), formatLength(thin.min_wall, units).c_str(),
+                     groupDigits(int64_t(thin.regions.size())).c_str(), unitsLabel(units).c_str());
+  const int rows = std::min(int(thin.regions.size()), kMostRows);
+  if (!beginList("thin_walls", 3, rows)) return;
+  ImGui::TableSetupColumn("Voxels", ImGuiTableColumnFlags_WidthFixed, 70.0f);
+  ImGui::TableSetupColumn("Thinnest");
+  ImGui::TableSetupColumn("Box, voxels");
+  ImGui::TableHeadersRow();
+  for (int i = 0; i < rows; ++i) {
+    const ThinWallRegion& g = thin.regions[size_t(i)];
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::PushID(i);
+    if (ImGui::Selectable(groupDigits(g.voxels).c_str(), false, ImGuiSelectableFlags_SpanAllColumns)) {
+      sectionThrough(state, (g.bbox_min_ijk + g.bbox_max_ijk) / 2);
+    }
+    ImGui::PopID();
+    ImGui::TableSetColumnIndex(1);
+    ImGui::Text("%.4g", g.min);
+    ImGui::TableSetColumnIndex(2);
+    const glm::ivec3 e = g.bbox_max_ijk - g.bbox_min_ijk + 1;
+    ImGui::Text("%d x %d x %d", e.x, e.y, e.z);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("voxels (%d, %d, %d) to (%d, %d, %d)", g.bbox_min_ijk.x, g.bbox_min_ijk.y, g.bbox_min_ijk.z,
+                        g.bbox_max_ijk.x, g.bbox_max_ijk.y, g.bbox_max_ijk.z);
+    }
+  }
+  ImGui::EndTable();
+  markWidget("thin_wall_list");
+}
+
+void drawHotSpotList(AppState& state, const ThicknessResult& r, const std::string& units) {
+  ImGui::TextWrapped(
+      "The centres of the thickest regions (magenta rings in the 3D view): where a casting solidifies last. "
+      "Isolated: cut off from thicker ones by a thinner neck, so it needs its own feeder. Lengths in %s.",
+      unitsLabel(units).c_str());
+  if (r.hot_spots.empty()) return;
+  const int rows = std::min(int(r.hot_spots.size()), kMostRows);
+  if (!beginList("hot_spots", 4, rows)) return;
+  ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, 24.0f);
+  ImGui::TableSetupColumn("Radius");
+  ImGui::TableSetupColumn("Modulus");
+  ImGui::TableSetupColumn("Isolated", ImGuiTableColumnFlags_WidthFixed, 60.0f);
+  ImGui::TableHeadersRow();
+  for (int i = 0; i < rows; ++i) {
+    const HotSpot& s = r.hot_spots[size_t(i)];
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::PushID(i);
+    if (ImGui::Selectable(std::to_string(i + 1).c_str(), false, ImGuiSelectableFlags_SpanAllColumns)) {
+      sectionThrough(state, s.voxel);
+    }
+    ImGui::PopID();
+    ImGui::TableSetColumnIndex(1);
+    ImGui::Text("%.4g", s.radius);
+    ImGui::TableSetColumnIndex(2);
+    ImGui::Text("%.4g", s.modulus);
+    ImGui::TableSetColumnIndex(3);
+    ImGui::TextUnformatted(s.isolated ? "yes" : "no");
+  }
+  ImGui::EndTable();
+  markWidget("hot_spot_list");
+}
+
+}  // namespace vox::app

@@ -1,0 +1,93 @@
+// Thickness panel (issue 16): local thickness of the model (the diameter of the largest inscribed ball holding each
+// voxel), its statistics and histogram, the thin walls under a minimum wall and the hot spots (the centres of the
+// thickest regions, where a casting solidifies last). Computed in the background while the panel is open; the 3D view
+// and the section image are coloured by thickness meanwhile.
+#include <algorithm>
+#include <cfloat>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <imgui.h>
+
+#include "app/actions.h"
+#include "app/operations.h"
+#include "app/panels/panels.h"
+#include "app/ui.h"
+#include "vox/core/units.h"
+
+namespace vox::app {
+namespace {
+
+// While computing, after a cancel or a failure: says so; returns the result when there is one.
+const ThicknessResult* thicknessOrStatus(AppState& state) {
+  if (const ThicknessResult* r = currentThickness(state)) return r;
+  if (const Error* e = state.thickness.error(state.model_version)) {
+    wrappedColoured(kErrorColour, "Thickness could not be computed: " + e->message);
+  } else if (state.thickness_ui.cancelled_version == state.model_version) {
+    ImGui::TextUnformatted("Cancelled.");
+    if (ImGui::Button("Compute thickness")) retryThickness(state);
+  } else {
+    ImGui::TextUnformatted("Computing distance, thickness and hot spots...");
+    ImGui::ProgressBar(float(state.thickness.progress()), ImVec2(-1.0f, 0.0f));
+    if (ImGui::Button("Cancel")) cancelThickness(state);
+    markWidget("thickness_cancel");
+  }
+  return nullptr;
+}
+
+void histogram(const ThicknessStats& st, double min_wall, const std::string& units) {
+  std::vector<float> values(st.counts.begin(), st.counts.end());
+  const std::string overlay = "voxels per thickness, 0 .. " + formatLength(st.max, units);
+  ImGui::PlotHistogram("##thickness_histogram", values.data(), int(values.size()), 0, overlay.c_str(), 0.0f, FLT_MAX,
+                       ImVec2(ImGui::GetContentRegionAvail().x, 100.0f));
+  markWidget("thickness_histogram");
+  if (st.max <= 0.0) return;
+  // The minimum wall as a red line on the histogram.
+  const ImVec2 r0 = ImGui::GetItemRectMin(), r1 = ImGui::GetItemRectMax();
+  const float pad = ImGui::GetStyle().FramePadding.x;
+  const float x = r0.x + pad + (r1.x - r0.x - 2.0f * pad) * float(std::min(min_wall / st.max, 1.0));
+  ImGui::GetWindowDrawList()->AddLine(ImVec2(x, r0.y), ImVec2(x, r1.y), IM_COL32(255, 60, 60, 255), 2.0f);
+}
+
+}  // namespace
+
+void drawThicknessPanel(AppState& state) {
+  if (state.model.empty()) {
+    ImGui::TextWrapped("Open a voxel file or voxelize a mesh to see its wall thickness.");
+    return;
+  }
+  peeledNotice(state);
+  const ThicknessResult* r = thicknessOrStatus(state);
+  if (!r) return;
+  const ThicknessStats& st = r->thickness.stats;
+  const std::string units = state.model.frame().units;
+
+  if (beginFactTable("thickness_facts")) {
+    tableRow("Thinnest", formatLength(st.min, units));
+    tableRow("Thickest", formatLength(st.max, units));
+    tableRow("Mean", formatLength(st.mean, units));
+    tableRow("Voxels", groupDigits(st.voxels) + " in " + formatSeconds(r->seconds));
+    ImGui::EndTable();
+  }
+  const double wall = minWall(state);
+  histogram(st, wall, units);
+
+  heading("Minimum wall");
+  float v = float(wall);
+  ImGui::SetNextItemWidth(-1.0f);
+  const std::string fmt = "%.4g " + unitsLabel(units);
+  if (ImGui::SliderFloat("##min_wall", &v, 0.0f, float(st.max), fmt.c_str())) {
+    dispatchValues(state, ActionId::kMinWall, {std::to_string(v)});
+  }
+  markWidget("min_wall_slider");
+  if (const ThinWalls* thin = currentThinWalls(state)) drawThinWallList(state, *thin, units);
+
+  heading("Hot spots");
+  drawHotSpotList(state, *r, units);
+  if (!state.thickness_ui.volume_problem.empty()) {
+    wrappedColoured(kWarningColour, state.thickness_ui.volume_problem);
+  }
+}
+
+}  // namespace vox::app

@@ -1,0 +1,94 @@
+#include "app/thickness.h"
+
+#include <algorithm>
+#include <memory>
+#include <utility>
+
+#include "app/document.h"
+#include "app/ui.h"  // formatLength
+#include "vox/analysis/distance.h"
+#include "vox/core/text.h"
+
+namespace vox::app {
+
+void requestThickness(AppState& state) {
+  state.thickness.poll();
+  if (state.panel != Panel::kThickness || state.model.empty()) return;
+  const uint64_t key = state.model_version;
+  if (state.thickness_ui.cancelled_version == key || !state.thickness.wants(key)) return;
+  VoxelGrid grid = state.model;
+  state.thickness.request(key, "Computing thickness", [grid](const ProgressFn& progress) {
+    using R = Result<std::shared_ptr<const ThicknessResult>>;
+    const double t0 = nowSeconds();
+    // Distance 0..40%, hot spots 40..50%, thickness 50..100% of the bar.
+    const auto part = [&progress](double from, double to) {
+      return ProgressFn([&progress, from, to](double f) { return !progress || progress(from + (to - from) * f); });
+    };
+    auto distance = computeDistance(grid, part(0.0, 0.4));
+    if (!distance) return R(distance.error());
+    auto hot = findHotSpots(*distance, {}, part(0.4, 0.5));
+    if (!hot) return R(hot.error());
+    auto thickness = computeThickness(std::move(distance).value(), {}, part(0.5, 1.0));
+    if (!thickness) return R(thickness.error());
+    auto out = std::make_shared<ThicknessResult>();
+    out->thickness = std::move(thickness).value();
+    out->hot_spots = std::move(hot).value();
+    out->seconds = nowSeconds() - t0;
+    return R(std::shared_ptr<const ThicknessResult>(std::move(out)));
+  });
+}
+
+const ThicknessResult* currentThickness(const AppState& state) {
+  const auto* r = state.thickness.get(state.model_version);
+  return r ? r->get() : nullptr;
+}
+
+void cancelThickness(AppState& state) {
+  if (!state.thickness.computing(state.model_version)) return;
+  state.thickness.clear();
+  state.thickness_ui.cancelled_version = state.model_version;
+}
+
+void retryThickness(AppState& state) { state.thickness_ui.cancelled_version = 0; }
+
+double minWall(const AppState& state) {
+  if (state.thickness_ui.min_wall >= 0.0) return state.thickness_ui.min_wall;
+  const ThicknessResult* r = currentThickness(state);
+  return r ? 0.25 * r->thickness.stats.max : 0.0;
+}
+
+const ThinWalls* currentThinWalls(AppState& state) {
+  const ThicknessResult* r = currentThickness(state);
+  if (!r) return nullptr;
+  ThicknessUi& ui = state.thickness_ui;
+  const double wall = minWall(state);
+  if (!ui.thin || ui.thin_version != state.model_version || ui.thin_min_wall != wall) {
+    auto thin = findThinWalls(r->thickness, wall);
+    ui.thin_version = state.model_version;
+    ui.thin_min_wall = wall;
+    if (thin) {
+      ui.thin = std::move(thin).value();
+    } else {
+      ui.thin.reset();
+    }
+  }
+  return ui.thin ? &*ui.thin : nullptr;
+}
+
+Status peelDistance(AppState& state, double distance) {
+  if (!state.doc.model) return makeError(ErrorCode::kInvalidArgument, "peel-distance: there is no model to peel");
+  if (!(distance >= 0.0)) return makeError(ErrorCode::kInvalidArgument, "peel-distance takes a distance >= 0");
+  const ModelSnapshot& cur = *state.doc.model;
+  auto peeled = peelByDistance(cur.grid, distance);
+  if (!peeled) return peeled.error();
+  // A new base: the layer peel (the depth map) then works on what the round peel left.
+  const std::string d = formatLength(distance, cur.grid.frame().units);
+  const std::string before = cur.peeled > 0 ? std::to_string(cur.peeled) + " layers + " : std::string();
+  const std::string round_peels = cur.round_peels.empty() ? before + d : cur.round_peels + " + " + before + d;
+  ModelSnapshot next = newBase(state, std::move(peeled).value(), cur.origin, "peel " + d + " round");
+  next.round_peels = round_peels;
+  setModel(state, std::move(next), true);
+  return Ok{};
+}
+
+}  // namespace vox::app

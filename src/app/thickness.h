@@ -1,0 +1,27 @@
+#pragma once
+// The Thickness panel's analyses: distance, local thickness and hot spots of the model computed in the background
+// while the panel is open (keyed by the model version, so undo of anything that leaves the model alone keeps them),
+// the thin walls under the minimum wall (main thread: cheap), and the round skin removal (peel by distance) as an
+// undoable change of the model. No ImGui and no GL here.
+#include <string>
+
+#include "app/app_state.h"
+
+namespace vox::app {
+
+// Each frame (updateDocument): asks for the thickness of the model while the Thickness panel is open.
+void requestThickness(AppState& state);
+// The result for the model shown, or null while computing (or when it failed or was cancelled).
+const ThicknessResult* currentThickness(const AppState& state);
+// Stops the computation for this model version; it is not asked for again until "Compute" (retryThickness).
+void cancelThickness(AppState& state);
+void retryThickness(AppState& state);
+// The minimum wall in use (model units): the user's, or a quarter of the maximum thickness.
+double minWall(const AppState& state);
+// Thin walls under minWall, found again when the value or the model changed; null without a thickness.
+const ThinWalls* currentThinWalls(AppState& state);
+// Replaces the model by the model without every voxel within `distance` (model units) of the empty space: an
+// undoable change labelled "peel 0.5 mm round". Fails, saying why, without a model or for a negative distance.
+Status peelDistance(AppState& state, double distance);
+
+}  // namespace vox::app

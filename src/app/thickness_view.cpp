@@ -1,0 +1,200 @@
+#include "app/thickness_view.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+
+#include "app/thickness.h"
+#include "app/ui.h"
+#include "vox/io/figure.h"
+
+namespace vox::app {
+namespace {
+
+constexpr ImU32 kThinColour = IM_COL32(242, 31, 26, 255);  // points.vert's red for walls under the minimum
+constexpr ImU32 kThinTextColour = IM_COL32(255, 120, 110, 255);
+constexpr ImU32 kHotSpotColour = IM_COL32(255, 60, 220, 255);
+constexpr int kMostHotSpotsShown = 20;
+
+const ThicknessResult* shownThickness(const AppState& state) {
+  return state.panel == Panel::kThickness && !state.model.empty() ? currentThickness(state) : nullptr;
+}
+
+// Text with a dark shadow, readable over any colour of the model.
+void shadowText(ImDrawList* dl, ImVec2 p, ImU32 colour, const char* text) {
+  dl->AddText(ImVec2(p.x + 1.0f, p.y + 1.0f), IM_COL32(0, 0, 0, 255), text);
+  dl->AddText(p, colour, text);
+}
+
+// Screen position of a point in voxel-index space; false behind the camera.
+bool project(const glm::dmat4& vp, glm::dvec3 p, ImVec2 pos, int w, int h, ImVec2& out) {
+  const glm::dvec4 c = vp * glm::dvec4(p, 1.0);
+  if (c.w <= 0.0) return false;
+  out = ImVec2(pos.x + float((c.x / c.w + 1.0) * 0.5 * w), pos.y + float((1.0 - c.y / c.w) * 0.5 * h));
+  return true;
+}
+
+// The thickness of the voxel under the mouse, as a line of text at the view's bottom left, and a ring on it.
+void hoverReadout(const AppState& state, const ThicknessResult& r, ImDrawList* dl, ImVec2 pos, int w, int h,
+                  double aspect) {
+  const ImVec2 m = ImGui::GetIO().MousePos;
+  if (!ImGui::IsWindowHovered() || m.x < pos.x || m.y < pos.y || m.x >= pos.x + float(w) || m.y >= pos.y + float(h))
+    return;
+  const glm::dmat4 vp = state.view.camera.viewProjection(aspect, *state.model_bounds);
+  const glm::dmat4 inv = glm::inverse(vp);
+  const double nx = 2.0 * double(m.x - pos.x) / double(w) - 1.0, ny = 1.0 - 2.0 * double(m.y - pos.y) / double(h);
+  const auto unproject = [&](double z) {
+    const glm::dvec4 p = inv * glm::dvec4(nx, ny, z, 1.0);
+    return glm::dvec3(p) / p.w;
+  };
+  const auto v = pickVoxel(state.model, unproject(-1.0), unproject(1.0));
+  if (!v) return;
+  const std::string units = state.model.frame().units;
+  char line[160];
+  std::snprintf(line, sizeof line, "Thickness %s at voxel (%d, %d, %d)",
+                formatLength(r.thickness.model(v->x, v->y, v->z), units).c_str(), v->x, v->y, v->z);
+  const float lh = ImGui::GetTextLineHeightWithSpacing();
+  shadowText(dl, ImVec2(pos.x + 8.0f, pos.y + float(h) - 2.0f * lh - 6.0f), IM_COL32(255, 255, 255, 255), line);
+  ImVec2 c;
+  if (project(vp, glm::dvec3(*v) + 0.5, pos, w, h, c)) dl->AddCircle(c, 5.0f, IM_COL32(255, 255, 255, 255), 0, 1.5f);
+}
+
+}  // namespace
+
+ImU32 thicknessColour(double thickness, double max, double min_wall) {
+  if (thickness < min_wall) return kThinColour;
+  const Rgb8 c = io::rampColour(max > 0.0 ? thickness / max : 0.0);
+  return IM_COL32(c.r, c.g, c.b, 255);
+}
+
+void syncThicknessVolume(AppState& state) {
+  ThicknessUi& ui = state.thickness_ui;
+  const ThicknessResult* r = shownThickness(state);
+  const uint64_t key = r ? state.model_version : 0;
+  if (key == ui.volume_key || !state.viewport.renderer) return;
+  ui.volume_key = key;
+  state.viewport.dirty = true;
+  ui.volume_problem.clear();
+  if (!r) {
+    state.viewport.renderer->clearScalarVolume();
+    return;
+  }
+  // 0: empty; 1..255: thickness 0..max (the radius field holds R^2 in voxels^2; thickness = 2R).
+  const DistanceField& f = r->thickness.radius;
+  const double max_voxels = r->thickness.stats.max / f.voxelSize();
+  std::vector<uint8_t> values(size_t(f.boxDims().count()), 0);
+  for (size_t i = 0; i < values.size(); ++i) {
+    const uint32_t sq = f.data()[i];
+    if (sq == 0) continue;
+    const double t = max_voxels > 0.0 ? 2.0 * std::sqrt(double(sq)) / max_voxels : 0.0;
+    values[i] = uint8_t(1 + std::lround(254.0 * std::clamp(t, 0.0, 1.0)));
+  }
+  if (Status s = state.viewport.renderer->setScalarVolume(f.boxMin(), f.boxDims(), values); !s) {
+    ui.volume_problem = "The 3D view is not coloured by thickness: " + s.error().message + ".";
+  }
+}
+
+void thicknessDrawParams(const AppState& state, render::DrawParams& p) {
+  const ThicknessResult* r = shownThickness(state);
+  if (!r || !state.viewport.renderer || !state.viewport.renderer->hasScalarVolume()) return;
+  p.scalar_colour = true;
+  const double max = r->thickness.stats.max;
+  p.scalar_threshold = max > 0.0 ? float(minWall(state) / max) : 0.0f;
+}
+
+float drawThicknessBar(ImDrawList* dl, ImVec2 at, float height, double max, double min_wall, const std::string& units) {
+  constexpr float kBarW = 16.0f;
+  constexpr int kBands = 48;
+  for (int i = 0; i < kBands; ++i) {  // from the top (max) down
+    const double t0 = max * (1.0 - double(i) / kBands), t1 = max * (1.0 - double(i + 1) / kBands);
+    const float y0 = at.y + height * float(i) / kBands, y1 = at.y + height * float(i + 1) / kBands;
+    const ImU32 c0 = thicknessColour(t0, max, min_wall), c1 = thicknessColour(t1, max, min_wall);
+    dl->AddRectFilledMultiColor(ImVec2(at.x, y0), ImVec2(at.x + kBarW, y1), c0, c0, c1, c1);
+  }
+  dl->AddRect(ImVec2(at.x - 1.0f, at.y - 1.0f), ImVec2(at.x + kBarW + 1.0f, at.y + height + 1.0f),
+              IM_COL32(160, 160, 160, 255));
+  const float th = ImGui::GetTextLineHeight();
+  const ImU32 ink = IM_COL32(230, 230, 230, 255);
+  const std::string top = formatLength(max, units), bottom = formatLength(0.0, units);
+  const float lx = at.x + kBarW + 6.0f;
+  shadowText(dl, ImVec2(lx, at.y - th * 0.5f), ink, top.c_str());
+  shadowText(dl, ImVec2(lx, at.y + height - th * 0.5f), ink, bottom.c_str());
+  float width = std::max(ImGui::CalcTextSize(top.c_str()).x, ImGui::CalcTextSize(bottom.c_str()).x);
+  if (max > 0.0 && min_wall > 0.0 && min_wall < max) {
+    const float y = at.y + height * float(1.0 - min_wall / max);
+    dl->AddLine(ImVec2(at.x - 4.0f, y), ImVec2(at.x + kBarW + 4.0f, y), ink, 1.5f);
+    const std::string label = "min wall " + formatLength(min_wall, units);
+    // Kept clear of the labels at the ends.
+    const float ly = std::clamp(y - th * 0.5f, at.y + th * 1.2f, at.y + height - th * 2.2f);
+    shadowText(dl, ImVec2(lx, ly), kThinTextColour, label.c_str());
+    width = std::max(width, ImGui::CalcTextSize(label.c_str()).x);
+  }
+  return kBarW + 6.0f + width;
+}
+
+// The same ramp lying along the top of the 3D view (the model fills the view's middle): 0 at the left, the maximum
+// at the right, the minimum wall marked.
+void drawThicknessStrip(ImDrawList* dl, ImVec2 at, float width, double max, double min_wall, const std::string& units) {
+  constexpr float kStripH = 12.0f;
+  constexpr int kBands = 48;
+  for (int i = 0; i < kBands; ++i) {
+    const double t0 = max * double(i) / kBands, t1 = max * double(i + 1) / kBands;
+    const float x0 = at.x + width * float(i) / kBands, x1 = at.x + width * float(i + 1) / kBands;
+    const ImU32 c0 = thicknessColour(t0, max, min_wall), c1 = thicknessColour(t1, max, min_wall);
+    dl->AddRectFilledMultiColor(ImVec2(x0, at.y), ImVec2(x1, at.y + kStripH), c0, c1, c1, c0);
+  }
+  dl->AddRect(ImVec2(at.x - 1.0f, at.y - 1.0f), ImVec2(at.x + width + 1.0f, at.y + kStripH + 1.0f),
+              IM_COL32(160, 160, 160, 255));
+  const ImU32 ink = IM_COL32(230, 230, 230, 255);
+  const float ly = at.y + kStripH + 3.0f;
+  const std::string top = formatLength(max, units);
+  shadowText(dl, ImVec2(at.x, ly), ink, "0");
+  shadowText(dl, ImVec2(at.x + width - ImGui::CalcTextSize(top.c_str()).x, ly), ink, top.c_str());
+  if (max > 0.0 && min_wall > 0.0 && min_wall < max) {
+    const float x = at.x + width * float(min_wall / max);
+    dl->AddLine(ImVec2(x, at.y - 3.0f), ImVec2(x, at.y + kStripH + 3.0f), ink, 1.5f);
+    const std::string label = "min wall " + formatLength(min_wall, units);
+    const float lw = ImGui::CalcTextSize(label.c_str()).x;
+    const float lx = std::clamp(x - lw * 0.5f, at.x, at.x + width - lw);
+    shadowText(dl, ImVec2(lx, ly + ImGui::GetTextLineHeight()), kThinTextColour, label.c_str());
+  }
+}
+
+void drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, int h, double aspect) {
+  if (state.panel != Panel::kThickness || state.model.empty() || !state.model_bounds) return;
+  const ThicknessResult* r = shownThickness(state);
+  const float lh = ImGui::GetTextLineHeightWithSpacing();
+  if (!r) {
+    shadowText(dl, ImVec2(pos.x + 8.0f, pos.y + 8.0f), IM_COL32(230, 230, 230, 255), "Computing thickness...");
+    return;
+  }
+  const std::string units = state.model.frame().units;
+  const glm::dmat4 vp = state.view.camera.viewProjection(aspect, *state.model_bounds);
+  // Hot spots: rings at their centres, numbered as in the panel's list (the largest first).
+  for (size_t i = 0; i < r->hot_spots.size() && int(i) < kMostHotSpotsShown; ++i) {
+    ImVec2 c;
+    if (!project(vp, glm::dvec3(r->hot_spots[i].voxel) + 0.5, pos, w, h, c)) continue;
+    dl->AddCircle(c, 8.0f, IM_COL32(0, 0, 0, 255), 0, 4.0f);
+    dl->AddCircle(c, 8.0f, kHotSpotColour, 0, 2.0f);
+    shadowText(dl, ImVec2(c.x + 10.0f, c.y - 18.0f), kHotSpotColour, std::to_string(i + 1).c_str());
+  }
+  // The colour scale along the top, under the view's buttons, with the hot spots' ring explained beside its title.
+  const float strip_w = std::clamp(float(w) - 24.0f, 60.0f, 300.0f);
+  const float y0 = pos.y + 30.0f;
+  shadowText(dl, ImVec2(pos.x + 12.0f, y0), IM_COL32(230, 230, 230, 255), "Thickness");
+  const float ring_x = pos.x + 12.0f + ImGui::CalcTextSize("Thickness").x + 24.0f;
+  dl->AddCircle(ImVec2(ring_x, y0 + lh * 0.45f), 6.0f, kHotSpotColour, 0, 2.0f);
+  shadowText(dl, ImVec2(ring_x + 10.0f, y0), kHotSpotColour, "hot spot");
+  drawThicknessStrip(dl, ImVec2(pos.x + 12.0f, y0 + lh + 2.0f), strip_w, r->thickness.stats.max, minWall(state), units);
+  if (!state.thickness_ui.volume_problem.empty()) {
+    shadowText(dl, ImVec2(pos.x + 12.0f, y0 + 4.0f * lh), IM_COL32(255, 200, 80, 255),
+               state.thickness_ui.volume_problem.c_str());
+  }
+  hoverReadout(state, *r, dl, pos, w, h, aspect);
+}
+
+}  // namespace vox::app

@@ -1,0 +1,14 @@
+#pragma once
+// What the 3D view draws over its image with ImGui (viewport.cpp): the measured voxels, the axis triad.
+#include <imgui.h>
+
+#include "app/app_state.h"
+
+namespace vox::app {
+
+// The picked voxels as rings at their centres, lettered, and what they measure, at the view's top left.
+void drawMeasureOverlay(const AppState& state, ImDrawList* dl, ImVec2 pos, int w, int h, double aspect);
+// X, Y and Z as the camera sees them, from `origin`.
+void drawAxisTriad(const render::Camera& camera, ImVec2 origin, float length);
+
+}  // namespace vox::app
