@@ -15,10 +15,6 @@
 #include <string>
 #include <vector>
 
-#ifdef __linux__
-#include <sys/mman.h>
-#endif
-
 #include <glm/common.hpp>
 
 #include "analysis/progress_gate.h"
@@ -31,17 +27,6 @@ DistanceField::DistanceField(Dims grid_dims, GridFrame frame, glm::ivec3 box_min
     : grid_dims_(grid_dims), frame_(std::move(frame)), box_min_(box_min), box_dims_(box_dims), outside_(outside) {
   if (box_dims_.count() > 0) {
     data_.reset(static_cast<uint32_t*>(std::calloc(size_t(box_dims_.count()), sizeof(uint32_t))));
-#ifdef __linux__
-    // Large fields on 2 MiB pages: the Y and Z passes stride across the whole field, and small pages cost a TLB
-    // miss per step and a fault per 4 KiB (about a third of the transform's time at R = 512).
-    const size_t bytes = memoryBytes();
-    constexpr size_t kHuge = size_t(2) << 20;
-    if (data_ && bytes >= 16 * kHuge) {
-      const uintptr_t begin = (reinterpret_cast<uintptr_t>(data_.get()) + kHuge - 1) & ~(kHuge - 1);
-      const uintptr_t end = (reinterpret_cast<uintptr_t>(data_.get()) + bytes) & ~(kHuge - 1);
-      if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);  // a hint: ignore errors
-    }
-#endif
   }
 }
 
@@ -249,7 +234,7 @@ uint32_t passYZ(DistanceField& f, int axis, bool border, ProgressGate& gate, dou
           uint32_t* dst = base + q * line_stride;
           for (int64_t j = 0; j < w; ++j) {
             const uint32_t v = tile[size_t(j * len + q)];
-            dst[j] = v;
+            if (dst[j] != v) dst[j] = v;  // a page that stays zero is never written (nor faulted in)
             if (v != kInf && v > mx) mx = v;
           }
         }
