@@ -200,7 +200,7 @@ void transformLine(uint32_t* f, int64_t n, bool border, LineScratch& s) {
 // along the line reads kTile consecutive values), transformed in per-thread scratch and written back. Returns the
 // largest finite value written (the last pass gives the field's maximum).
 uint32_t passYZ(DistanceField& f, int axis, bool border, ProgressGate& gate, double progress0) {
-  constexpr int64_t kTile = 16;
+  constexpr int64_t kTile = 64;
   const Dims d = f.boxDims();
   const int64_t nx = d.nx, ny = d.ny, nz = d.nz;
   const int64_t len = axis == 1 ? ny : nz;
@@ -234,7 +234,7 @@ uint32_t passYZ(DistanceField& f, int axis, bool border, ProgressGate& gate, dou
           uint32_t* dst = base + q * line_stride;
           for (int64_t j = 0; j < w; ++j) {
             const uint32_t v = tile[size_t(j * len + q)];
-            dst[j] = v;
+            if (dst[j] != v) dst[j] = v;  // a page that stays zero is never written (nor faulted in)
             if (v != kInf && v > mx) mx = v;
           }
         }

@@ -1,6 +1,7 @@
 #pragma once
 // Progress from worker threads (vox/core/progress.h): calls to the callback are serialised, and once it asks to
 // stop every worker sees cancelled() and winds down.
+#include <algorithm>
 #include <atomic>
 #include <mutex>
 
@@ -17,7 +18,9 @@ class ProgressGate {
     if (!fn_) return true;
     std::lock_guard<std::mutex> lock(mutex_);
     if (cancelled_.load(std::memory_order_relaxed)) return false;
-    if (!fn_(fraction < 0 ? 0.0 : (fraction > 1 ? 1.0 : fraction))) cancelled_.store(true);
+    // workers finish out of order: never report less than before
+    last_ = std::max(last_, fraction < 0 ? 0.0 : (fraction > 1 ? 1.0 : fraction));
+    if (!fn_(last_)) cancelled_.store(true);
     return !cancelled_.load();
   }
   bool cancelled() const { return cancelled_.load(std::memory_order_relaxed); }
@@ -26,6 +29,7 @@ class ProgressGate {
   const ProgressFn& fn_;
   std::mutex mutex_;
   std::atomic<bool> cancelled_{false};
+  double last_ = 0.0;  // guarded by mutex_
 };
 
 }  // namespace vox::analysis_detail

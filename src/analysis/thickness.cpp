@@ -10,6 +10,7 @@
 // centre lies within its radius of z.
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -106,8 +107,23 @@ std::vector<Offset> ridgeOffsets() {
 
 struct Centre {
   uint32_t s;
-  int32_t x, y;  // box coordinates
+  uint16_t x, y, z;  // box coordinates (dimensions are at most VoxelGrid::kMaxDim)
 };
+
+// Calls f(i) for every set bit i in [b, e) of a bit array.
+template <class F>
+inline void forSetBits(const uint64_t* bits, int64_t b, int64_t e, F&& f) {
+  if (b >= e) return;
+  for (int64_t w = b >> 6; w <= (e - 1) >> 6; ++w) {
+    uint64_t v = bits[w];
+    if (w == b >> 6) v &= ~uint64_t(0) << (b & 63);
+    if (w == (e - 1) >> 6 && ((e - 1) & 63) != 63) v &= (uint64_t(2) << ((e - 1) & 63)) - 1;
+    while (v) {
+      f(w * 64 + std::countr_zero(v));
+      v &= v - 1;
+    }
+  }
+}
 
 DistanceField copyField(const DistanceField& f) {
   DistanceField c(f.gridDims(), f.frame(), f.boxMin(), f.boxDims(), f.outside());
@@ -192,7 +208,7 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
     std::vector<std::vector<Centre>> buckets(static_cast<size_t>(nz));
     const int threads = threadsFor(d.count() / 4);
     std::atomic<int64_t> done{0};
-    // 1. The centres that are not inside a neighbour's ball, by slice, largest first.
+    // 1. The centres whose ball is not inside a neighbour's larger ball, by slice.
     parallelChunks(0, nz, 1, threads, [&](int, int64_t zb, int64_t ze) {
       for (int64_t z = zb; z < ze; ++z) {
         if (gate.cancelled()) return;
@@ -209,39 +225,101 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
                 break;
               }
             }
-            if (!inside) bucket.push_back(Centre{uint32_t(s), int32_t(x), int32_t(y)});
+            if (!inside) bucket.push_back(Centre{uint32_t(s), uint16_t(x), uint16_t(y), uint16_t(z)});
           }
         }
-        std::sort(bucket.begin(), bucket.end(), [](const Centre& a, const Centre& b) { return a.s > b.s; });
-        gate.report(0.25 * double(done.fetch_add(1) + 1) / double(nz));
+        gate.report(0.3 * double(done.fetch_add(1) + 1) / double(nz));
       }
     });
     if (gate.cancelled()) return cancelled();
-    for (const auto& b : buckets) out.ball_centres += int64_t(b.size());
+    // All centres, largest ball first (a counting sort by s; slices in order within a value: deterministic).
+    std::vector<Centre> centres;
+    {
+      std::vector<int64_t> start(size_t(f.maxSquared()) + 2, 0);
+      for (const auto& b : buckets)
+        for (const Centre& c : b) ++start[size_t(f.maxSquared() - c.s) + 1];
+      for (size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+      centres.resize(size_t(start.back()));
+      for (auto& b : buckets) {
+        for (const Centre& c : b) centres[size_t(start[size_t(f.maxSquared() - c.s)]++)] = c;
+        std::vector<Centre>().swap(b);
+      }
+    }
+    out.ball_centres = int64_t(centres.size());
 
-    // 2. Paint: slice z takes the disc of every ball that reaches it (distinct slices, no two threads share a row).
-    const int64_t rmax = isqrt(int64_t(f.maxSquared()));
-    done = 0;
+    // 2. Paint, largest ball first; a voxel takes the first ball that reaches it and is never visited again.
+    // `open` has a bit per voxel still unpainted (filled and not reached yet), rows hold the count of their open
+    // voxels and have a bit in `open_rows` while it is not zero, slices likewise. Each thread owns blocks of
+    // slices (round robin) and walks the whole list of balls, so no two threads write the same word.
+    const int64_t wpr = (nx + 63) / 64, wps = (ny + 63) / 64;  // words per row of `open`, per slice of open_rows
+    std::vector<uint64_t> open(size_t(wpr * ny * nz), 0), open_rows(size_t(wps * nz), 0);
+    std::vector<int32_t> row_open(size_t(ny * nz), 0);
+    std::vector<int64_t> slice_open(size_t(nz), 0);
     parallelChunks(0, nz, 1, threads, [&](int, int64_t zb, int64_t ze) {
       for (int64_t z = zb; z < ze; ++z) {
-        if (gate.cancelled()) return;
-        uint32_t* slice = data + plane * z;
-        for (int64_t zc = std::max<int64_t>(0, z - rmax); zc <= std::min(nz - 1, z + rmax); ++zc) {
-          const int64_t dz2 = (z - zc) * (z - zc);
-          for (const Centre& c : buckets[size_t(zc)]) {
-            const int64_t s = c.s;
-            if (s <= dz2) break;            // sorted: no later ball reaches this slice
-            const int64_t rem_z = s - dz2;  // dx^2 + dy^2 < rem_z
-            const int64_t dymax = isqrt(rem_z - 1);
-            for (int64_t dy = -dymax; dy <= dymax; ++dy) {
-              const int64_t w = isqrt(rem_z - dy * dy - 1);
-              uint32_t* row = slice + nx * (c.y + dy);
-              const uint32_t v = c.s;
-              for (int64_t x = c.x - w; x <= c.x + w; ++x) row[x] = std::max(row[x], v);
+        for (int64_t y = 0; y < ny; ++y) {
+          const uint32_t* row = data + plane * z + nx * y;
+          uint64_t* bits = open.data() + (y + ny * z) * wpr;
+          int32_t n = 0;
+          for (int64_t x = 0; x < nx; ++x) {
+            if (row[x]) {
+              bits[x >> 6] |= uint64_t(1) << (x & 63);
+              ++n;
             }
           }
+          row_open[size_t(y + ny * z)] = n;
+          slice_open[size_t(z)] += n;
+          if (n) open_rows[size_t(z * wps + (y >> 6))] |= uint64_t(1) << (y & 63);
         }
-        gate.report(0.25 + 0.7 * double(done.fetch_add(1) + 1) / double(nz));
+      }
+    });
+    constexpr int64_t kBlock = 4;  // slices per block handed round robin to the threads
+    const int64_t total_centres = int64_t(centres.size());
+    forChunks(threads, threads, [&](int t, int64_t, int64_t) {
+      // this thread's slices that still have open voxels
+      std::vector<uint64_t> mine(size_t((nz + 63) / 64), 0);
+      int64_t mine_open = 0;
+      for (int64_t z = 0; z < nz; ++z) {
+        if ((z / kBlock) % threads == t && slice_open[size_t(z)] > 0) {
+          mine[size_t(z >> 6)] |= uint64_t(1) << (z & 63);
+          ++mine_open;
+        }
+      }
+      for (int64_t k = 0; k < total_centres && mine_open > 0; ++k) {
+        if ((k & 4095) == 0) {
+          if (gate.cancelled()) return;
+          if (t == 0) gate.report(0.3 + 0.65 * double(k) / double(total_centres));
+        }
+        const Centre c = centres[size_t(k)];
+        const int64_t s = c.s;
+        const int64_t rz = isqrt(s - 1);  // dz^2 < s
+        forSetBits(mine.data(), std::max<int64_t>(0, c.z - rz), std::min(nz, c.z + rz + 1), [&](int64_t z) {
+          const int64_t rem_z = s - (z - c.z) * (z - c.z);  // dx^2 + dy^2 < rem_z
+          const int64_t ry = isqrt(rem_z - 1);
+          uint32_t* slice = data + plane * z;
+          uint64_t* rows = open_rows.data() + z * wps;
+          forSetBits(rows, std::max<int64_t>(0, c.y - ry), std::min(ny, c.y + ry + 1), [&](int64_t y) {
+            const int64_t w = isqrt(rem_z - (y - c.y) * (y - c.y) - 1);
+            const int64_t x0 = c.x - w, x1 = c.x + w + 1;  // inside the box: the ball holds only filled voxels
+            uint64_t* bits = open.data() + (y + ny * z) * wpr;
+            int32_t painted = 0;
+            forSetBits(bits, x0, x1, [&](int64_t x) {
+              slice[nx * y + x] = uint32_t(s);
+              bits[x >> 6] &= ~(uint64_t(1) << (x & 63));
+              ++painted;
+            });
+            if (!painted) return;
+            int32_t& ro = row_open[size_t(y + ny * z)];
+            ro -= painted;
+            if (ro == 0) rows[y >> 6] &= ~(uint64_t(1) << (y & 63));
+            int64_t& so = slice_open[size_t(z)];
+            so -= painted;
+            if (so == 0) {
+              mine[size_t(z >> 6)] &= ~(uint64_t(1) << (z & 63));
+              --mine_open;
+            }
+          });
+        });
       }
     });
     if (gate.cancelled()) return cancelled();

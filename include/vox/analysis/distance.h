@@ -10,7 +10,9 @@
 // pass 1 along X straight from the grid's bit words (runs found with word operations, no byte copy of the grid),
 // then Y and Z in place, parallel over lines with per-thread scratch. Every zero of a line (a voxel that is its own
 // nearest site) splits the line into independent pieces, so each pass works only on the runs between zeros.
-// Memory: one uint32 per voxel of the box, nothing else the size of the grid.
+// Memory: one uint32 per voxel of the box, from calloc, written only where a value is not zero, so pages that stay
+// zero (the empty space around a part inside its bounding box) are never faulted in; nothing else the size of the
+// grid. igea at R = 1000 (box 694 M voxels, 2.6 GiB of address space): 1.9 GiB resident.
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>

@@ -43,10 +43,11 @@ struct Thickness {
   double voxels(int64_t x, int64_t y, int64_t z) const { return 2.0 * radius.voxels(x, y, z); }
 };
 
-// Local thickness of every filled voxel from its distance field. Balls whose centre's ball lies inside a
-// neighbour's (r(c) + |c - n| <= r(n), n within two voxels) are skipped; the rest are painted slice by slice in
-// parallel. Cost: the volume of the painted balls; memory: a copy of the field (the overload taking the field by
-// value reuses it: pass std::move(field) when it is not needed afterwards).
+// Local thickness of every filled voxel from its distance field. A ball that lies inside the larger ball of a voxel
+// within two voxels (tested exactly on the voxel centres) is skipped; the rest are painted largest first, each voxel
+// once, threads owning slices. Cost: about the sum of the painted balls' cross-sections (rows), which on bulky parts
+// is large (docs/accuracy.md); memory: a copy of the field, 1 bit per box voxel and 12 bytes per ball painted (the
+// rvalue overload reuses the field: pass std::move(field) when it is not needed afterwards; it is lost on error).
 Result<Thickness> computeThickness(const DistanceField& distance, const ThicknessParams& params = {},
                                    const ProgressFn& progress = {});
 Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessParams& params = {},

@@ -87,6 +87,44 @@ TEST(Thickness, matchesBruteForceOfTheDefinition) {
   }
 }
 
+// A grid large enough for several threads (noise, so most balls are small, and three large balls), against the
+// definition painted naively: every filled voxel's ball, max over the balls.
+TEST(Thickness, largeGridMatchesNaivePainting) {
+  VoxelGrid g = test::randomGrid(Dims{110, 90, 80}, 0.6, 7);
+  for (const glm::dvec3 c : {glm::dvec3(30.2, 40.7, 30.1), glm::dvec3(70.5, 45.5, 50.5), glm::dvec3(60, 30, 20)}) {
+    const VoxelGrid b = test::ballGrid(g.dims(), c, 14.3);
+    for (int z = 0; z < g.nz(); ++z)
+      for (int y = 0; y < g.ny(); ++y)
+        for (int x = 0; x < g.nx(); ++x)
+          if (b.get(x, y, z)) g.set(x, y, z);
+  }
+  auto dist = computeDistance(g);
+  ASSERT_TRUE(dist.ok());
+  std::vector<uint32_t> expect(size_t(g.dims().count()), 0);
+  for (int z = 0; z < g.nz(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x) {
+        const int s = int(dist->squared(x, y, z));
+        if (!s) continue;
+        const int r = int(std::sqrt(double(s))) + 1;
+        for (int dz = -r; dz <= r; ++dz)
+          for (int dy = -r; dy <= r; ++dy)
+            for (int dx = -r; dx <= r; ++dx) {
+              if (dx * dx + dy * dy + dz * dz >= s) continue;
+              uint32_t& e = expect[size_t(g.index(x + dx, y + dy, z + dz))];
+              e = std::max(e, uint32_t(s));
+            }
+      }
+  auto t = computeThickness(*dist);
+  ASSERT_TRUE(t.ok());
+  int64_t mismatches = 0;
+  for (int z = 0; z < g.nz(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x)
+        if (t->radius.squared(x, y, z) != expect[size_t(g.index(x, y, z))]) ++mismatches;
+  EXPECT_EQ(mismatches, 0);
+}
+
 // An axis-aligned plate n voxels thick reads n when n is even, n + 1 when n is odd (docs/accuracy.md).
 TEST(Thickness, axisAlignedPlateReadsItsVoxelCountRoundedUpToEven) {
   GridFrame frame;

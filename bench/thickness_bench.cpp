@@ -1,0 +1,138 @@
+// Distance and thickness benchmarks: the shared mesh igea_refined_508k voxelized at R = 512 by vox::voxelizeSolid
+// (override with VOXMOD_BENCH_MESH=<name> and VOXMOD_BENCH_R=<R>, e.g. 1000).
+//   distance        exact Euclidean distance transform (SPEC section 6) of the filled voxels
+//   thickness       local thickness from that field (the field is copied first, outside the timing)
+//   hot_spots       regional maxima of the distance field with their dynamics
+//   thin_walls      thin-wall regions below 10% of the largest thickness
+// Peak memory of one step alone: run with --benchmark_filter=<name> under /usr/bin/time -v.
+//
+//   build/bench/thickness_bench --benchmark_filter=distance
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <string>
+
+#include <benchmark/benchmark.h>
+
+#include "bench_support.h"
+#include "vox/analysis/distance.h"
+#include "vox/analysis/thickness.h"
+#include "vox/io/stl.h"
+#include "vox/voxelize/voxelize.h"
+
+namespace {
+
+std::string envOr(const char* name, const char* fallback) {
+  const char* v = std::getenv(name);
+  return v && *v ? v : fallback;
+}
+
+const vox::VoxelGrid& benchGrid() {
+  static std::unique_ptr<vox::VoxelGrid> grid;
+  if (grid) return *grid;
+  const std::string name = envOr("VOXMOD_BENCH_MESH", "igea_refined_508k");
+  const int64_t r = std::atoll(envOr("VOXMOD_BENCH_R", "512").c_str());
+  auto stl = vox::io::loadStl(vox::bench::sharedMesh(name + ".stl"));
+  if (!stl) {
+    std::fprintf(stderr, "%s\n", stl.error().message.c_str());
+    std::exit(1);
+  }
+  vox::VoxelizeParams p;
+  p.resolution = r;
+  auto v = vox::voxelizeSolid(stl->mesh, p, {}, &stl->topology);
+  if (!v) {
+    std::fprintf(stderr, "%s\n", v.error().message.c_str());
+    std::exit(1);
+  }
+  grid = std::make_unique<vox::VoxelGrid>(std::move(v->grid));
+  std::fprintf(stderr, "grid: %s at R = %lld: %d x %d x %d, %lld filled voxels, %.1f MiB\n", name.c_str(),
+               static_cast<long long>(r), grid->nx(), grid->ny(), grid->nz(),
+               static_cast<long long>(grid->filledCount()), double(grid->memoryBytes()) / (1 << 20));
+  return *grid;
+}
+
+const vox::DistanceField& benchDistance() {
+  static std::unique_ptr<vox::DistanceField> field;
+  if (field) return *field;
+  auto d = vox::computeDistance(benchGrid());
+  if (!d) {
+    std::fprintf(stderr, "%s\n", d.error().message.c_str());
+    std::exit(1);
+  }
+  field = std::make_unique<vox::DistanceField>(std::move(d.value()));
+  return *field;
+}
+
+void distance(benchmark::State& state) {
+  const vox::VoxelGrid& g = benchGrid();
+  for (auto _ : state) {
+    auto d = vox::computeDistance(g);
+    if (!d) state.SkipWithError(d.error().message.c_str());
+    const vox::Dims b = d->boxDims();
+    state.counters["box_voxels"] = double(b.count());
+    state.counters["max_voxels"] = d->maxVoxels();
+    state.counters["MiB"] = double(d->memoryBytes()) / (1 << 20);
+  }
+}
+
+void thickness(benchmark::State& state) {
+  const vox::DistanceField& d = benchDistance();
+  for (auto _ : state) {
+    state.PauseTiming();
+    vox::DistanceField copy(d.gridDims(), d.frame(), d.boxMin(), d.boxDims(), d.outside());
+    std::copy(d.data(), d.data() + d.boxDims().count(), copy.data());
+    copy.setMaxSquared(d.maxSquared());
+    state.ResumeTiming();
+    auto t = vox::computeThickness(std::move(copy));
+    if (!t) state.SkipWithError(t.error().message.c_str());
+    state.counters["ball_centres"] = double(t->ball_centres);
+    state.counters["mean_voxels"] = t->stats.mean / d.voxelSize();
+    state.counters["max_voxels"] = t->stats.max / d.voxelSize();
+  }
+}
+
+void hotSpots(benchmark::State& state) {
+  const vox::DistanceField& d = benchDistance();
+  for (auto _ : state) {
+    auto s = vox::findHotSpots(d);
+    if (!s) state.SkipWithError(s.error().message.c_str());
+    state.counters["spots"] = double(s->size());
+    int isolated = 0;
+    for (const auto& h : *s) isolated += h.isolated;
+    state.counters["isolated"] = isolated;
+  }
+}
+
+void thinWalls(benchmark::State& state) {
+  const vox::DistanceField& d = benchDistance();
+  auto t = vox::computeThickness(d);
+  if (!t) {
+    state.SkipWithError(t.error().message.c_str());
+    return;
+  }
+  for (auto _ : state) {
+    auto w = vox::findThinWalls(*t, 0.1 * t->stats.max);
+    if (!w) state.SkipWithError(w.error().message.c_str());
+    state.counters["thin_voxels"] = double(w->voxels);
+    state.counters["regions"] = double(w->regions.size());
+  }
+}
+
+}  // namespace
+
+BENCHMARK(distance)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime()->Iterations(3);
+BENCHMARK(thickness)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime()->Iterations(1);
+BENCHMARK(hotSpots)
+    ->Name("hot_spots")
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime()
+    ->Iterations(1);
+BENCHMARK(thinWalls)
+    ->Name("thin_walls")
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime()
+    ->Iterations(1);
+
+BENCHMARK_MAIN();
