@@ -32,6 +32,25 @@ void actionButton(AppState& state, ActionId id, const char* label, const char* r
   }
 }
 
+// The round peel: every voxel within a distance of the empty space (a layer peel removes by face steps).
+void roundPeelRow(AppState& state, const ModelSnapshot& snap, float w) {
+  if (state.skin.peel_distance <= 0.0f) state.skin.peel_distance = float(snap.grid.voxelSize());
+  ImGui::SetNextItemWidth(w);
+  const std::string fmt = "%.4g " + unitsLabel(snap.grid.frame().units);
+  ImGui::InputFloat("##peel_distance", &state.skin.peel_distance, 0.0f, 0.0f, fmt.c_str());
+  state.skin.peel_distance = std::max(state.skin.peel_distance, 0.0f);
+  ImGui::SameLine();
+  if (ImGui::Button("Peel by distance", ImVec2(2.0f * w + ImGui::GetStyle().ItemSpacing.x, 0.0f))) {
+    dispatchValues(state, ActionId::kPeelDistance, {std::to_string(state.skin.peel_distance)});
+  }
+  markWidget("peel_distance");
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Removes every voxel whose centre lies within this distance of the empty space: a round skin of even\n"
+        "thickness, where a layer removes face steps (thinner on slopes). Undo (Ctrl+Z) brings it back.");
+  }
+}
+
 }  // namespace
 
 void drawSkinPanel(AppState& state) {
@@ -60,22 +79,7 @@ void drawSkinPanel(AppState& state) {
   ImGui::SameLine();
   actionButton(state, ActionId::kPeelCore, "Peel to core", "peel_core", w);
 
-  // The round peel: every voxel within a distance of the empty space (a layer peel removes by face steps).
-  if (state.skin.peel_distance <= 0.0f) state.skin.peel_distance = float(snap.grid.voxelSize());
-  ImGui::SetNextItemWidth(w);
-  const std::string fmt = "%.4g " + unitsLabel(snap.grid.frame().units);
-  ImGui::InputFloat("##peel_distance", &state.skin.peel_distance, 0.0f, 0.0f, fmt.c_str());
-  state.skin.peel_distance = std::max(state.skin.peel_distance, 0.0f);
-  ImGui::SameLine();
-  if (ImGui::Button("Peel by distance", ImVec2(2.0f * w + ImGui::GetStyle().ItemSpacing.x, 0.0f))) {
-    dispatchValues(state, ActionId::kPeelDistance, {std::to_string(state.skin.peel_distance)});
-  }
-  markWidget("peel_distance");
-  if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip(
-        "Removes every voxel whose centre lies within this distance of the empty space: a round skin of even\n"
-        "thickness, where a layer removes face steps (thinner on slopes). Undo (Ctrl+Z) brings it back.");
-  }
+  roundPeelRow(state, snap, w);
 
   // What peeling will hold, before it starts (the bound the depth map stays under).
   wrappedColoured(ImGui::GetStyle().Colors[ImGuiCol_TextDisabled],
