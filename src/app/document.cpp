@@ -75,6 +75,9 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
   state.mass.clear();
   state.xray_result.clear();
   state.skin.pending_peel.reset();
+  state.thickness.clear();
+  state.thickness_ui.min_wall = -1.0;  // another part: a quarter of its own thickest wall until the user chooses
+  state.thickness_ui.cancelled_version = 0;
   state.model = VoxelGrid{};
   state.model_version = 0;
   state.section.index = -1;

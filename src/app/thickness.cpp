@@ -81,6 +81,14 @@ Status peelDistance(AppState& state, double distance) {
   const ModelSnapshot& cur = *state.doc.model;
   auto peeled = peelByDistance(cur.grid, distance);
   if (!peeled) return peeled.error();
+  if (peeled->filledCount() == 0 && cur.grid.filledCount() > 0) {
+    // Nothing would be left to look at: say how deep the part goes instead of emptying it.
+    auto depth = computeDistance(cur.grid);
+    const std::string deepest = depth ? formatLength(depth->maxModel(), cur.grid.frame().units) : std::string("?");
+    return makeError(ErrorCode::kInvalidArgument, "peeling " + formatLength(distance, cur.grid.frame().units) +
+                                                      " round would remove the whole model: its deepest voxel is " +
+                                                      deepest + " from the outside");
+  }
   // A new base: the layer peel (the depth map) then works on what the round peel left.
   const std::string d = formatLength(distance, cur.grid.frame().units);
   const std::string before = cur.peeled > 0 ? std::to_string(cur.peeled) + " layers + " : std::string();

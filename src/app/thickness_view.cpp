@@ -169,7 +169,9 @@ void drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, in
   const ThicknessResult* r = shownThickness(state);
   const float lh = ImGui::GetTextLineHeightWithSpacing();
   if (!r) {
-    shadowText(dl, ImVec2(pos.x + 8.0f, pos.y + 8.0f), IM_COL32(230, 230, 230, 255), "Computing thickness...");
+    const bool cancelled = state.thickness_ui.cancelled_version == state.model_version;
+    shadowText(dl, ImVec2(pos.x + 8.0f, pos.y + 8.0f), IM_COL32(230, 230, 230, 255),
+               cancelled ? "Thickness cancelled (Compute thickness in the panel)" : "Computing thickness...");
     return;
   }
   const std::string units = state.model.frame().units;

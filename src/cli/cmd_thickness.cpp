@@ -46,8 +46,8 @@ void reportThinWalls(const ThinWalls& thin, const std::string& units, Output& ou
                        {"bbox_max_ijk", jsonVec3(r.bbox_max_ijk)}});
   }
   d["thin_regions"] = regions;
-  out.say("thinner than " + significant(thin.min_wall) + " " + units + ": " + std::to_string(thin.voxels) +
-          " voxels in " + std::to_string(thin.regions.size()) + " regions");
+  out.say("thinner than " + significant(thin.min_wall) + " " + units + ": " + countOf(thin.voxels, "voxel") + " in " +
+          countOf(int64_t(thin.regions.size()), "region"));
   for (size_t i = 0; i < std::min<size_t>(thin.regions.size(), 5); ++i) {
     const ThinWallRegion& r = thin.regions[i];
     out.say("  " + std::to_string(r.voxels) + " voxels, thinnest " + significant(r.min, 4) + ", from (" +

@@ -623,6 +623,27 @@ TEST(AppScriptRun, thicknessPanelThinWallsAndPeelByDistance) {
   EXPECT_NE(testing::internal::GetCapturedStderr().find("min-wall takes a length"), std::string::npos);
 }
 
+// A round peel deeper than the part is refused with how deep it goes; another file opened starts from its own
+// minimum wall (a quarter of its thickest), not the length chosen for the previous part.
+TEST(AppScriptRun, aRoundPeelOfEverythingIsRefusedAndTheMinimumWallIsPerFile) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
+  AppState state;
+  Harness h;
+  testing::internal::CaptureStdout();
+  EXPECT_TRUE(runScript(state, h,
+                        "open " + (dir / "block.vxm").string() +
+                            "\npanel-thickness\nmin-wall 3\nexpect-error would remove the whole model\n"
+                            "peel-distance 100\n"))
+      << h.last_error;
+  EXPECT_NE(testing::internal::GetCapturedStdout().find("its deepest voxel is 4"), std::string::npos);
+  EXPECT_EQ(state.model.filledCount(), block().filledCount());  // nothing was peeled
+  EXPECT_DOUBLE_EQ(minWall(state), 3.0);
+  Harness h2;
+  ASSERT_TRUE(runScript(state, h2, "open " + (dir / "block.vxm").string() + "\n")) << h2.last_error;
+  EXPECT_LT(state.thickness_ui.min_wall, 0.0);  // not chosen for this file yet
+}
+
 // Cancelling the thickness (Esc, or the panel's Cancel) stops it for this model version; it is not asked for again
 // until the user does.
 TEST(AppThickness, cancelStopsUntilRetried) {

@@ -24,6 +24,11 @@ double nowSeconds();
 
 // The whole of `text` as a number (std::from_chars: no locale, no leading '+' or spaces); `out` is left as it was
 // when the text is not exactly one number.
+// "1 region", "3 regions": a count with its noun, plural unless the count is one.
+inline std::string countOf(int64_t n, const std::string& noun) {
+  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
 template <class T>
 bool parseNumber(std::string_view text, T& out) {
   T v{};

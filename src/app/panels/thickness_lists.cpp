@@ -41,9 +41,9 @@ void drawThinWallList(AppState& state, const ThinWalls& thin, const std::string&
     ImGui::TextWrapped("No voxel is thinner than %s.", formatLength(thin.min_wall, units).c_str());
     return;
   }
-  ImGui::TextWrapped("%s voxels thinner than %s, in %s regions (red in the views; lengths in %s). Click one to see it.",
+  ImGui::TextWrapped("%s voxels thinner than %s, in %s (red in the views; lengths in %s). Click one to see it.",
                      groupDigits(thin.voxels).c_str(), formatLength(thin.min_wall, units).c_str(),
-                     groupDigits(int64_t(thin.regions.size())).c_str(), unitsLabel(units).c_str());
+                     countOf(int64_t(thin.regions.size()), "region").c_str(), unitsLabel(units).c_str());
   const int rows = std::min(int(thin.regions.size()), kMostRows);
   if (!beginList("thin_walls", 3, rows)) return;
   ImGui::TableSetupColumn("Voxels", ImGuiTableColumnFlags_WidthFixed, 70.0f);
