@@ -1,5 +1,6 @@
 #include "app/document.h"
 
+#include <cmath>
 #include <utility>
 
 #include "app/browser_purposes.h"
@@ -32,6 +33,21 @@ void keepTheView(AppState& state, const GridFrame& before, bool had_model) {
   }
 }
 
+// The section stays at the same place in the part: on another lattice, the index whose plane lies nearest the old
+// plane; when that is outside the new grid (or there was no model), the middle.
+void keepTheSection(AppState& state, const GridFrame& before, bool had_model) {
+  const GridFrame& now = state.model.frame();
+  const int a = int(state.section.axis);
+  const int32_t n = axisLength(state, state.section.axis);
+  int32_t& index = state.section.index;
+  if (had_model && index >= 0 && before.voxel_size > 0 && now.voxel_size > 0 &&
+      (now.voxel_size != before.voxel_size || now.origin != before.origin)) {
+    const double plane = before.origin[a] + (double(index) + 0.5) * before.voxel_size;
+    index = int32_t(std::lround((plane - now.origin[a]) / now.voxel_size - 0.5));
+  }
+  if (index < 0 || index >= n) index = n / 2;
+}
+
 }  // namespace
 
 void setModel(AppState& state, ModelSnapshot snapshot, bool undoable) {
@@ -46,9 +62,7 @@ void setModel(AppState& state, ModelSnapshot snapshot, bool undoable) {
   state.model_version = state.doc.model->version;
   state.viewport.dirty = true;
   keepTheView(state, before, had_model);
-  // Keep the section where it was when it still fits; start in the middle otherwise.
-  const int32_t n = axisLength(state, state.section.axis);
-  if (state.section.index < 0 || state.section.index >= n) state.section.index = n / 2;
+  keepTheSection(state, before, had_model);
 }
 
 uint64_t takeId(AppState& state) { return state.next_id++; }

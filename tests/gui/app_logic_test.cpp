@@ -397,11 +397,16 @@ TEST(AppDocument, reVoxelizingKeepsTheViewOnTheSamePartOfTheModel) {
   state.view.camera.target = glm::dvec3(3.0, 2.0, 1.0);  // zoomed in on one corner region
   state.view.camera.distance = 6.0;
   const glm::dvec3 model_point = a.origin + state.view.camera.target * a.voxel_size;
+  state.section.axis = Axis::kX;
+  state.section.index = 3;  // the plane x = a.origin.x + 3.5 h
+  const double plane = a.origin.x + 3.5 * a.voxel_size;
 
   const uint64_t before = state.model_version;
   startVoxelize(state, VoxelizeParams{.resolution = 100});
   ASSERT_TRUE(pump(state, [&] { return state.model_version != before; }));
   const GridFrame b = state.model.frame();
+  // The section stays at the same place in the part: the new plane nearest the old one.
+  EXPECT_LE(std::abs(b.origin.x + (state.section.index + 0.5) * b.voxel_size - plane), 0.5 * b.voxel_size + 1e-12);
   ASSERT_NE(a.voxel_size, b.voxel_size);
   EXPECT_FALSE(state.view.fit_pending);  // the user's zoom is kept, not thrown away
   const glm::dvec3 target = b.origin + state.view.camera.target * b.voxel_size;
