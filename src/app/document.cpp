@@ -223,10 +223,15 @@ void requestQuit(AppState& state) {
   guardUnsaved(state, [](AppState& s) { s.quit_requested = true; });
 }
 
+std::string documentName(const AppState& state) {
+  const std::filesystem::path& p = state.doc.save_path.empty() ? state.doc.path : state.doc.save_path;
+  return p.filename().string();
+}
+
 std::string windowTitle(const AppState& state) {
   std::string t = "voxmod";
   if (!state.doc.path.empty()) {
-    t += " - " + state.doc.path.filename().string();
+    t += " - " + documentName(state);
     if (hasUnsavedChanges(state)) t += " *";
   }
   return t;

@@ -30,6 +30,8 @@ void guardUnsaved(AppState& state, std::function<void(AppState&)> then);
 // another file) runs only after a successful save. A browser opened later for anything else never runs it.
 void saveThen(AppState& state, std::function<void(AppState&)> then);
 void requestQuit(AppState& state);
+// The document's name: the file it was last saved to, else the file it was opened from ("part.vxm").
+std::string documentName(const AppState& state);
 // "part.stl *" style window title.
 std::string windowTitle(const AppState& state);
 

@@ -525,6 +525,7 @@ TEST(AppDocument, aFailedSaveKeepsTheModelAndAnotherPlaceWorks) {
 
   EXPECT_TRUE(saveModel(state, dir / "elsewhere.vxm"));
   EXPECT_FALSE(hasUnsavedChanges(state));
+  EXPECT_EQ(windowTitle(state), "voxmod - elsewhere.vxm");  // the document is the file it was saved as
   auto reread = io::loadVxm(dir / "elsewhere.vxm");
   ASSERT_TRUE(reread.ok()) << reread.error().message;
   EXPECT_LT(reread->filledCount(), block().filledCount());  // the peeled model was saved

@@ -80,7 +80,7 @@ void drawUnsavedPrompt(AppState& state) {
   centreNextWindow();
   if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
   if (state.close_dialogs) state.after_unsaved_prompt = nullptr;  // as Cancel
-  ImGui::Text("The model of %s has changes that are not saved.", state.doc.path.filename().string().c_str());
+  ImGui::Text("The model of %s has changes that are not saved.", documentName(state).c_str());
   if (state.doc.model) ImGui::TextDisabled("Last change: %s", state.doc.model->label.c_str());
   ImGui::Spacing();
   auto then = [&state] {
