@@ -22,34 +22,7 @@
 
 namespace {
 
-std::string envOr(const char* name, const char* fallback) {
-  const char* v = std::getenv(name);
-  return v && *v ? v : fallback;
-}
-
-const vox::VoxelGrid& benchGrid() {
-  static std::unique_ptr<vox::VoxelGrid> grid;
-  if (grid) return *grid;
-  const std::string name = envOr("VOXMOD_BENCH_MESH", "igea_refined_508k");
-  const int64_t r = std::atoll(envOr("VOXMOD_BENCH_R", "512").c_str());
-  auto stl = vox::io::loadStl(vox::bench::sharedMesh(name + ".stl"));
-  if (!stl) {
-    std::fprintf(stderr, "%s\n", stl.error().message.c_str());
-    std::exit(1);
-  }
-  vox::VoxelizeParams p;
-  p.resolution = r;
-  auto v = vox::voxelizeSolid(stl->mesh, p, {}, &stl->topology);
-  if (!v) {
-    std::fprintf(stderr, "%s\n", v.error().message.c_str());
-    std::exit(1);
-  }
-  grid = std::make_unique<vox::VoxelGrid>(std::move(v->grid));
-  std::fprintf(stderr, "grid: %s at R = %lld: %d x %d x %d, %lld filled voxels, %.1f MiB\n", name.c_str(),
-               static_cast<long long>(r), grid->nx(), grid->ny(), grid->nz(),
-               static_cast<long long>(grid->filledCount()), double(grid->memoryBytes()) / (1 << 20));
-  return *grid;
-}
+const vox::VoxelGrid& benchGrid() { return vox::bench::benchGridFromEnv("igea_refined_508k", "512"); }
 
 const vox::DistanceField& benchDistance() {
   static std::unique_ptr<vox::DistanceField> field;

@@ -15,6 +15,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "analysis/neighbours.h"
 #include "analysis/progress_gate.h"
 #include "vox/analysis/thickness.h"
 
@@ -89,19 +90,12 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
     const uint32_t s = data[i];
     const int64_t x = i % nx, y = (i / nx) % ny, z = i / plane;
     int nr = 0;
-    for (int64_t dz = -1; dz <= 1; ++dz) {
-      if (z + dz < 0 || z + dz >= nz) continue;
-      for (int64_t dy = -1; dy <= 1; ++dy) {
-        if (y + dy < 0 || y + dy >= ny) continue;
-        for (int64_t dx = -1; dx <= 1; ++dx) {
-          if (x + dx < 0 || x + dx >= nx) continue;
-          const uint32_t l = label[size_t(i + dx + nx * dy + plane * dz)];
-          if (!l) continue;
-          const uint32_t r = root(l - 1);
-          if (std::find(roots, roots + nr, r) == roots + nr) roots[nr++] = r;
-        }
-      }
-    }
+    analysis_detail::forEach26(x, y, z, nx, ny, nz, [&](int64_t j) {
+      const uint32_t l = label[size_t(j)];
+      if (!l) return;
+      const uint32_t r = root(l - 1);
+      if (std::find(roots, roots + nr, r) == roots + nr) roots[nr++] = r;
+    });
     uint32_t own;
     if (nr == 0) {
       own = uint32_t(comps.size());

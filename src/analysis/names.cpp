@@ -54,4 +54,7 @@ std::optional<XrayMode> parseXrayMode(const std::string& s) {
   return std::nullopt;
 }
 
+Axis imageRightAxis(Axis normal) { return normal == Axis::kX ? Axis::kY : Axis::kX; }
+Axis imageUpAxis(Axis normal) { return normal == Axis::kZ ? Axis::kY : Axis::kZ; }
+
 }  // namespace vox

@@ -7,10 +7,6 @@
 namespace vox {
 namespace {
 
-// Which grid axes a section image shows (computeSection: X -> (y, z), Y -> (x, z), Z -> (x, y)).
-constexpr Axis kRight[] = {Axis::kY, Axis::kX, Axis::kX};
-constexpr Axis kUp[] = {Axis::kZ, Axis::kZ, Axis::kY};
-
 int32_t along(const Dims& d, Axis a) { return a == Axis::kX ? d.nx : (a == Axis::kY ? d.ny : d.nz); }
 
 }  // namespace
@@ -24,15 +20,16 @@ Result<Image2D<int32_t>> thicknessSection(const Thickness& thickness, const Sect
                                                       " is outside 0.." + std::to_string(n - 1) + " along " +
                                                       axisName(params.axis));
   }
-  const int32_t w = along(dims, kRight[a]), h = along(dims, kUp[a]);
+  const int right = int(imageRightAxis(params.axis)), up_axis = int(imageUpAxis(params.axis));
+  const int32_t w = along(dims, Axis(right)), h = along(dims, Axis(up_axis));
   Image2D<int32_t> img(w, h, 0);
   for (int32_t row = 0; row < h; ++row) {
     const int32_t up = h - 1 - row;
     for (int32_t col = 0; col < w; ++col) {
       int32_t v[3] = {0, 0, 0};
       v[a] = params.index;
-      v[int(kRight[a])] = col;
-      v[int(kUp[a])] = up;
+      v[right] = col;
+      v[up_axis] = up;
       const double t = thickness.voxels(v[0], v[1], v[2]);
       img.at(col, row) = t > 0.0 ? std::max<int32_t>(1, int32_t(std::lround(t * kThicknessTenths))) : 0;
     }
@@ -41,7 +38,6 @@ Result<Image2D<int32_t>> thicknessSection(const Thickness& thickness, const Sect
 }
 
 ScalarMapLegend thicknessLegend(const Thickness& thickness, const SectionParams& params, const std::string& units) {
-  const int a = int(params.axis);
   const double h = thickness.radius.voxelSize();
   ScalarMapLegend l;
   l.title = std::string("Local thickness, section ") + axisName(params.axis) + " = " + std::to_string(params.index);
@@ -49,8 +45,8 @@ ScalarMapLegend thicknessLegend(const Thickness& thickness, const SectionParams&
   l.units_per_value = h;
   l.value_divisor = kThicknessTenths;
   l.units = units.empty() || units == "model" ? "model units" : units;
-  l.right_axis = axisName(kRight[a]);
-  l.up_axis = axisName(kUp[a]);
+  l.right_axis = axisName(imageRightAxis(params.axis));
+  l.up_axis = axisName(imageUpAxis(params.axis));
   const ThicknessStats& s = thickness.stats;
   char buf[200];
   if (s.voxels == 0) {

@@ -8,6 +8,7 @@
 
 #include <glm/common.hpp>
 
+#include "analysis/neighbours.h"
 #include "analysis/progress_gate.h"
 #include "vox/analysis/thickness.h"
 #include "vox/core/parallel.h"
@@ -80,17 +81,9 @@ Result<ThinWalls> findThinWalls(const Thickness& thickness, double min_wall, con
         if (y == ny - 1 || !data[i + nx]) ++r.exposed_faces;
         if (z == 0 || !data[i - plane]) ++r.exposed_faces;
         if (z == nz - 1 || !data[i + plane]) ++r.exposed_faces;
-        for (int64_t dz = -1; dz <= 1; ++dz) {
-          if (z + dz < 0 || z + dz >= nz) continue;
-          for (int64_t dy = -1; dy <= 1; ++dy) {
-            if (y + dy < 0 || y + dy >= ny) continue;
-            for (int64_t dx = -1; dx <= 1; ++dx) {
-              if (x + dx < 0 || x + dx >= nx) continue;
-              const int64_t j = i + dx + nx * dy + plane * dz;
-              if (take(j)) queue.push_back(j);
-            }
-          }
-        }
+        analysis_detail::forEach26(x, y, z, nx, ny, nz, [&](int64_t j) {
+          if (take(j)) queue.push_back(j);
+        });
       }
       visited += r.voxels;
       r.area = double(r.exposed_faces) * h * h;

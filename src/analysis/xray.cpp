@@ -210,18 +210,14 @@ std::string xrayCsv(const XrayResult& xray) {
 }
 
 ScalarMapLegend xrayLegend(const XrayResult& xray) {
-  // Which grid axes the image shows (vox/analysis/analysis.h: X -> (y, z), Y -> (x, z), Z -> (x, y)).
-  static constexpr Axis kRight[] = {Axis::kY, Axis::kX, Axis::kX};
-  static constexpr Axis kUp[] = {Axis::kZ, Axis::kZ, Axis::kY};
-  const int a = int(xray.axis);
   const double h = xray.voxel_size;
   ScalarMapLegend l;
   l.title = std::string("X-ray along ") + axisName(xray.axis) + ": " + xrayModeName(xray.mode) + " thickness per ray";
   l.value_name = "voxels";
   l.units_per_value = h;
   l.units = xray.units.empty() || xray.units == "model" ? "model units" : xray.units;
-  l.right_axis = axisName(kRight[a]);
-  l.up_axis = axisName(kUp[a]);
+  l.right_axis = axisName(imageRightAxis(xray.axis));
+  l.up_axis = axisName(imageUpAxis(xray.axis));
   char buf[200];
   if (xray.rays_hit == 0) {
     l.notes.push_back("No ray hits material.");

@@ -22,6 +22,10 @@ namespace vox {
 enum class Axis { kX = 0, kY = 1, kZ = 2 };
 const char* axisName(Axis a);  // "x", "y", "z"
 std::optional<Axis> parseAxis(const std::string& s);
+// The grid axes a section or X-ray image normal to `normal` shows along its columns (right) and rows (up):
+// X -> (y, z), Y -> (x, z), Z -> (x, y); row 0 holds the largest index along the up axis.
+Axis imageRightAxis(Axis normal);
+Axis imageUpAxis(Axis normal);
 
 // ---- Surface and codes (thesis Table 5.1) ----
 struct SurfaceStats {
