@@ -2,16 +2,15 @@
 //
 // Felzenszwalb and Huttenlocher (2012): the squared distance along a line is the lower envelope of the parabolas
 // (q - p)^2 + f(p) of its sites p, found in one sweep. Three passes: X from the bit words (a 1D distance to the
-// nearest site is plain run-length arithmetic), then Y and Z over the result in place. A zero of the line (a voxel
-// that is its own nearest site) beats every parabola of a site on its other side, so the line splits at its zeros
-// into pieces transformed on their own, each with the zeros that bound it as sites: the passes cost the runs of
-// nonzero values, not the box. Positions past the ends of a distance line are empty voxels (zeros); a clearance
-// line ends at the grid, past which nothing is filled.
+// nearest site is plain run-length arithmetic), then Y (slice by slice, right after X) and Z over the result in place.
+// A zero of the line (a voxel that is its own nearest site) beats every parabola of a site on its other side, so the
+// line splits at its zeros into pieces transformed on their own, each with the zeros that bound it as sites: the passes
+// cost the runs of nonzero values, not the box. Positions past the ends of a distance line are empty voxels (zeros); a
+// clearance line ends at the grid, past which nothing is filled.
 #include <algorithm>
 #include <atomic>
 #include <bit>
 #include <cmath>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -85,63 +84,57 @@ Box filledBox(const VoxelGrid& g) {
   return box;
 }
 
-// Pass 1 along X: for each row of the box, the squared distance to the nearest site along the row.
+// Pass 1 along X, slice zi of the box: for each row, the squared distance to the nearest site along the row.
 // to_empty: sites are the empty voxels (the box is the filled bounding box, so the row's runs end inside it).
 // Otherwise (clearance, box = grid) sites are the filled voxels; a row without one stays kInf.
-void passX(const VoxelGrid& g, DistanceField& f, bool to_empty, ProgressGate& gate) {
+void rowsX(const VoxelGrid& g, DistanceField& f, bool to_empty, int64_t zi) {
   const glm::ivec3 lo = f.boxMin();
   const Dims d = f.boxDims();
   uint32_t* data = f.data();
-  const int threads = threadsFor(d.count() / 4);
-  std::atomic<int64_t> done{0};
-  parallelChunks(0, d.nz, 1, threads, [&](int, int64_t zb, int64_t ze) {
-    for (int64_t zi = zb; zi < ze; ++zi) {
-      if (gate.cancelled()) return;
-      const int32_t z = lo.z + int32_t(zi);
-      for (int32_t yi = 0; yi < d.ny; ++yi) {
-        const uint64_t* row = g.rowWords(lo.y + yi, z);
-        uint32_t* out = data + (int64_t(yi) + int64_t(d.ny) * zi) * d.nx;         // out[xp - begin]: voxel x = xp - 1
-        const int64_t begin = int64_t(lo.x) + 1, end = int64_t(lo.x) + d.nx + 1;  // padded x range of the box
-        if (to_empty) {
-          // runs of filled voxels [a, b) (padded x); the bits at a - 1 and b are empty
-          for (int64_t xp = begin; xp < end;) {
-            const int64_t a = nextBit(row, xp, end, true);
-            if (a >= end) break;
-            const int64_t b = nextBit(row, a, end + 1, false);  // the bit after the box is empty
-            for (int64_t q = a; q < b; ++q) {
-              const int64_t dist = std::min(q - (a - 1), b - q);
-              out[q - begin] = uint32_t(dist * dist);
-            }
-            xp = b;
-          }
-        } else {
-          // gaps of empty voxels [a, b) between filled runs; a - 1 is filled when a > begin, b when b < end
-          for (int64_t xp = begin; xp < end;) {
-            const int64_t a = nextBit(row, xp, end, false);
-            if (a >= end) break;
-            const int64_t b = nextBit(row, a, end, true);
-            const bool left = a > begin, right = b < end;
-            for (int64_t q = a; q < b; ++q) {
-              int64_t dist = INT64_MAX;
-              if (left) dist = q - (a - 1);
-              if (right) dist = std::min(dist, b - q);
-              out[q - begin] = dist == INT64_MAX ? kInf : uint32_t(dist * dist);
-            }
-            xp = b;
-          }
+  const int32_t z = lo.z + int32_t(zi);
+  for (int32_t yi = 0; yi < d.ny; ++yi) {
+    const uint64_t* row = g.rowWords(lo.y + yi, z);
+    uint32_t* out = data + (int64_t(yi) + int64_t(d.ny) * zi) * d.nx;         // out[xp - begin]: voxel x = xp - 1
+    const int64_t begin = int64_t(lo.x) + 1, end = int64_t(lo.x) + d.nx + 1;  // padded x range of the box
+    if (to_empty) {
+      // runs of filled voxels [a, b) (padded x); the bits at a - 1 and b are empty
+      for (int64_t xp = begin; xp < end;) {
+        const int64_t a = nextBit(row, xp, end, true);
+        if (a >= end) break;
+        const int64_t b = nextBit(row, a, end + 1, false);  // the bit after the box is empty
+        for (int64_t q = a; q < b; ++q) {
+          const int64_t dist = std::min(q - (a - 1), b - q);
+          out[q - begin] = uint32_t(dist * dist);
         }
+        xp = b;
       }
-      gate.report((double(done.fetch_add(1) + 1) / double(d.nz)) / 3.0);
+    } else {
+      // gaps of empty voxels [a, b) between filled runs; a - 1 is filled when a > begin, b when b < end
+      for (int64_t xp = begin; xp < end;) {
+        const int64_t a = nextBit(row, xp, end, false);
+        if (a >= end) break;
+        const int64_t b = nextBit(row, a, end, true);
+        const bool left = a > begin, right = b < end;
+        for (int64_t q = a; q < b; ++q) {
+          int64_t dist = INT64_MAX;
+          if (left) dist = q - (a - 1);
+          if (right) dist = std::min(dist, b - q);
+          out[q - begin] = dist == INT64_MAX ? kInf : uint32_t(dist * dist);
+        }
+        xp = b;
+      }
     }
-  });
+  }
 }
 
-// Scratch of one thread for the 1D transform of lines up to n long.
+// Scratch of one thread for the 1D transform of lines up to n long. Parabola k of the envelope is the lowest from
+// the point num[k] / den[k] on (den > 0; den = 0 for the first, lowest from minus infinity): kept as a fraction so
+// that every comparison is exact integer arithmetic (for lines up to kMaxDim long |num| < 2^31, den <= 2^16).
 struct LineScratch {
   std::vector<int64_t> site;  // positions of the envelope's parabolas
   std::vector<int64_t> val;   // their values
-  std::vector<double> from;   // where each parabola starts to be the lowest
-  explicit LineScratch(int64_t n) : site(size_t(n) + 2), val(size_t(n) + 2), from(size_t(n) + 3) {}
+  std::vector<int64_t> num, den;
+  explicit LineScratch(int64_t n) : site(size_t(n) + 2), val(size_t(n) + 2), num(size_t(n) + 3), den(size_t(n) + 3) {}
 };
 
 // Lower envelope over the sites of piece [a, b) of line f (n long): zeros at a - 1 and b when they lie in the line
@@ -149,24 +142,28 @@ struct LineScratch {
 void envelopePiece(uint32_t* f, int64_t n, int64_t a, int64_t b, bool border, LineScratch& s) {
   int64_t k = -1;
   auto push = [&](int64_t q, int64_t fq) {
-    const double qq = double(fq + q * q);
+    const int64_t qq = fq + q * q;
     while (k >= 0) {
+      // parabolas k and q meet at (qq - (f(v) + v^2)) / (2 (q - v)), v < q; q hides k when that is at or before
+      // the point where k starts to be lowest
       const int64_t v = s.site[size_t(k)];
-      const double x = (qq - double(s.val[size_t(k)] + v * v)) / double(2 * (q - v));
-      if (x <= s.from[size_t(k)]) {
+      const int64_t xn = qq - (s.val[size_t(k)] + v * v), xd = 2 * (q - v);
+      if (s.den[size_t(k)] != 0 && xn * s.den[size_t(k)] <= s.num[size_t(k)] * xd) {
         --k;
         continue;
       }
       ++k;
       s.site[size_t(k)] = q;
       s.val[size_t(k)] = fq;
-      s.from[size_t(k)] = x;
+      s.num[size_t(k)] = xn;
+      s.den[size_t(k)] = xd;
       return;
     }
     k = 0;
     s.site[0] = q;
     s.val[0] = fq;
-    s.from[0] = -std::numeric_limits<double>::infinity();
+    s.num[0] = 0;
+    s.den[0] = 0;
   };
   if (a > 0 || border) push(a - 1, 0);
   for (int64_t q = a; q < b; ++q) {
@@ -176,7 +173,7 @@ void envelopePiece(uint32_t* f, int64_t n, int64_t a, int64_t b, bool border, Li
   if (k < 0) return;  // no site: the piece stays infinite
   int64_t j = 0;
   for (int64_t q = a; q < b; ++q) {
-    while (j < k && s.from[size_t(j) + 1] <= double(q)) ++j;
+    while (j < k && s.num[size_t(j) + 1] <= q * s.den[size_t(j) + 1]) ++j;
     const int64_t dq = q - s.site[size_t(j)];
     f[q] = uint32_t(dq * dq + s.val[size_t(j)]);
   }
@@ -196,52 +193,81 @@ void transformLine(uint32_t* f, int64_t n, bool border, LineScratch& s) {
   }
 }
 
-// Passes 2 and 3: lines along Y (axis 1) or Z (axis 2), taken kTile neighbouring lines in x at a time (each step
-// along the line reads kTile consecutive values), transformed in per-thread scratch and written back. Returns the
-// largest finite value written (the last pass gives the field's maximum).
-uint32_t passYZ(DistanceField& f, int axis, bool border, ProgressGate& gate, double progress0) {
-  constexpr int64_t kTile = 64;
+// Passes 2 and 3: the lines along Y (axis 1) or Z (axis 2) of plane o (slice z = o for Y, row y = o for Z), taken
+// kTile neighbouring lines in x at a time (each step along the line reads kTile consecutive values), transformed in
+// the thread's scratch and written back. Returns the largest finite value written.
+class PlaneLines {
+ public:
+  static constexpr int64_t kTile = 64;
+  PlaneLines(DistanceField& f, int axis, bool border)
+      : f_(f),
+        border_(border),
+        nx_(f.boxDims().nx),
+        len_(axis == 1 ? f.boxDims().ny : f.boxDims().nz),
+        outer_stride_(axis == 1 ? nx_ * f.boxDims().ny : nx_),
+        line_stride_(axis == 1 ? nx_ : nx_ * f.boxDims().ny),
+        scratch_(len_),
+        tile_(size_t(kTile * len_)) {}
+  uint32_t transform(int64_t o) {
+    uint32_t mx = 0;
+    for (int64_t x0 = 0; x0 < nx_; x0 += kTile) {
+      const int64_t w = std::min(kTile, nx_ - x0);
+      uint32_t* base = f_.data() + o * outer_stride_ + x0;
+      uint32_t any = 0;
+      for (int64_t q = 0; q < len_; ++q) {
+        const uint32_t* src = base + q * line_stride_;
+        for (int64_t j = 0; j < w; ++j) {
+          tile_[size_t(j * len_ + q)] = src[j];
+          any |= src[j];
+        }
+      }
+      if (!any) continue;  // all zeros: already final
+      for (int64_t j = 0; j < w; ++j) transformLine(tile_.data() + j * len_, len_, border_, scratch_);
+      for (int64_t q = 0; q < len_; ++q) {
+        uint32_t* dst = base + q * line_stride_;
+        for (int64_t j = 0; j < w; ++j) {
+          const uint32_t v = tile_[size_t(j * len_ + q)];
+          if (dst[j] != v) dst[j] = v;  // a page that stays zero is never written (nor faulted in)
+          if (v != kInf && v > mx) mx = v;
+        }
+      }
+    }
+    return mx;
+  }
+
+ private:
+  DistanceField& f_;
+  bool border_;
+  int64_t nx_, len_, outer_stride_, line_stride_;
+  LineScratch scratch_;
+  std::vector<uint32_t> tile_;
+};
+
+// Passes 1 and 2 slice by slice (a Y line lies in its slice, so the slice is transformed along Y while the X pass
+// has just left it in cache), then pass 3 row by row. Returns the field's largest finite value.
+uint32_t transformBox(const VoxelGrid& g, DistanceField& f, bool to_empty, ProgressGate& gate) {
   const Dims d = f.boxDims();
-  const int64_t nx = d.nx, ny = d.ny, nz = d.nz;
-  const int64_t len = axis == 1 ? ny : nz;
-  const int64_t outer = axis == 1 ? nz : ny;
-  const int64_t outer_stride = axis == 1 ? nx * ny : nx;
-  const int64_t line_stride = axis == 1 ? nx : nx * ny;
-  uint32_t* data = f.data();
   const int threads = threadsFor(d.count() / 4);
   std::vector<uint32_t> maxima(size_t(threads), 0);
   std::atomic<int64_t> done{0};
-  parallelChunks(0, outer, 1, threads, [&](int t, int64_t ob, int64_t oe) {
-    LineScratch scratch(len);
-    std::vector<uint32_t> tile(size_t(kTile * len));
-    uint32_t mx = maxima[size_t(t)];
-    for (int64_t o = ob; o < oe; ++o) {
+  parallelChunks(0, d.nz, 1, threads, [&](int, int64_t zb, int64_t ze) {
+    PlaneLines lines(f, 1, to_empty);
+    for (int64_t z = zb; z < ze; ++z) {
       if (gate.cancelled()) return;
-      for (int64_t x0 = 0; x0 < nx; x0 += kTile) {
-        const int64_t w = std::min(kTile, nx - x0);
-        uint32_t* base = data + o * outer_stride + x0;
-        uint32_t any = 0;
-        for (int64_t q = 0; q < len; ++q) {
-          const uint32_t* src = base + q * line_stride;
-          for (int64_t j = 0; j < w; ++j) {
-            tile[size_t(j * len + q)] = src[j];
-            any |= src[j];
-          }
-        }
-        if (!any) continue;  // all zeros: already final
-        for (int64_t j = 0; j < w; ++j) transformLine(tile.data() + j * len, len, border, scratch);
-        for (int64_t q = 0; q < len; ++q) {
-          uint32_t* dst = base + q * line_stride;
-          for (int64_t j = 0; j < w; ++j) {
-            const uint32_t v = tile[size_t(j * len + q)];
-            if (dst[j] != v) dst[j] = v;  // a page that stays zero is never written (nor faulted in)
-            if (v != kInf && v > mx) mx = v;
-          }
-        }
-      }
-      gate.report(progress0 + (double(done.fetch_add(1) + 1) / double(outer)) / 3.0);
+      rowsX(g, f, to_empty, z);
+      lines.transform(z);
+      gate.report(0.6 * double(done.fetch_add(1) + 1) / double(d.nz));
     }
-    maxima[size_t(t)] = mx;
+  });
+  if (gate.cancelled()) return 0;
+  done = 0;
+  parallelChunks(0, d.ny, 1, threads, [&](int t, int64_t yb, int64_t ye) {
+    PlaneLines lines(f, 2, to_empty);
+    for (int64_t y = yb; y < ye; ++y) {
+      if (gate.cancelled()) return;
+      maxima[size_t(t)] = std::max(maxima[size_t(t)], lines.transform(y));
+      gate.report(0.6 + 0.4 * double(done.fetch_add(1) + 1) / double(d.ny));
+    }
   });
   return *std::max_element(maxima.begin(), maxima.end());
 }
@@ -265,11 +291,7 @@ Result<DistanceField> transform(const VoxelGrid& grid, bool to_empty, const Prog
   }
   ProgressGate gate(progress);
   auto cancelled = [&] { return makeError(ErrorCode::kCancelled, std::string(what) + " cancelled"); };
-  passX(grid, f, to_empty, gate);
-  if (gate.cancelled()) return cancelled();
-  passYZ(f, 1, to_empty, gate, 1.0 / 3.0);
-  if (gate.cancelled()) return cancelled();
-  uint32_t mx = passYZ(f, 2, to_empty, gate, 2.0 / 3.0);
+  const uint32_t mx = transformBox(grid, f, to_empty, gate);
   if (gate.cancelled()) return cancelled();
   f.setMaxSquared(mx);
   if (!gate.report(1.0)) return cancelled();
