@@ -14,6 +14,8 @@ add_library(Teem::teem UNKNOWN IMPORTED)
 set_target_properties(Teem::teem PROPERTIES IMPORTED_LOCATION "${TEEM_LIBRARY}"
                                             INTERFACE_INCLUDE_DIRECTORIES "${TEEM_INCLUDE_DIR}")
 
+find_package(assimp 5 REQUIRED)  # libassimp-dev: mesh formats other than STL (PLY, OBJ, 3MF export)
+
 set(OpenGL_GL_PREFERENCE GLVND)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)   # libopengl-dev, libegl-dev
 find_package(glfw3 3.3 REQUIRED)                      # libglfw3-dev

@@ -1,9 +1,15 @@
-// voxmod convert IN OUT: between voxel formats by extension (.vxm, .binvox). A mesh IN is voxelized first.
+// voxmod convert IN OUT: formats by extension (SPEC section 8). A mesh IN is voxelized first; a voxel OUT (.vxm,
+// .binvox) is written as it is, a mesh OUT (.stl, .ply, .obj, .3mf) is the model's surface
+// (vox/analysis/surface_mesh.h).
+#include <filesystem>
+
 #include <CLI/CLI.hpp>
 
 #include "cli/cmd_list.h"
 #include "cli/commands.h"
 #include "cli/model_input.h"
+#include "vox/analysis/surface_mesh.h"
+#include "vox/io/mesh_export.h"
 #include "vox/io/voxel_file.h"
 
 namespace vox::cli {
@@ -12,18 +18,46 @@ namespace {
 struct ConvertOptions {
   std::string in, out;
   bool json = false;
+  bool voxel_faces = false;  // --voxel-faces: two triangles per voxel face, no merging
   MeshOptions mesh;
 };
 
+// The model's surface into a mesh file; fills the JSON keys of the surface.
+Status writeSurface(const ConvertOptions& o, const VoxelGrid& grid, Output& out) {
+  const double t0 = nowSeconds();
+  SurfaceMeshStats stats;
+  auto mesh = extractSurfaceMesh(grid, SurfaceMeshParams{!o.voxel_faces}, terminalProgress("surface"), &stats);
+  if (!mesh) return mesh.error();
+  mesh->name = std::filesystem::path(o.in).stem().string();
+  auto& d = out.data();
+  d["surface_s"] = nowSeconds() - t0;
+  d["voxel_faces"] = stats.voxel_faces;
+  d["rectangles"] = stats.rectangles;
+  d["split_vertices"] = stats.split_vertices;
+  d["vertices"] = mesh->vertices.size();
+  d["triangles"] = mesh->triangles.size();
+  const double h = grid.voxelSize();
+  d["volume"] = double(grid.filledCount()) * h * h * h;
+  return io::saveMesh(*mesh, o.out);
+}
+
 int runConvert(const ConvertOptions& o) {
   Output out(o.json);
-  if (!io::isVoxelFile(o.out)) {
-    return out.fail(kExitUsage, o.out + ": unknown output format (use .vxm or .binvox)");
+  const bool surface = io::isMeshExportFile(o.out);
+  if (!io::isVoxelFile(o.out) && !surface) {
+    return out.fail(kExitUsage, o.out + ": unknown output format (voxels: .vxm, .binvox; surface: " +
+                                    io::meshExportExtensions() + ")");
   }
+  if (o.voxel_faces && !surface) return out.fail(kExitUsage, "--voxel-faces applies to a surface mesh OUT");
   auto model = loadModel(o.in, o.mesh, out);
   if (!model) return out.fail(model.error());
+  if (model->grid.filledCount() == 0 && surface) {
+    return out.fail(Error{ErrorCode::kInvalidArgument, o.in + ": the model has no filled voxels: no surface to write"});
+  }
   const double t0 = nowSeconds();
-  if (auto s = io::saveVoxelFile(model->grid, o.out); !s) return out.fail(s.error());
+  if (auto s = surface ? writeSurface(o, model->grid, out) : io::saveVoxelFile(model->grid, o.out); !s) {
+    return out.fail(s.error());
+  }
   auto& d = out.data();
   d["input"] = o.in;
   d["output"] = o.out;
@@ -39,7 +73,9 @@ int runConvert(const ConvertOptions& o) {
 void addConvertCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<ConvertOptions>();
   sub.add_option("IN", o->in, "Voxel file (.vxm, .binvox) or mesh (.stl)")->required();
-  sub.add_option("OUT", o->out, "Output voxel file (.vxm, .binvox)")->required();
+  sub.add_option("OUT", o->out, "Output: voxel file (.vxm, .binvox) or the surface as a mesh (.stl, .ply, .obj, .3mf)")
+      ->required();
+  sub.add_flag("--voxel-faces", o->voxel_faces, "Surface mesh: two triangles per voxel face (no merging)");
   sub.add_flag("--json", o->json, "Print one JSON object on stdout");
   addMeshOptions(sub, o->mesh);
   sub.callback([o, &ctx] { ctx.exit_code = runConvert(*o); });

@@ -1,0 +1,419 @@
+// The boundary of a voxel model as a closed manifold mesh, see vox/analysis/surface_mesh.h and docs/accuracy.md.
+//
+// 1. Faces: for each plane between two voxel layers (X, Y and Z) and each facing, a bit image of the faces between
+//    a filled and an empty voxel, from the row words (X planes by transposing the rows' bit changes).
+// 2. Rectangles: each image merged greedily (a run of a row, extended over the rows below that hold it whole).
+// 3. Vertices: a lattice corner has one vertex per fan of faces around it (CornerFans: faces joined across the
+//    corner's edges; at a checkerboard edge, the two faces of the same filled voxel), made for every rectangle
+//    corner. A rectangle keeps every vertex of its own fan that lies on its sides, and a checkerboard edge on its
+//    side gets a middle vertex per filled voxel, so neighbouring rectangles share every vertex of their common
+//    edges. A rectangle with only its corners is two triangles, otherwise a fan around its centre.
+#include "vox/analysis/surface_mesh.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+namespace vox {
+
+namespace {
+
+constexpr double kSplitMove = 1.0 / 256.0;  // how far (in voxels) a split vertex moves towards its material
+
+// The 8 voxels around a lattice corner p are voxel p - 1 + (i, j, k), bit i + 2j + 4k of the configuration. The 12
+// voxel faces through p are f = 4a + 2qb + qc: the face across axis a whose extent on axes b = a+1, c = a+2 (mod 3)
+// is on the negative (0) or positive (1) side of p.
+struct CornerFans {
+  uint8_t count[256] = {};
+  int8_t fan[256][12] = {};
+  glm::dvec3 move[256][12] = {};  // per fan: unit direction towards its material (used when count > 1)
+
+  CornerFans() {
+    for (int cfg = 0; cfg < 256; ++cfg) build(cfg);
+  }
+  static std::array<int, 3> faceVoxel(int f, int side) {
+    std::array<int, 3> v{};
+    const int a = f / 4;
+    v[size_t(a)] = side;
+    v[size_t((a + 1) % 3)] = (f >> 1) & 1;
+    v[size_t((a + 2) % 3)] = f & 1;
+    return v;
+  }
+  static int faceIndex(int a, const std::array<int, 3>& quadrant) {
+    return 4 * a + 2 * quadrant[size_t((a + 1) % 3)] + quadrant[size_t((a + 2) % 3)];
+  }
+
+ private:
+  void build(int cfg) {
+    auto filled = [cfg](const std::array<int, 3>& v) { return (cfg >> (v[0] + 2 * v[1] + 4 * v[2])) & 1; };
+    bool boundary[12];
+    int parent[12];
+    for (int f = 0; f < 12; ++f) {
+      boundary[f] = filled(faceVoxel(f, 0)) != filled(faceVoxel(f, 1));
+      parent[f] = f;
+    }
+    auto root = [&](int f) {
+      while (parent[f] != f) f = parent[f] = parent[parent[f]];
+      return f;
+    };
+    auto solid = [&](int f) { return filled(faceVoxel(f, 0)) ? faceVoxel(f, 0) : faceVoxel(f, 1); };
+    for (int e = 0; e < 3; ++e)
+      for (int s = 0; s < 2; ++s) {
+        int faces[4], n = 0;  // the boundary faces holding the half edge from p along axis e, side s
+        for (int a = 0; a < 3; ++a) {
+          if (a == e) continue;
+          const int o = 3 - a - e;
+          for (int t = 0; t < 2; ++t) {
+            std::array<int, 3> q{};
+            q[size_t(e)] = s;
+            q[size_t(o)] = t;
+            const int f = faceIndex(a, q);
+            if (boundary[f]) faces[n++] = f;
+          }
+        }
+        for (int i = 0; i < n; ++i)
+          for (int j = i + 1; j < n; ++j)
+            if (n == 2 || solid(faces[i]) == solid(faces[j])) parent[root(faces[i])] = root(faces[j]);
+      }
+    int ids[12];
+    std::fill(ids, ids + 12, -1);
+    glm::dvec3 sum[12] = {};
+    for (int f = 0; f < 12; ++f) {
+      fan[cfg][f] = -1;
+      if (!boundary[f]) continue;
+      const int r = root(f);
+      if (ids[r] < 0) ids[r] = count[cfg]++;
+      fan[cfg][f] = int8_t(ids[r]);
+      const auto v = solid(f);
+      sum[ids[r]] += glm::dvec3(v[0] - 0.5, v[1] - 0.5, v[2] - 0.5);
+    }
+    for (int k = 0; k < count[cfg]; ++k)
+      move[cfg][k] = glm::length(sum[k]) > 0 ? glm::normalize(sum[k]) : glm::dvec3(0);
+  }
+};
+
+const CornerFans& cornerFans() {
+  static const CornerFans table;
+  return table;
+}
+
+// Axes of a plane's image: bits along u, rows along v.
+constexpr int kU[3] = {1, 0, 0}, kV[3] = {2, 2, 1};
+
+struct Rect {
+  int8_t a;   // axis across the plane
+  bool neg;   // facing -a (the filled voxel is on the plane's positive side)
+  int32_t c;  // plane coordinate (between voxel c - 1 and c)
+  int32_t u0, u1, v0, v1;
+};
+
+using P3 = std::array<int64_t, 3>;
+P3 point(int a, int64_t c, int64_t u, int64_t v) {
+  P3 p{};
+  p[size_t(a)] = c;
+  p[size_t(kU[a])] = u;
+  p[size_t(kV[a])] = v;
+  return p;
+}
+
+bool rangeSet(const uint64_t* row, int64_t b0, int64_t b1) {
+  for (int64_t b = b0; b < b1;) {
+    const int64_t w = b >> 6, lo = b & 63, hi = std::min<int64_t>(64, lo + (b1 - b));
+    const uint64_t m = (hi == 64 ? ~uint64_t(0) : (uint64_t(1) << hi) - 1) & (~uint64_t(0) << lo);
+    if ((row[w] & m) != m) return false;
+    b += hi - lo;
+  }
+  return true;
+}
+void clearRange(uint64_t* row, int64_t b0, int64_t b1) {
+  for (int64_t b = b0; b < b1;) {
+    const int64_t w = b >> 6, lo = b & 63, hi = std::min<int64_t>(64, lo + (b1 - b));
+    row[w] &= ~((hi == 64 ? ~uint64_t(0) : (uint64_t(1) << hi) - 1) & (~uint64_t(0) << lo));
+    b += hi - lo;
+  }
+}
+
+// Emits the rectangles of a bit image (rows of `words` words) and clears it: greedy, or one per bit.
+template <class Emit>
+int64_t rectangles(std::vector<uint64_t>& img, int64_t rows, int64_t words, bool merge, Emit&& emit) {
+  int64_t faces = 0;
+  for (const uint64_t w : img) faces += std::popcount(w);
+  for (int64_t r = 0; r < rows; ++r) {
+    uint64_t* row = img.data() + r * words;
+    for (int64_t w = 0; w < words; ++w) {
+      while (row[w]) {
+        const int64_t b0 = w * 64 + std::countr_zero(row[w]);
+        int64_t b1 = b0 + 1, r1 = r + 1;
+        if (merge) {
+          while (b1 < words * 64 && (row[b1 >> 6] >> (b1 & 63) & 1)) ++b1;
+          while (r1 < rows && rangeSet(img.data() + r1 * words, b0, b1)) ++r1;
+        }
+        for (int64_t rr = r; rr < r1; ++rr) clearRange(img.data() + rr * words, b0, b1);
+        emit(b0, b1, r, r1);
+      }
+    }
+  }
+  return faces;
+}
+
+// The corners that have vertices: open addressing on the corner's index (linear probing, at most half full), each
+// with its configuration and the first of its vertices (one per fan, consecutive). Far cheaper than a node-based
+// map for the millions of lookups along the rectangles' sides.
+class CornerTable {
+ public:
+  struct Entry {
+    uint64_t key;
+    uint32_t base;
+    uint8_t cfg;
+  };
+  CornerTable() : slots_(size_t(1) << 16, Entry{kEmpty, 0, 0}) {}
+  Entry* find(uint64_t key) {
+    for (size_t i = slot(key);; i = (i + 1) & (slots_.size() - 1)) {
+      if (slots_[i].key == key) return &slots_[i];
+      if (slots_[i].key == kEmpty) return nullptr;
+    }
+  }
+  Entry* insert(uint64_t key, uint32_t base, uint8_t cfg) {
+    if (2 * (size_ + 1) > slots_.size()) grow();
+    size_t i = slot(key);
+    while (slots_[i].key != kEmpty) i = (i + 1) & (slots_.size() - 1);
+    slots_[i] = Entry{key, base, cfg};
+    ++size_;
+    return &slots_[i];
+  }
+
+ private:
+  static constexpr uint64_t kEmpty = ~uint64_t(0);
+  size_t slot(uint64_t key) const {
+    return size_t((key * 0x9E3779B97F4A7C15ull) >> (64 - std::countr_zero(slots_.size())));
+  }
+  void grow() {
+    std::vector<Entry> old(slots_.size() * 2, Entry{kEmpty, 0, 0});
+    old.swap(slots_);
+    size_ = 0;
+    for (const Entry& e : old)
+      if (e.key != kEmpty) insert(e.key, e.base, e.cfg);
+  }
+  std::vector<Entry> slots_;
+  size_t size_ = 0;
+};
+
+class Mesher {
+ public:
+  Mesher(const VoxelGrid& g, const SurfaceMeshParams& p) : g_(g), params_(p), fans_(cornerFans()) {}
+
+  // Steps 1 and 2: every plane's rectangles. Returns false when cancelled.
+  bool collect(const ProgressFn& progress);
+  // Step 3: vertices and triangles.
+  Result<IndexedMesh> build();
+  SurfaceMeshStats stats;
+
+ private:
+  void addPlane(int a, int32_t c, bool neg, std::vector<uint64_t>& img, int64_t rows, int64_t words, int shift);
+  int cfgAt(const P3& p) const {
+    int cfg = 0;
+    for (int k = 0; k < 8; ++k)
+      cfg |= int(g_.get(p[0] - 1 + (k & 1), p[1] - 1 + ((k >> 1) & 1), p[2] - 1 + (k >> 2))) << k;
+    return cfg;
+  }
+  // The vertex at corner p for the fan of rectangle r's voxel face with min corner (uf, vf); creates it when
+  // `create`, else returns -1 when there is none.
+  int64_t cornerVertex(const Rect& r, const P3& p, int64_t uf, int64_t vf, bool create);
+  // The middle vertex of the checkerboard voxel edge from (u, v) along axis e of r's plane on r's filled side, or
+  // -1 when that edge is not a checkerboard.
+  int64_t middleVertex(const Rect& r, int64_t u, int64_t v, int e);
+  glm::dvec3 model(const glm::dvec3& p) const { return g_.frame().origin + p * g_.voxelSize(); }
+  uint32_t add(const glm::dvec3& p) {
+    mesh_.vertices.push_back(model(p));
+    return uint32_t(mesh_.vertices.size() - 1);
+  }
+  void polygon(const Rect& r);
+
+  const VoxelGrid& g_;
+  SurfaceMeshParams params_;
+  const CornerFans& fans_;
+  std::vector<Rect> rects_;
+  CornerTable corners_;
+  std::unordered_map<uint64_t, uint32_t> middles_;
+  IndexedMesh mesh_;
+};
+
+void Mesher::addPlane(int a, int32_t c, bool neg, std::vector<uint64_t>& img, int64_t rows, int64_t words, int shift) {
+  stats.voxel_faces +=
+      rectangles(img, rows, words, params_.merge_coplanar, [&](int64_t b0, int64_t b1, int64_t r0, int64_t r1) {
+        rects_.push_back(Rect{int8_t(a), neg, c, int32_t(b0 - shift), int32_t(b1 - shift), int32_t(r0), int32_t(r1)});
+      });
+}
+
+bool Mesher::collect(const ProgressFn& progress) {
+  const int64_t nx = g_.nx(), ny = g_.ny(), nz = g_.nz(), wpr = g_.wordsPerRow();
+  std::vector<uint64_t> pos, neg;
+  // Z planes (rows y, bits padded x) and Y planes (rows z, bits padded x).
+  for (int a : {2, 1}) {
+    const int64_t planes = (a == 2 ? nz : ny) + 1, rows = a == 2 ? ny : nz;
+    for (int64_t c = 0; c < planes; ++c) {
+      pos.assign(size_t(rows * wpr), 0);
+      neg.assign(size_t(rows * wpr), 0);
+      for (int64_t r = 0; r < rows; ++r) {
+        const uint64_t* lo = a == 2 ? g_.rowWords(int32_t(r), int32_t(c - 1)) : g_.rowWords(int32_t(c - 1), int32_t(r));
+        const uint64_t* hi = a == 2 ? g_.rowWords(int32_t(r), int32_t(c)) : g_.rowWords(int32_t(c), int32_t(r));
+        for (int64_t w = 0; w < wpr; ++w) {
+          pos[size_t(r * wpr + w)] = lo[w] & ~hi[w];
+          neg[size_t(r * wpr + w)] = ~lo[w] & hi[w];
+        }
+      }
+      addPlane(a, int32_t(c), false, pos, rows, wpr, 1);
+      addPlane(a, int32_t(c), true, neg, rows, wpr, 1);
+      if ((c & 63) == 0 && progress &&
+          !progress(a == 2 ? 0.25 * double(c) / double(planes) : 0.25 + 0.25 * double(c) / double(planes)))
+        return false;
+    }
+  }
+  // X planes: rows z, bits y, from the bit changes along each row.
+  const int64_t wy = (ny + 63) / 64;
+  std::vector<std::vector<uint64_t>> xpos(size_t(nx + 1)), xneg(size_t(nx + 1));
+  for (int64_t z = 0; z < nz; ++z) {
+    for (int64_t y = 0; y < ny; ++y) {
+      const uint64_t* row = g_.rowWords(int32_t(y), int32_t(z));
+      for (int64_t w = 0; w < wpr; ++w) {
+        const uint64_t next = w + 1 < wpr ? row[w + 1] : 0;
+        for (uint64_t t = row[w] ^ (row[w] >> 1 | next << 63); t; t &= t - 1) {
+          const int64_t b = w * 64 + std::countr_zero(t);  // plane x = b: voxels b - 1 (bit b) and b (bit b + 1)
+          if (b > nx) continue;
+          auto& img = (row[w] >> (b & 63) & 1) ? xpos[size_t(b)] : xneg[size_t(b)];
+          if (img.empty()) img.assign(size_t(nz * wy), 0);
+          img[size_t(z * wy + (y >> 6))] |= uint64_t(1) << (y & 63);
+        }
+      }
+    }
+  }
+  for (int64_t c = 0; c <= nx; ++c) {
+    if (!xpos[size_t(c)].empty()) addPlane(0, int32_t(c), false, xpos[size_t(c)], nz, wy, 0);
+    if (!xneg[size_t(c)].empty()) addPlane(0, int32_t(c), true, xneg[size_t(c)], nz, wy, 0);
+    std::vector<uint64_t>().swap(xpos[size_t(c)]);
+    std::vector<uint64_t>().swap(xneg[size_t(c)]);
+  }
+  stats.rectangles = int64_t(rects_.size());
+  return !progress || progress(0.6);
+}
+
+int64_t Mesher::cornerVertex(const Rect& r, const P3& p, int64_t uf, int64_t vf, bool create) {
+  const int64_t nx1 = g_.nx() + 1, ny1 = g_.ny() + 1;
+  const uint64_t key = uint64_t(p[0] + nx1 * (p[1] + ny1 * p[2]));
+  CornerTable::Entry* e = corners_.find(key);
+  if (!e) {
+    if (!create) return -1;
+    // the first rectangle with a corner here makes the corner's vertices, one per fan
+    const int cfg = cfgAt(p);
+    e = corners_.insert(key, uint32_t(mesh_.vertices.size()), uint8_t(cfg));
+    const glm::dvec3 at{double(p[0]), double(p[1]), double(p[2])};
+    const int fans = fans_.count[cfg];
+    for (int f = 0; f < fans; ++f) add(fans > 1 ? at + kSplitMove * fans_.move[cfg][f] : at);
+    if (fans > 1) stats.split_vertices += fans;
+  }
+  const P3 q = point(r.a, r.c, uf, vf);  // the face's min corner
+  std::array<int, 3> quadrant{};
+  for (int k = 0; k < 3; ++k) quadrant[size_t(k)] = q[size_t(k)] == p[size_t(k)] ? 1 : 0;
+  return e->base + uint32_t(fans_.fan[e->cfg][CornerFans::faceIndex(r.a, quadrant)]);
+}
+
+int64_t Mesher::middleVertex(const Rect& r, int64_t u, int64_t v, int e) {
+  const P3 p = point(r.a, r.c, u, v);
+  const int o1 = (e + 1) % 3, o2 = (e + 2) % 3;
+  bool f[4];
+  for (int k = 0; k < 4; ++k) {
+    P3 q = p;
+    q[size_t(o1)] += (k & 1) - 1;
+    q[size_t(o2)] += (k >> 1) - 1;
+    f[k] = g_.get(q[0], q[1], q[2]);
+  }
+  if (!(f[0] == f[3] && f[1] == f[2] && f[0] != f[1])) return -1;
+  // r's filled voxel along this edge: the voxel of r's face next to it, on r's filled side of the plane
+  P3 vox = point(r.a, r.c - (r.neg ? 0 : 1), std::min<int64_t>(u, r.u1 - 1), std::min<int64_t>(v, r.v1 - 1));
+  vox[size_t(e)] = p[size_t(e)];
+  const int i = int(vox[size_t(o1)] - (p[size_t(o1)] - 1)), j = int(vox[size_t(o2)] - (p[size_t(o2)] - 1));
+  const int64_t nx1 = g_.nx() + 1, ny1 = g_.ny() + 1;
+  const uint64_t key = ((uint64_t(p[0] + nx1 * (p[1] + ny1 * p[2])) * 3 + uint64_t(e)) << 2) | uint64_t(i + 2 * j);
+  if (auto it = middles_.find(key); it != middles_.end()) return it->second;
+  glm::dvec3 at{double(p[0]), double(p[1]), double(p[2])};
+  at[e] += 0.5;
+  glm::dvec3 dir(0.0);
+  dir[o1] = i - 0.5;
+  dir[o2] = j - 0.5;
+  at += kSplitMove * glm::normalize(dir);
+  ++stats.split_vertices;
+  const uint32_t id = add(at);
+  middles_.emplace(key, id);
+  return id;
+}
+
+void Mesher::polygon(const Rect& r) {
+  std::vector<uint32_t> ring;
+  const int eu = kU[r.a], ev = kV[r.a];
+  // Counter-clockwise in (u, v): bottom, right, top, left. Each side: its first corner, then the vertices of r's
+  // fan at the lattice points inside it and the middle vertices of checkerboard edges along it.
+  auto side = [&](int64_t u, int64_t v, int64_t du, int64_t dv, int64_t n) {
+    for (int64_t k = 0; k < n; ++k, u += du, v += dv) {
+      const P3 p = point(r.a, r.c, u, v);
+      const int64_t id = cornerVertex(r, p, std::min<int64_t>(u, r.u1 - 1), std::min<int64_t>(v, r.v1 - 1), k == 0);
+      if (id >= 0) ring.push_back(uint32_t(id));
+      // the voxel edge from (u, v) to (u + du, v + dv), named by its lower end
+      const int64_t mid = middleVertex(r, std::min(u, u + du), std::min(v, v + dv), du != 0 ? eu : ev);
+      if (mid >= 0) ring.push_back(uint32_t(mid));
+    }
+  };
+  side(r.u0, r.v0, 1, 0, r.u1 - r.u0);
+  side(r.u1, r.v0, 0, 1, r.v1 - r.v0);
+  side(r.u1, r.v1, -1, 0, r.u1 - r.u0);
+  side(r.u0, r.v1, 0, -1, r.v1 - r.v0);
+  const bool flip = (r.a == 1) != r.neg;
+  auto tri = [&](uint32_t x, uint32_t y, uint32_t z) {
+    mesh_.triangles.push_back(flip ? std::array<uint32_t, 3>{x, z, y} : std::array<uint32_t, 3>{x, y, z});
+  };
+  if (ring.size() == 4) {
+    tri(ring[0], ring[1], ring[2]);
+    tri(ring[0], ring[2], ring[3]);
+    return;
+  }
+  glm::dvec3 centre(0.0);
+  centre[r.a] = r.c;
+  centre[eu] = 0.5 * (r.u0 + r.u1);
+  centre[ev] = 0.5 * (r.v0 + r.v1);
+  const uint32_t m = add(centre);
+  for (size_t k = 0; k < ring.size(); ++k) tri(m, ring[k], ring[(k + 1) % ring.size()]);
+}
+
+Result<IndexedMesh> Mesher::build() {
+  // Every rectangle corner first, so that each side finds the vertices of its neighbours.
+  for (const Rect& r : rects_) {
+    cornerVertex(r, point(r.a, r.c, r.u0, r.v0), r.u0, r.v0, true);
+    cornerVertex(r, point(r.a, r.c, r.u1, r.v0), r.u1 - 1, r.v0, true);
+    cornerVertex(r, point(r.a, r.c, r.u1, r.v1), r.u1 - 1, r.v1 - 1, true);
+    cornerVertex(r, point(r.a, r.c, r.u0, r.v1), r.u0, r.v1 - 1, true);
+  }
+  for (const Rect& r : rects_) polygon(r);
+  if (mesh_.vertices.size() >= (uint64_t(1) << 32)) {
+    return makeError(ErrorCode::kLimit, "surface mesh: more than 2^32 vertices");
+  }
+  return std::move(mesh_);
+}
+
+}  // namespace
+
+Result<IndexedMesh> extractSurfaceMesh(const VoxelGrid& grid, const SurfaceMeshParams& params,
+                                       const ProgressFn& progress, SurfaceMeshStats* stats) {
+  Mesher m(grid, params);
+  if (!grid.empty() && !m.collect(progress)) return makeError(ErrorCode::kCancelled, "surface mesh cancelled");
+  auto mesh = m.build();
+  if (!mesh) return mesh.error();
+  if (stats) *stats = m.stats;
+  if (progress && !progress(1.0)) return makeError(ErrorCode::kCancelled, "surface mesh cancelled");
+  return mesh;
+}
+
+}  // namespace vox
