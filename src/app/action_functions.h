@@ -24,6 +24,8 @@ void saveAs(AppState& s);
 Status savePath(AppState& s, const ActionArgs& a);
 void exportBinvox(AppState& s);
 Status exportBinvoxPath(AppState& s, const ActionArgs& a);
+void exportSurface(AppState& s);
+Status exportSurfacePath(AppState& s, const ActionArgs& a);
 void exportView(AppState& s);
 Status exportViewPath(AppState& s, const ActionArgs& a);
 void exportSection(AppState& s);

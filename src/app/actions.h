@@ -20,6 +20,7 @@ enum class ActionId {
   kSave,
   kSaveAs,
   kExportBinvox,
+  kExportSurface,
   kExportViewPng,
   kExportSectionPng,
   kExportXrayPng,

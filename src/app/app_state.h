@@ -145,6 +145,7 @@ enum class BrowserPurpose {
   kOpen,
   kSaveModel,
   kExportBinvox,
+  kExportSurface,
   kExportViewPng,
   kExportSectionPng,
   kExportXrayPng,

@@ -17,6 +17,8 @@ std::vector<std::string> browserExtensions(BrowserPurpose purpose) {
       return {".vxm", ".binvox"};
     case BrowserPurpose::kExportBinvox:
       return {".binvox"};
+    case BrowserPurpose::kExportSurface:
+      return {".stl", ".ply", ".obj", ".3mf"};
     case BrowserPurpose::kExportViewPng:
     case BrowserPurpose::kExportSectionPng:
     case BrowserPurpose::kExportXrayPng:
@@ -35,6 +37,8 @@ const char* browserTitle(BrowserPurpose purpose) {
       return "Save the model as";
     case BrowserPurpose::kExportBinvox:
       return "Export binvox";
+    case BrowserPurpose::kExportSurface:
+      return "Export the surface as a mesh (.stl, .ply, .obj, .3mf)";
     case BrowserPurpose::kExportViewPng:
       return "Export the 3D view as PNG";
     case BrowserPurpose::kExportSectionPng:
@@ -67,6 +71,9 @@ void openBrowser(AppState& state, BrowserPurpose purpose) {
       break;
     case BrowserPurpose::kExportBinvox:
       b.file_name = stem + ".binvox";
+      break;
+    case BrowserPurpose::kExportSurface:
+      b.file_name = stem + "_surface.stl";
       break;
     case BrowserPurpose::kExportViewPng:
       b.file_name = stem + "_view.png";
@@ -106,6 +113,9 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
       break;
     case BrowserPurpose::kExportBinvox:
       ok = exportBinvox(state, path);
+      break;
+    case BrowserPurpose::kExportSurface:
+      ok = exportSurface(state, path);
       break;
     case BrowserPurpose::kExportViewPng:
       ok = exportViewPng(state, path);

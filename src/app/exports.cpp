@@ -4,9 +4,11 @@
 
 #include "app/messages.h"
 #include "app/update.h"
+#include "vox/analysis/surface_mesh.h"
 #include "vox/io/figure.h"
 #include "vox/io/file_util.h"
 #include "vox/io/image_io.h"
+#include "vox/io/mesh_export.h"
 #include "vox/io/voxel_file.h"
 
 namespace vox::app {
@@ -17,6 +19,28 @@ bool exportBinvox(AppState& state, const std::filesystem::path& path) {
     return false;
   }
   if (Status s = io::saveBinvox(state.model, path); !s) {
+    reportError(state, describe(s.error(), path), path);
+    return false;
+  }
+  return true;
+}
+
+bool exportSurface(AppState& state, const std::filesystem::path& path) {
+  if (state.model.empty() || state.model.filledCount() == 0) {
+    reportError(state, "there is no model to export", path);
+    return false;
+  }
+  if (!io::isMeshExportFile(path)) {
+    reportError(state, path.string() + ": not a mesh format (" + io::meshExportExtensions() + ")", path);
+    return false;
+  }
+  auto mesh = extractSurfaceMesh(state.model);
+  if (!mesh) {
+    reportError(state, describe(mesh.error(), path), path);
+    return false;
+  }
+  mesh->name = state.doc.path.empty() ? std::string("model") : state.doc.path.stem().string();
+  if (Status s = io::saveMesh(*mesh, path); !s) {
     reportError(state, describe(s.error(), path), path);
     return false;
   }
