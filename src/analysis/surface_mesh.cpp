@@ -14,10 +14,13 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
 #include <glm/geometric.hpp>
+
+#include "vox/core/parallel.h"
 
 namespace vox {
 
@@ -172,7 +175,7 @@ class CornerTable {
     uint8_t cfg;
   };
   CornerTable() : slots_(size_t(1) << 16, Entry{kEmpty, 0, 0}) {}
-  Entry* find(uint64_t key) {
+  const Entry* find(uint64_t key) const {
     for (size_t i = slot(key);; i = (i + 1) & (slots_.size() - 1)) {
       if (slots_[i].key == key) return &slots_[i];
       if (slots_[i].key == kEmpty) return nullptr;
@@ -221,18 +224,26 @@ class Mesher {
       cfg |= int(g_.get(p[0] - 1 + (k & 1), p[1] - 1 + ((k >> 1) & 1), p[2] - 1 + (k >> 2))) << k;
     return cfg;
   }
-  // The vertex at corner p for the fan of rectangle r's voxel face with min corner (uf, vf); creates it when
-  // `create`, else returns -1 when there is none.
-  int64_t cornerVertex(const Rect& r, const P3& p, int64_t uf, int64_t vf, bool create);
-  // The middle vertex of the checkerboard voxel edge from (u, v) along axis e of r's plane on r's filled side, or
-  // -1 when that edge is not a checkerboard.
-  int64_t middleVertex(const Rect& r, int64_t u, int64_t v, int e);
+  static constexpr uint64_t kMiddle = uint64_t(1) << 63;  // a ring entry naming a middle vertex by its key
+  uint64_t cornerIndex(const P3& p) const {
+    return uint64_t(p[0] + (g_.nx() + 1) * (p[1] + int64_t(g_.ny() + 1) * p[2]));
+  }
+  // Makes the vertices of corner p (one per fan) unless it has them.
+  void makeCorner(const P3& p);
+  // The vertex at corner p for the fan of rectangle r's voxel face with min corner (uf, vf), -1 when p has none.
+  int64_t findCorner(const Rect& r, const P3& p, int64_t uf, int64_t vf) const;
+  // The key of the middle vertex of the voxel edge from (u, v) along axis e of r's plane on r's filled side, when
+  // that edge is a checkerboard; the vertex of a key, made at first use.
+  std::optional<uint64_t> middleKey(const Rect& r, int64_t u, int64_t v, int e) const;
+  uint32_t middleVertex(uint64_t key);
+  // The vertices around r, counter-clockwise in its plane; then its triangles.
+  void ring(const Rect& r, std::vector<uint64_t>& out) const;
+  void emit(const Rect& r, const uint64_t* refs, size_t n, std::vector<uint32_t>& ids);
   glm::dvec3 model(const glm::dvec3& p) const { return g_.frame().origin + p * g_.voxelSize(); }
   uint32_t add(const glm::dvec3& p) {
     mesh_.vertices.push_back(model(p));
     return uint32_t(mesh_.vertices.size() - 1);
   }
-  void polygon(const Rect& r);
 
   const VoxelGrid& g_;
   SurfaceMeshParams params_;
@@ -302,27 +313,28 @@ bool Mesher::collect(const ProgressFn& progress) {
   return !progress || progress(0.6);
 }
 
-int64_t Mesher::cornerVertex(const Rect& r, const P3& p, int64_t uf, int64_t vf, bool create) {
-  const int64_t nx1 = g_.nx() + 1, ny1 = g_.ny() + 1;
-  const uint64_t key = uint64_t(p[0] + nx1 * (p[1] + ny1 * p[2]));
-  CornerTable::Entry* e = corners_.find(key);
-  if (!e) {
-    if (!create) return -1;
-    // the first rectangle with a corner here makes the corner's vertices, one per fan
-    const int cfg = cfgAt(p);
-    e = corners_.insert(key, uint32_t(mesh_.vertices.size()), uint8_t(cfg));
-    const glm::dvec3 at{double(p[0]), double(p[1]), double(p[2])};
-    const int fans = fans_.count[cfg];
-    for (int f = 0; f < fans; ++f) add(fans > 1 ? at + kSplitMove * fans_.move[cfg][f] : at);
-    if (fans > 1) stats.split_vertices += fans;
-  }
+void Mesher::makeCorner(const P3& p) {
+  const uint64_t key = cornerIndex(p);
+  if (corners_.find(key)) return;
+  // the first rectangle with a corner here makes the corner's vertices, one per fan
+  const int cfg = cfgAt(p);
+  corners_.insert(key, uint32_t(mesh_.vertices.size()), uint8_t(cfg));
+  const glm::dvec3 at{double(p[0]), double(p[1]), double(p[2])};
+  const int fans = fans_.count[cfg];
+  for (int f = 0; f < fans; ++f) add(fans > 1 ? at + kSplitMove * fans_.move[cfg][f] : at);
+  if (fans > 1) stats.split_vertices += fans;
+}
+
+int64_t Mesher::findCorner(const Rect& r, const P3& p, int64_t uf, int64_t vf) const {
+  const CornerTable::Entry* e = corners_.find(cornerIndex(p));
+  if (!e) return -1;
   const P3 q = point(r.a, r.c, uf, vf);  // the face's min corner
   std::array<int, 3> quadrant{};
   for (int k = 0; k < 3; ++k) quadrant[size_t(k)] = q[size_t(k)] == p[size_t(k)] ? 1 : 0;
   return e->base + uint32_t(fans_.fan[e->cfg][CornerFans::faceIndex(r.a, quadrant)]);
 }
 
-int64_t Mesher::middleVertex(const Rect& r, int64_t u, int64_t v, int e) {
+std::optional<uint64_t> Mesher::middleKey(const Rect& r, int64_t u, int64_t v, int e) const {
   const P3 p = point(r.a, r.c, u, v);
   const int o1 = (e + 1) % 3, o2 = (e + 2) % 3;
   bool f[4];
@@ -332,19 +344,25 @@ int64_t Mesher::middleVertex(const Rect& r, int64_t u, int64_t v, int e) {
     q[size_t(o2)] += (k >> 1) - 1;
     f[k] = g_.get(q[0], q[1], q[2]);
   }
-  if (!(f[0] == f[3] && f[1] == f[2] && f[0] != f[1])) return -1;
+  if (!(f[0] == f[3] && f[1] == f[2] && f[0] != f[1])) return std::nullopt;
   // r's filled voxel along this edge: the voxel of r's face next to it, on r's filled side of the plane
   P3 vox = point(r.a, r.c - (r.neg ? 0 : 1), std::min<int64_t>(u, r.u1 - 1), std::min<int64_t>(v, r.v1 - 1));
   vox[size_t(e)] = p[size_t(e)];
   const int i = int(vox[size_t(o1)] - (p[size_t(o1)] - 1)), j = int(vox[size_t(o2)] - (p[size_t(o2)] - 1));
-  const int64_t nx1 = g_.nx() + 1, ny1 = g_.ny() + 1;
-  const uint64_t key = ((uint64_t(p[0] + nx1 * (p[1] + ny1 * p[2])) * 3 + uint64_t(e)) << 2) | uint64_t(i + 2 * j);
+  return ((cornerIndex(p) * 3 + uint64_t(e)) << 2) | uint64_t(i + 2 * j);
+}
+
+uint32_t Mesher::middleVertex(uint64_t key) {
   if (auto it = middles_.find(key); it != middles_.end()) return it->second;
-  glm::dvec3 at{double(p[0]), double(p[1]), double(p[2])};
+  const int e = int((key >> 2) % 3), i = int(key & 1), j = int((key >> 1) & 1);
+  const uint64_t corner = (key >> 2) / 3;
+  const int64_t nx1 = g_.nx() + 1, ny1 = g_.ny() + 1;
+  glm::dvec3 at{double(int64_t(corner) % nx1), double((int64_t(corner) / nx1) % ny1),
+                double(int64_t(corner) / (nx1 * ny1))};
   at[e] += 0.5;
   glm::dvec3 dir(0.0);
-  dir[o1] = i - 0.5;
-  dir[o2] = j - 0.5;
+  dir[(e + 1) % 3] = i - 0.5;
+  dir[(e + 2) % 3] = j - 0.5;
   at += kSplitMove * glm::normalize(dir);
   ++stats.split_vertices;
   const uint32_t id = add(at);
@@ -352,51 +370,80 @@ int64_t Mesher::middleVertex(const Rect& r, int64_t u, int64_t v, int e) {
   return id;
 }
 
-void Mesher::polygon(const Rect& r) {
-  std::vector<uint32_t> ring;
+void Mesher::ring(const Rect& r, std::vector<uint64_t>& out) const {
   const int eu = kU[r.a], ev = kV[r.a];
   // Counter-clockwise in (u, v): bottom, right, top, left. Each side: its first corner, then the vertices of r's
   // fan at the lattice points inside it and the middle vertices of checkerboard edges along it.
   auto side = [&](int64_t u, int64_t v, int64_t du, int64_t dv, int64_t n) {
     for (int64_t k = 0; k < n; ++k, u += du, v += dv) {
-      const P3 p = point(r.a, r.c, u, v);
-      const int64_t id = cornerVertex(r, p, std::min<int64_t>(u, r.u1 - 1), std::min<int64_t>(v, r.v1 - 1), k == 0);
-      if (id >= 0) ring.push_back(uint32_t(id));
+      const int64_t id =
+          findCorner(r, point(r.a, r.c, u, v), std::min<int64_t>(u, r.u1 - 1), std::min<int64_t>(v, r.v1 - 1));
+      if (id >= 0) out.push_back(uint64_t(id));
       // the voxel edge from (u, v) to (u + du, v + dv), named by its lower end
-      const int64_t mid = middleVertex(r, std::min(u, u + du), std::min(v, v + dv), du != 0 ? eu : ev);
-      if (mid >= 0) ring.push_back(uint32_t(mid));
+      if (auto mid = middleKey(r, std::min(u, u + du), std::min(v, v + dv), du != 0 ? eu : ev)) {
+        out.push_back(kMiddle | *mid);
+      }
     }
   };
   side(r.u0, r.v0, 1, 0, r.u1 - r.u0);
   side(r.u1, r.v0, 0, 1, r.v1 - r.v0);
   side(r.u1, r.v1, -1, 0, r.u1 - r.u0);
   side(r.u0, r.v1, 0, -1, r.v1 - r.v0);
+}
+
+void Mesher::emit(const Rect& r, const uint64_t* refs, size_t n, std::vector<uint32_t>& ids) {
+  ids.clear();
+  for (size_t k = 0; k < n; ++k)
+    ids.push_back(refs[k] & kMiddle ? middleVertex(refs[k] & ~kMiddle) : uint32_t(refs[k]));
   const bool flip = (r.a == 1) != r.neg;
   auto tri = [&](uint32_t x, uint32_t y, uint32_t z) {
     mesh_.triangles.push_back(flip ? std::array<uint32_t, 3>{x, z, y} : std::array<uint32_t, 3>{x, y, z});
   };
-  if (ring.size() == 4) {
-    tri(ring[0], ring[1], ring[2]);
-    tri(ring[0], ring[2], ring[3]);
+  if (ids.size() == 4) {
+    tri(ids[0], ids[1], ids[2]);
+    tri(ids[0], ids[2], ids[3]);
     return;
   }
   glm::dvec3 centre(0.0);
   centre[r.a] = r.c;
-  centre[eu] = 0.5 * (r.u0 + r.u1);
-  centre[ev] = 0.5 * (r.v0 + r.v1);
+  centre[kU[r.a]] = 0.5 * (r.u0 + r.u1);
+  centre[kV[r.a]] = 0.5 * (r.v0 + r.v1);
   const uint32_t m = add(centre);
-  for (size_t k = 0; k < ring.size(); ++k) tri(m, ring[k], ring[(k + 1) % ring.size()]);
+  for (size_t k = 0; k < ids.size(); ++k) tri(m, ids[k], ids[(k + 1) % ids.size()]);
 }
 
 Result<IndexedMesh> Mesher::build() {
   // Every rectangle corner first, so that each side finds the vertices of its neighbours.
   for (const Rect& r : rects_) {
-    cornerVertex(r, point(r.a, r.c, r.u0, r.v0), r.u0, r.v0, true);
-    cornerVertex(r, point(r.a, r.c, r.u1, r.v0), r.u1 - 1, r.v0, true);
-    cornerVertex(r, point(r.a, r.c, r.u1, r.v1), r.u1 - 1, r.v1 - 1, true);
-    cornerVertex(r, point(r.a, r.c, r.u0, r.v1), r.u0, r.v1 - 1, true);
+    makeCorner(point(r.a, r.c, r.u0, r.v0));
+    makeCorner(point(r.a, r.c, r.u1, r.v0));
+    makeCorner(point(r.a, r.c, r.u1, r.v1));
+    makeCorner(point(r.a, r.c, r.u0, r.v1));
   }
-  for (const Rect& r : rects_) polygon(r);
+  // The rings of vertices around the rectangles, in parallel (the corner table is only read), in blocks of
+  // rectangles; then the triangles in order (middle vertices are made at first use: the mesh does not depend on
+  // the thread split).
+  constexpr int64_t kBlock = 1 << 14;
+  const int64_t n = int64_t(rects_.size()), blocks = (n + kBlock - 1) / kBlock;
+  std::vector<std::vector<uint64_t>> refs(static_cast<size_t>(blocks));
+  std::vector<std::vector<uint32_t>> ends(static_cast<size_t>(blocks));
+  parallelChunks(0, blocks, 1, threadsFor(n * 8), [&](int, int64_t b0, int64_t b1) {
+    for (int64_t b = b0; b < b1; ++b)
+      for (int64_t k = b * kBlock; k < std::min(n, (b + 1) * kBlock); ++k) {
+        ring(rects_[size_t(k)], refs[size_t(b)]);
+        ends[size_t(b)].push_back(uint32_t(refs[size_t(b)].size()));
+      }
+  });
+  std::vector<uint32_t> ids;
+  for (int64_t b = 0; b < blocks; ++b) {
+    uint32_t start = 0;
+    for (int64_t k = b * kBlock; k < std::min(n, (b + 1) * kBlock); ++k) {
+      const uint32_t end = ends[size_t(b)][size_t(k - b * kBlock)];
+      emit(rects_[size_t(k)], refs[size_t(b)].data() + start, end - start, ids);
+      start = end;
+    }
+    std::vector<uint64_t>().swap(refs[size_t(b)]);
+  }
   if (mesh_.vertices.size() >= (uint64_t(1) << 32)) {
     return makeError(ErrorCode::kLimit, "surface mesh: more than 2^32 vertices");
   }
