@@ -18,6 +18,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "vox/core/parallel.h"
@@ -452,12 +453,52 @@ Result<IndexedMesh> Mesher::build() {
 
 }  // namespace
 
+// Smoothing (constrained surface nets, after Gibson 1998): every vertex moves towards the mean of its neighbours,
+// alternately by lambda and back by mu (Taubin 1995, so that a convex part does not shrink as under plain
+// averaging), `iterations` pairs of steps, but never more than kSmoothReach voxels from where it started on any
+// axis, so the surface stays within half a voxel of the voxels' boundary and keeps its topology.
+constexpr double kSmoothReach = 0.45;
+
+void smooth(IndexedMesh& mesh, double h, int iterations) {
+  const size_t n = mesh.vertices.size();
+  std::vector<uint32_t> start(n + 1, 0), nb;  // neighbours by vertex, from the triangles' edges
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) start[t[size_t(k)] + 1] += 2;
+  for (size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+  nb.resize(start[n]);
+  std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      nb[fill[t[size_t(k)]]++] = t[size_t((k + 1) % 3)];
+      nb[fill[t[size_t(k)]]++] = t[size_t((k + 2) % 3)];
+    }
+  const std::vector<glm::dvec3> home = mesh.vertices;
+  std::vector<glm::dvec3> next(n);
+  const double reach = kSmoothReach * h;
+  for (int it = 0; it < 2 * iterations; ++it) {
+    const double step = it % 2 == 0 ? 0.5 : -0.53;  // Taubin's lambda and mu
+    parallelChunks(0, int64_t(n), 1 << 14, threadsFor(int64_t(nb.size())), [&](int, int64_t b, int64_t e) {
+      for (int64_t i = b; i < e; ++i) {
+        glm::dvec3 sum(0.0);
+        for (uint32_t k = start[size_t(i)]; k < start[size_t(i) + 1]; ++k) sum += mesh.vertices[nb[k]];
+        const uint32_t count = start[size_t(i) + 1] - start[size_t(i)];
+        const glm::dvec3 v = mesh.vertices[size_t(i)], mean = count ? sum / double(count) : v;
+        next[size_t(i)] = glm::clamp(v + step * (mean - v), home[size_t(i)] - reach, home[size_t(i)] + reach);
+      }
+    });
+    mesh.vertices.swap(next);
+  }
+}
+
 Result<IndexedMesh> extractSurfaceMesh(const VoxelGrid& grid, const SurfaceMeshParams& params,
                                        const ProgressFn& progress, SurfaceMeshStats* stats) {
-  Mesher m(grid, params);
+  SurfaceMeshParams p = params;
+  if (p.smooth_iterations > 0) p.merge_coplanar = false;  // smoothing moves every voxel corner
+  Mesher m(grid, p);
   if (!grid.empty() && !m.collect(progress)) return makeError(ErrorCode::kCancelled, "surface mesh cancelled");
   auto mesh = m.build();
   if (!mesh) return mesh.error();
+  if (p.smooth_iterations > 0) smooth(*mesh, grid.voxelSize(), p.smooth_iterations);
   if (stats) *stats = m.stats;
   if (progress && !progress(1.0)) return makeError(ErrorCode::kCancelled, "surface mesh cancelled");
   return mesh;

@@ -7,7 +7,8 @@
 // 1/256 of a voxel towards its own material, so the mesh is manifold even for tools that weld by position. With
 // `merge_coplanar`, the faces of each plane and facing are merged into rectangles and every vertex of a
 // neighbouring rectangle on a rectangle's side is kept on it (no T-junctions): the mesh stays watertight. The
-// enclosed volume is filled x h^3, but for the split vertices' moves (each at most h^3 / 256).
+// enclosed volume is filled x h^3, but for the split vertices' moves (each at most h^3 / 256). The smooth option
+// trades that exactness for a surface without steps (for printing a peeled core or a scan).
 #include <cstdint>
 
 #include "vox/core/indexed_mesh.h"
@@ -19,6 +20,11 @@ namespace vox {
 
 struct SurfaceMeshParams {
   bool merge_coplanar = true;  // rectangles instead of two triangles per voxel face
+  // > 0: a smooth surface (constrained surface nets with Taubin's smoothing, which does not shrink): the voxel
+  // faces' mesh with every vertex moved this many pairs of steps towards the mean of its neighbours, each at most
+  // 0.45 voxel from its corner on any axis (so within half a voxel of the voxels' boundary, same topology: closed
+  // and manifold). Implies no merging.
+  int smooth_iterations = 0;
 };
 
 struct SurfaceMeshStats {

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -115,6 +116,32 @@ TEST(SurfaceMesh, aBallMergesWithoutTJunctions) {
   ASSERT_TRUE(mesh.ok());
   EXPECT_LT(stats.rectangles * 2, stats.voxel_faces);
   expectSurfaceOf(g, true, "ball");
+}
+
+TEST(SurfaceMesh, smoothSurfaceStaysClosedAndWithinHalfAVoxel) {
+  const VoxelGrid g = test::ballGrid(Dims{30, 30, 30}, glm::dvec3(15.2, 14.9, 15.1), 10.3);
+  auto blocky = extractSurfaceMesh(g, SurfaceMeshParams{false, 0});
+  auto smooth = extractSurfaceMesh(g, SurfaceMeshParams{true, 10});
+  ASSERT_TRUE(blocky.ok());
+  ASSERT_TRUE(smooth.ok());
+  ASSERT_EQ(smooth->vertices.size(), blocky->vertices.size());  // the voxel faces' mesh, vertices moved
+  EXPECT_EQ(smooth->triangles, blocky->triangles);
+  double moved = 0.0;
+  for (size_t i = 0; i < smooth->vertices.size(); ++i) {
+    const glm::dvec3 d = glm::abs(smooth->vertices[i] - blocky->vertices[i]);
+    EXPECT_LE(std::max({d.x, d.y, d.z}), 0.45 + 1e-12);
+    moved = std::max(moved, std::max({d.x, d.y, d.z}));
+  }
+  EXPECT_GT(moved, 0.2);  // the steps are gone, not just nudged
+  const TriangleMesh soup = smooth->toTriangleMesh();
+  const MeshTopology topo = analyzeTopology(soup);
+  EXPECT_TRUE(topo.watertight());
+  EXPECT_EQ(topo.inconsistent_edges, 0);
+  // Smoothing cuts the corners of the steps: the volume lies between that of the voxels and a little less, and
+  // nearer the true ball's than the voxels' surface area is.
+  const double filled = double(g.filledCount()), ball = 4.0 / 3.0 * 3.14159265358979 * 10.3 * 10.3 * 10.3;
+  EXPECT_NEAR(signedVolume(soup), ball, 0.03 * ball);
+  EXPECT_NEAR(filled, ball, 0.03 * ball);
 }
 
 }  // namespace
