@@ -68,6 +68,10 @@ void exportBinvox(AppState& s) { openBrowser(s, BrowserPurpose::kExportBinvox); 
 Status exportBinvoxPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportBinvox, a); }
 void exportSurface(AppState& s) { openBrowser(s, BrowserPurpose::kExportSurface); }
 Status exportSurfacePath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportSurface, a); }
+void exportSmoothSurface(AppState& s) { openBrowser(s, BrowserPurpose::kExportSmoothSurface); }
+Status exportSmoothSurfacePath(AppState& s, const ActionArgs& a) {
+  return acceptPath(s, BrowserPurpose::kExportSmoothSurface, a);
+}
 void exportView(AppState& s) { openBrowser(s, BrowserPurpose::kExportViewPng); }
 Status exportViewPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportViewPng, a); }
 void exportSection(AppState& s) { openBrowser(s, BrowserPurpose::kExportSectionPng); }

@@ -26,6 +26,8 @@ void exportBinvox(AppState& s);
 Status exportBinvoxPath(AppState& s, const ActionArgs& a);
 void exportSurface(AppState& s);
 Status exportSurfacePath(AppState& s, const ActionArgs& a);
+void exportSmoothSurface(AppState& s);
+Status exportSmoothSurfacePath(AppState& s, const ActionArgs& a);
 void exportView(AppState& s);
 Status exportViewPath(AppState& s, const ActionArgs& a);
 void exportSection(AppState& s);

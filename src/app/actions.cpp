@@ -26,6 +26,7 @@ const Action kActions[] = {
   {ActionId::kSaveAs,         "save-as",         "File",    "Save As...",                         {GLFW_KEY_S, kCtrl | kShift}, 1, -1, saveAs,       savePath,          hasModel,    nullptr},
   {ActionId::kExportBinvox,   "export-binvox",   "File",    "Export binvox...",                   kNone,                       1, -1, exportBinvox,  exportBinvoxPath,  hasModel,    nullptr},
   {ActionId::kExportSurface,  "export-surface",  "File",    "Export surface mesh (STL, PLY, OBJ, 3MF)...", kNone,              1, -1, exportSurface, exportSurfacePath, hasModel,    nullptr},
+  {ActionId::kExportSmoothSurface, "export-smooth-surface", "File", "Export smooth surface mesh...", kNone,            1, -1, exportSmoothSurface, exportSmoothSurfacePath, hasModel, nullptr},
   {ActionId::kExportViewPng,  "export-view",     "File",    "Export 3D view PNG...",              {GLFW_KEY_E, kCtrl},         1, -1, exportView,    exportViewPath,    hasModel,    nullptr},
   {ActionId::kExportSectionPng, "export-section", "File",   "Export section PNG...",              kNone,                       1, -1, exportSection, exportSectionPath, hasSection,  nullptr},
   {ActionId::kExportXrayPng,  "export-xray",     "File",    "Export X-ray PNG...",                kNone,                       1, -1, exportXray,    exportXrayPath,    hasXray,     nullptr},

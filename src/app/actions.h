@@ -21,6 +21,7 @@ enum class ActionId {
   kSaveAs,
   kExportBinvox,
   kExportSurface,
+  kExportSmoothSurface,
   kExportViewPng,
   kExportSectionPng,
   kExportXrayPng,

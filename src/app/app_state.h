@@ -146,6 +146,7 @@ enum class BrowserPurpose {
   kSaveModel,
   kExportBinvox,
   kExportSurface,
+  kExportSmoothSurface,
   kExportViewPng,
   kExportSectionPng,
   kExportXrayPng,

@@ -18,6 +18,7 @@ std::vector<std::string> browserExtensions(BrowserPurpose purpose) {
     case BrowserPurpose::kExportBinvox:
       return {".binvox"};
     case BrowserPurpose::kExportSurface:
+    case BrowserPurpose::kExportSmoothSurface:
       return {".stl", ".ply", ".obj", ".3mf"};
     case BrowserPurpose::kExportViewPng:
     case BrowserPurpose::kExportSectionPng:
@@ -39,6 +40,8 @@ const char* browserTitle(BrowserPurpose purpose) {
       return "Export binvox";
     case BrowserPurpose::kExportSurface:
       return "Export the surface as a mesh (.stl, .ply, .obj, .3mf)";
+    case BrowserPurpose::kExportSmoothSurface:
+      return "Export a smooth surface, within half a voxel (.stl, .ply, .obj, .3mf)";
     case BrowserPurpose::kExportViewPng:
       return "Export the 3D view as PNG";
     case BrowserPurpose::kExportSectionPng:
@@ -74,6 +77,9 @@ void openBrowser(AppState& state, BrowserPurpose purpose) {
       break;
     case BrowserPurpose::kExportSurface:
       b.file_name = stem + "_surface.stl";
+      break;
+    case BrowserPurpose::kExportSmoothSurface:
+      b.file_name = stem + "_smooth.stl";
       break;
     case BrowserPurpose::kExportViewPng:
       b.file_name = stem + "_view.png";
@@ -115,7 +121,10 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
       ok = exportBinvox(state, path);
       break;
     case BrowserPurpose::kExportSurface:
-      ok = exportSurface(state, path);
+      ok = exportSurface(state, path, false);
+      break;
+    case BrowserPurpose::kExportSmoothSurface:
+      ok = exportSurface(state, path, true);
       break;
     case BrowserPurpose::kExportViewPng:
       ok = exportViewPng(state, path);

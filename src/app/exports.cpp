@@ -25,7 +25,7 @@ bool exportBinvox(AppState& state, const std::filesystem::path& path) {
   return true;
 }
 
-bool exportSurface(AppState& state, const std::filesystem::path& path) {
+bool exportSurface(AppState& state, const std::filesystem::path& path, bool smooth) {
   if (state.model.empty() || state.model.filledCount() == 0) {
     reportError(state, "there is no model to export", path);
     return false;
@@ -34,7 +34,7 @@ bool exportSurface(AppState& state, const std::filesystem::path& path) {
     reportError(state, path.string() + ": not a mesh format (" + io::meshExportExtensions() + ")", path);
     return false;
   }
-  auto mesh = extractSurfaceMesh(state.model);
+  auto mesh = extractSurfaceMesh(state.model, SurfaceMeshParams{true, smooth ? 10 : 0});
   if (!mesh) {
     reportError(state, describe(mesh.error(), path), path);
     return false;

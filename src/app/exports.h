@@ -9,8 +9,9 @@
 namespace vox::app {
 
 bool exportBinvox(AppState& state, const std::filesystem::path& path);
-// The model's surface (vox/analysis/surface_mesh.h) as a mesh file chosen by extension (.stl, .ply, .obj, .3mf).
-bool exportSurface(AppState& state, const std::filesystem::path& path);
+// The model's surface (vox/analysis/surface_mesh.h; smooth: 10 smoothing passes) as a mesh file chosen by
+// extension (.stl, .ply, .obj, .3mf).
+bool exportSurface(AppState& state, const std::filesystem::path& path, bool smooth);
 bool exportSectionPng(AppState& state, const std::filesystem::path& path);
 bool exportXrayPng(AppState& state, const std::filesystem::path& path);
 bool exportXrayCsv(AppState& state, const std::filesystem::path& path);

@@ -54,7 +54,7 @@ echo "ok - save marks the model saved; undo / redo move away from and back to it
   fail "re-opened part.vxm differs: $(get "$s5" dims) / $(get "$s5" filled) vs $(get "$s2" dims) / $(get "$s2" filled)"
 [[ "$(get "$s5" unsaved)" == 0 ]] || fail "a freshly opened file counts as unsaved"
 echo "ok - part.vxm re-opens with the same $(get "$s5" filled) voxels"
-for f in section.png xray.png view.png xray.csv surface.stl surface.3mf 01_error_dialog.png 02_reopened.png; do
+for f in section.png xray.png view.png xray.csv surface.stl surface.3mf smooth.ply 01_error_dialog.png 02_reopened.png; do
   [[ -s "$out/$f" ]] || fail "$f was not written"
 done
 head -n 1 "$out/xray.csv" | grep -q "^u,v,thickness_voxels" || fail "xray.csv has no header"
