@@ -146,7 +146,6 @@ void clearRange(uint64_t* row, int64_t b0, int64_t b1) {
 template <class Emit>
 int64_t rectangles(std::vector<uint64_t>& img, int64_t rows, int64_t words, bool merge, Emit&& emit) {
   int64_t faces = 0;
-  for (const uint64_t w : img) faces += std::popcount(w);
   for (int64_t r = 0; r < rows; ++r) {
     uint64_t* row = img.data() + r * words;
     for (int64_t w = 0; w < words; ++w) {
@@ -158,6 +157,7 @@ int64_t rectangles(std::vector<uint64_t>& img, int64_t rows, int64_t words, bool
           while (r1 < rows && rangeSet(img.data() + r1 * words, b0, b1)) ++r1;
         }
         for (int64_t rr = r; rr < r1; ++rr) clearRange(img.data() + rr * words, b0, b1);
+        faces += (b1 - b0) * (r1 - r);
         emit(b0, b1, r, r1);
       }
     }
@@ -286,29 +286,29 @@ bool Mesher::collect(const ProgressFn& progress) {
         return false;
     }
   }
-  // X planes: rows z, bits y, from the bit changes along each row.
+  // X planes: rows z, bits y, from the bit changes along each row; 64 planes at a time (those of one word of the
+  // rows), so the images hold 64 planes, not all of them.
   const int64_t wy = (ny + 63) / 64;
-  std::vector<std::vector<uint64_t>> xpos(size_t(nx + 1)), xneg(size_t(nx + 1));
-  for (int64_t z = 0; z < nz; ++z) {
-    for (int64_t y = 0; y < ny; ++y) {
-      const uint64_t* row = g_.rowWords(int32_t(y), int32_t(z));
-      for (int64_t w = 0; w < wpr; ++w) {
+  std::vector<std::vector<uint64_t>> xpos(64), xneg(64);
+  for (int64_t w = 0; w < wpr && w * 64 <= nx; ++w) {
+    for (int64_t z = 0; z < nz; ++z) {
+      for (int64_t y = 0; y < ny; ++y) {
+        const uint64_t* row = g_.rowWords(int32_t(y), int32_t(z));
         const uint64_t next = w + 1 < wpr ? row[w + 1] : 0;
         for (uint64_t t = row[w] ^ (row[w] >> 1 | next << 63); t; t &= t - 1) {
-          const int64_t b = w * 64 + std::countr_zero(t);  // plane x = b: voxels b - 1 (bit b) and b (bit b + 1)
-          if (b > nx) continue;
-          auto& img = (row[w] >> (b & 63) & 1) ? xpos[size_t(b)] : xneg[size_t(b)];
+          const int bit = std::countr_zero(t);  // plane x = 64w + bit: voxels x - 1 (this bit) and x (the next)
+          auto& img = (row[w] >> bit & 1) ? xpos[size_t(bit)] : xneg[size_t(bit)];
           if (img.empty()) img.assign(size_t(nz * wy), 0);
           img[size_t(z * wy + (y >> 6))] |= uint64_t(1) << (y & 63);
         }
       }
     }
-  }
-  for (int64_t c = 0; c <= nx; ++c) {
-    if (!xpos[size_t(c)].empty()) addPlane(0, int32_t(c), false, xpos[size_t(c)], nz, wy, 0);
-    if (!xneg[size_t(c)].empty()) addPlane(0, int32_t(c), true, xneg[size_t(c)], nz, wy, 0);
-    std::vector<uint64_t>().swap(xpos[size_t(c)]);
-    std::vector<uint64_t>().swap(xneg[size_t(c)]);
+    for (int bit = 0; bit < 64; ++bit) {
+      const auto c = int32_t(w * 64 + bit);
+      if (!xpos[size_t(bit)].empty()) addPlane(0, c, false, xpos[size_t(bit)], nz, wy, 0);
+      if (!xneg[size_t(bit)].empty()) addPlane(0, c, true, xneg[size_t(bit)], nz, wy, 0);
+      // rectangles() leaves the images cleared, ready for the next 64 planes
+    }
   }
   stats.rectangles = int64_t(rects_.size());
   return !progress || progress(0.6);
