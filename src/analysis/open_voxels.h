@@ -37,11 +37,6 @@ class OpenVoxels {
 
  private:
   static int64_t sq(int64_t v) { return v * v; }
-  // squared distance from c to the nearest and the farthest voxel centre of [lo, lo + n) on one axis
-  static int64_t near2(int64_t c, int64_t lo, int64_t n) {
-    return c < lo ? sq(lo - c) : c >= lo + n ? sq(c - lo - n + 1) : 0;
-  }
-  static int64_t far2(int64_t c, int64_t lo, int64_t n) { return std::max(sq(c - lo), sq(lo + n - 1 - c)); }
   size_t brickIndex(int64_t bx, int64_t by, int64_t bz) const { return size_t(bx + b_.nx * (by + b_.ny * bz)); }
   size_t nodeIndex(int64_t nx, int64_t ny, int64_t nz) const { return size_t(nx + n_.nx * (ny + n_.ny * nz)); }
   size_t blockIndex(int64_t kx, int64_t ky, int64_t kz) const { return size_t(kx + k_.nx * (ky + k_.ny * kz)); }
