@@ -48,8 +48,7 @@ const Refusal kRefusals[] = {
      "bytes"},
     // STL: files of other kinds are named as not STL, not as a broken binary STL.
     {"not_stl_ply.stl", ErrorCode::kParse,
-     "not_stl_ply.stl: not an STL file: it looks like a PLY file, which voxmod does not read (it reads STL, .vxm and "
-     ".binvox)"},
+     "not_stl_ply.stl: not an STL file: it looks like a PLY file (name it .ply to read it as one)"},
     {"not_stl_text.stl", ErrorCode::kParse,
      "not_stl_text.stl: not an STL file: it is neither an ASCII STL (it does not start with 'solid') nor a binary "
      "STL (its size does not fit the triangle count at byte 80)"},
