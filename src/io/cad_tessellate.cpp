@@ -138,6 +138,10 @@ int64_t appendTriangles(const TopoDS_Shape& body, std::vector<Triangle>& triangl
         const gp_Pnt p = mesh->Node(n[c]).Transformed(placement);
         t.v[c] = glm::vec3(float(p.X()), float(p.Y()), float(p.Z()));
       }
+      // The mesher puts several nodes on a degenerated edge (a sphere's pole, a cone's apex), all at one point: a
+      // triangle with two of them has no area and uses its third edge once in each direction, which would make that
+      // edge non-manifold. Leaving it out changes no surface.
+      if (t.v[0] == t.v[1] || t.v[1] == t.v[2] || t.v[2] == t.v[0]) continue;
       triangles.push_back(t);
     }
   }

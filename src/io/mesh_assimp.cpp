@@ -219,7 +219,11 @@ Result<MeshFileLoad> importWithAssimp(std::span<const uint8_t> bytes, const std:
   const aiScene* scene = nullptr;
   std::vector<MeshTriangles> meshes;
   try {
-    scene = importer.ReadFile(main_name, aiProcess_ValidateDataStructure);
+    scene = importer.ReadFile(main_name, 0);
+    if (scene != nullptr && (scene->mNumMeshes == 0 || scene->mRootNode == nullptr)) {
+      return makeError(ErrorCode::kParse, name + ": " + meshFormatName(format) + " file contains no triangles");
+    }
+    if (scene != nullptr) scene = importer.ApplyPostProcessing(aiProcess_ValidateDataStructure);
     if (scene != nullptr) {
       const std::vector<std::vector<unsigned>> corners = polygonCorners(*scene);
       scene = importer.ApplyPostProcessing(aiProcess_Triangulate);

@@ -145,9 +145,8 @@ Error endsEarly(const std::string& name, const PlyElement& e, uint64_t index, co
 }
 
 Error goesOn(const std::string& name, const std::string& what) {
-  return makeError(ErrorCode::kParse, name + ": " + what +
-                                          " after the elements the header declares: it declares fewer than the file "
-                                          "holds");
+  return makeError(ErrorCode::kParse, name + ": more data after the elements the header declares (" + what +
+                                          "): it declares fewer than the file holds");
 }
 
 Status walkBinary(std::span<const uint8_t> body, const std::string& name, const PlyHeader& h) {
@@ -179,7 +178,7 @@ Status walkBinary(std::span<const uint8_t> body, const std::string& name, const 
   while (extra > 0 && (body[at + extra - 1] == '\n' || body[at + extra - 1] == '\r' || body[at + extra - 1] == 0)) {
     --extra;
   }
-  if (extra > 0) return goesOn(name, std::to_string(size - at) + " bytes follow");
+  if (extra > 0) return goesOn(name, std::to_string(size - at) + " bytes");
   return Ok{};
 }
 
@@ -243,7 +242,7 @@ Status walkAscii(std::string_view body, const std::string& name, const PlyHeader
     }
   }
   if (const std::string_view t = tokens.next(); !t.empty()) {
-    return goesOn(name, quoteBytes(t) + " on " + where() + " and what follows it");
+    return goesOn(name, quoteBytes(t) + " on " + where());
   }
   return Ok{};
 }
