@@ -182,27 +182,35 @@ Status walkBinary(std::span<const uint8_t> body, const std::string& name, const 
   return Ok{};
 }
 
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 
-class AsciiTokens {
+// The body's lines, each split into words; blank lines are skipped.
+class AsciiLines {
  public:
-  explicit AsciiTokens(std::string_view text) : text_(text) {}
-  // The next token, or empty at the end; counts lines.
-  std::string_view next() {
-    while (pos_ < text_.size() && isSpace(text_[pos_])) {
-      if (text_[pos_] == '\n') ++line_;
-      ++pos_;
+  explicit AsciiLines(std::string_view text, int first_line) : text_(text), line_(first_line - 1) {}
+  // The words of the next non-blank line; false at the end of the text.
+  bool next(std::vector<std::string_view>& words) {
+    words.clear();
+    while (words.empty() && pos_ < text_.size()) {
+      size_t end = text_.find('\n', pos_);
+      if (end == text_.npos) end = text_.size();
+      ++line_;
+      for (size_t i = pos_; i < end;) {
+        while (i < end && isSpace(text_[i])) ++i;
+        const size_t b = i;
+        while (i < end && !isSpace(text_[i])) ++i;
+        if (i > b) words.push_back(text_.substr(b, i - b));
+      }
+      pos_ = end + 1;
     }
-    const size_t b = pos_;
-    while (pos_ < text_.size() && !isSpace(text_[pos_])) ++pos_;
-    return text_.substr(b, pos_ - b);
+    return !words.empty();
   }
   int64_t line() const { return line_; }
 
  private:
   std::string_view text_;
   size_t pos_ = 0;
-  int64_t line_ = 1;
+  int64_t line_;
 };
 
 bool isNumber(std::string_view t) {
@@ -211,39 +219,51 @@ bool isNumber(std::string_view t) {
   return ec == std::errc() && end == t.data() + t.size();
 }
 
-Error notNumber(const std::string& name, int64_t line, const char* what, std::string_view token) {
-  return makeError(ErrorCode::kParse,
-                   name + ":" + std::to_string(line) + ": PLY " + what + " " + quoteBytes(token) + " is not a number");
-}
-
-Status walkAscii(std::string_view body, const std::string& name, const PlyHeader& h, int header_lines) {
-  AsciiTokens tokens(body);
-  const auto where = [&] { return "line " + std::to_string(tokens.line() + header_lines); };
-  for (const PlyElement& e : h.elements) {
-    for (uint64_t i = 0; i < e.count; ++i) {
-      for (const PlyProperty& p : e.properties) {
-        const std::string_view t = tokens.next();
-        if (t.empty()) return endsEarly(name, e, i, where());
-        if (p.count_size == 0) {
-          if (!isNumber(t)) return notNumber(name, tokens.line() + header_lines, "value", t);
-          continue;
-        }
-        uint64_t n = 0;
-        const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), n);
-        if (ec != std::errc() || end != t.data() + t.size()) {
-          return notNumber(name, tokens.line() + header_lines, "list count", t);
-        }
-        for (uint64_t k = 0; k < n; ++k) {
-          const std::string_view item = tokens.next();
-          if (item.empty()) return endsEarly(name, e, i, where());
-          if (!isNumber(item)) return notNumber(name, tokens.line() + header_lines, "value", item);
-        }
+// One element's line against the header: every list's count a whole number, as many values as the properties and
+// those counts declare, every value a number.
+Status checkAsciiElement(const std::vector<std::string_view>& w, const PlyElement& e, uint64_t index,
+                         const std::string& name, int64_t line) {
+  const std::string where = name + ":" + std::to_string(line) + ": PLY " + e.name + " " + std::to_string(index + 1) +
+                            " of " + std::to_string(e.count);
+  size_t at = 0;
+  for (const PlyProperty& p : e.properties) {
+    uint64_t n = 1;
+    if (p.count_size > 0) {
+      const std::string_view t = at < w.size() ? w[at] : std::string_view();
+      const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), n);
+      if (t.empty() || ec != std::errc() || end != t.data() + t.size()) {
+        return makeError(ErrorCode::kParse, where + ": list count " + quoteBytes(t) + " is not a whole number");
       }
+      ++at;
+    }
+    if (n > w.size() - std::min(at, w.size())) {
+      return makeError(ErrorCode::kParse, where + " has fewer values than the header declares (" +
+                                              std::to_string(w.size()) + "): its counts do not match the data");
+    }
+    for (uint64_t k = 0; k < n; ++k, ++at) {
+      if (!isNumber(w[at])) return makeError(ErrorCode::kParse, where + ": " + quoteBytes(w[at]) + " is not a number");
     }
   }
-  if (const std::string_view t = tokens.next(); !t.empty()) {
-    return goesOn(name, quoteBytes(t) + " on " + where());
+  if (at != w.size()) {
+    return makeError(ErrorCode::kParse, where + " has " + std::to_string(w.size()) +
+                                            " values where the header "
+                                            "declares " +
+                                            std::to_string(at) + ": its counts do not match the data");
   }
+  return Ok{};
+}
+
+// ASCII: one element per line (the format's rule), each with the values its properties declare.
+Status walkAscii(std::string_view body, const std::string& name, const PlyHeader& h, int header_lines) {
+  AsciiLines lines(body, header_lines + 1);
+  std::vector<std::string_view> w;
+  for (const PlyElement& e : h.elements) {
+    for (uint64_t i = 0; i < e.count; ++i) {
+      if (!lines.next(w)) return endsEarly(name, e, i, "after line " + std::to_string(lines.line()));
+      if (Status s = checkAsciiElement(w, e, i, name, lines.line()); !s.ok()) return s;
+    }
+  }
+  if (lines.next(w)) return goesOn(name, "line " + std::to_string(lines.line()));
   return Ok{};
 }
 

@@ -255,15 +255,13 @@ TEST(MeshFile, malformedFilesAreRefusedWithAMessageNamingThem) {
   const std::string tri = "0 0 0\n1 0 0\n0 1 0\n";
   const Refusal cases[] = {
       {"a.ply", plyHeader("ascii", 8, 1) + tri + "3 0 1 2\n", ErrorCode::kParse,
-       "a.ply: PLY data ends in vertex 5 of 8 (line 14): the header declares more elements than the file holds"},
+       "a.ply:13: PLY vertex 4 of 8 has 4 values where the header declares 3: its counts do not match the data"},
       {"b.ply", plyHeader("ascii", 3, 5) + tri + "3 0 1 2\n", ErrorCode::kParse,
-       "b.ply: PLY data ends in face 2 of 5 (line 14): the header declares more elements than the file holds"},
+       "b.ply: PLY data ends in face 2 of 5 (after line 13): the header declares more elements than the file holds"},
       {"c.ply", plyHeader("ascii", 2, 1) + tri + "3 0 1 2\n", ErrorCode::kParse,
-       "c.ply: more data after the elements the header declares ('1' on line 12): it declares fewer than the file "
-       "holds"},
+       "c.ply:12: PLY face 1 of 1 has 3 values where the header declares 1: its counts do not match the data"},
       {"d.ply", plyHeader("ascii", 3, 1) + tri + "3 0 1 2\n3 0 2 1\n", ErrorCode::kParse,
-       "d.ply: more data after the elements the header declares ('3' on line 14): it declares fewer than the file "
-       "holds"},
+       "d.ply: more data after the elements the header declares (line 14): it declares fewer than the file holds"},
       {"e.ply", plyHeader("binary_little_endian", 1000, 2000) + binaryTriangle(), ErrorCode::kParse,
        "e.ply: PLY data ends in vertex 5 of 1000 (byte 49 of the body): the header declares more elements than the "
        "file holds"},
@@ -300,6 +298,29 @@ TEST(MeshFile, malformedFilesAreRefusedWithAMessageNamingThem) {
       EXPECT_EQ(r.error().message, c.message);
     } else {
       EXPECT_EQ(r.error().message.rfind(std::string(c.name) + ": ", 0), 0u) << r.error().message;
+    }
+  }
+}
+
+// tests/data/mesh: the unit cube in every format assimp reads for voxmod, written by tests/data/make_io_data.py
+// independently of assimp's exporters (quads, an embedded glTF buffer, a GLB container, a 3MF in microns).
+TEST(MeshFile, theCubeOfEveryFormatInTestData) {
+  const auto dir = test::sourceDir() / "tests" / "data" / "mesh";
+  for (const char* file :
+       {"cube.obj", "cube_ascii.ply", "cube_binary.ply", "cube.off", "cube.gltf", "cube.glb", "cube_micron.3mf"}) {
+    const MeshFileLoad m = loadOk(dir / file);
+    ASSERT_EQ(m.mesh.triangles.size(), 12u) << file;
+    EXPECT_TRUE(m.topology.watertight()) << file;
+    EXPECT_EQ(m.topology.degenerate_triangles, 0) << file;
+    const bool micron = std::string(file) == "cube_micron.3mf";
+    const double side = micron ? 0.001 : 1.0;  // 1 micron, converted to millimetres
+    EXPECT_NEAR(signedVolume(m.mesh), side * side * side, 1e-6 * side * side * side) << file;
+    EXPECT_EQ(m.mesh.bounds().max, glm::dvec3(double(float(side)))) << file;
+    if (micron) {
+      EXPECT_EQ(m.units, "mm");
+      EXPECT_EQ(m.file_units, "micron");
+      ASSERT_FALSE(m.notes.empty());
+      EXPECT_EQ(m.notes[0], (dir / file).string() + ": unit micron (from the file), converted to millimetres");
     }
   }
 }
