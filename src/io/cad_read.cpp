@@ -5,7 +5,10 @@
 // (each solid carries its instance's location), so every placed part is its own solid.
 //
 // Open CASCADE reads a truncated STEP file only as far as it goes and may keep what it parsed, so voxmod checks the
-// end markers itself first: a STEP file must end with END-ISO-10303-21, an IGES file with its Terminate record.
+// end markers itself first: a STEP file must end with END-ISO-10303-21, an IGES file with its Terminate record. A file
+// whose load leaves errors in the reader's check list (a syntax error, a reference to an entity of the wrong type) is
+// refused too: the transfer would keep what it could, and on a dangling reference Open CASCADE 7.6 crashes (found by
+// tests/fuzz/fuzz_mesh_file.cpp). The real files of ../shared/meshes/cad load without one.
 #include <unistd.h>
 
 #include <algorithm>
@@ -21,6 +24,8 @@
 #include <IGESControl_Reader.hxx>
 #include <IGESData_GlobalSection.hxx>
 #include <IGESData_IGESModel.hxx>
+#include <Interface_Check.hxx>
+#include <Interface_CheckIterator.hxx>
 #include <Interface_Static.hxx>
 #include <STEPControl_Reader.hxx>
 #include <ShapeFix_Shape.hxx>
@@ -28,10 +33,12 @@
 #include <TColStd_SequenceOfAsciiString.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS_Shape.hxx>
+#include <XSControl_WorkSession.hxx>
 #include <gp_Trsf.hxx>
 
 #include "io/cad_model_impl.h"
 #include "io/occt_support.h"
+#include "vox/core/text.h"
 #include "vox/core/units.h"
 #include "vox/io/file_util.h"
 
@@ -87,6 +94,22 @@ Error readFailure(const std::string& name, const char* format, const occt::Reade
   return makeError(ErrorCode::kParse, m);
 }
 
+// The errors the reader's load left in its check list, as one refusal naming the first; Ok when there are none.
+Status checkLoad(const XSControl_Reader& reader, const std::string& name, const char* format) {
+  Interface_CheckIterator checks = reader.WS()->ModelCheckList(Standard_True);
+  int64_t fails = 0;
+  std::string first;
+  for (checks.Start(); checks.More(); checks.Next()) {
+    const Handle(Interface_Check)& check = checks.Value();
+    if (check.IsNull() || check->NbFails() == 0) continue;
+    if (first.empty() && check->CFail(1) != nullptr) first = check->CFail(1);
+    fails += check->NbFails();
+  }
+  if (fails == 0) return Ok{};
+  return makeError(ErrorCode::kParse, name + ": malformed " + format + " file: " + countOf(fails, "error") +
+                                          " (Open CASCADE: " + quoteBytes(first, 160) + ")");
+}
+
 // The schema named in a STEP file's header: "AUTOMOTIVE_DESIGN", "CONFIG_CONTROL_DESIGN", "AP242_...".
 std::string stepSchema(const STEPControl_Reader& reader) {
   const auto model = Handle(StepData_StepModel)::DownCast(reader.Model());
@@ -131,6 +154,7 @@ Status readStep(std::span<const uint8_t> bytes, const std::string& name, const P
   STEPControl_Reader reader;
   std::istringstream stream(std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   if (reader.ReadStream(name.c_str(), stream) != IFSelect_RetDone) return readFailure(name, "STEP", lock);
+  if (Status s = checkLoad(reader, name, "STEP"); !s.ok()) return s;
   TColStd_SequenceOfAsciiString lengths, angles, solid_angles;
   reader.FileUnits(lengths, angles, solid_angles);
   if (lengths.Length() > 0) out.file_units = lengths.Value(1).ToCString();
@@ -146,6 +170,7 @@ Status readIgesFile(const std::filesystem::path& path, const std::string& name, 
   IGESControl_Reader reader;
   reader.SetReadVisible(Standard_True);  // blanked entities are construction geometry
   if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) return readFailure(name, "IGES", lock);
+  if (Status s = checkLoad(reader, name, "IGES"); !s.ok()) return s;
   const Handle(IGESData_IGESModel) model = reader.IGESModel();
   if (!model.IsNull()) {
     const IGESData_GlobalSection& global = model->GlobalSection();

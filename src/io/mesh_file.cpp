@@ -8,6 +8,7 @@
 #include "io/mesh_assimp.h"
 #include "io/mesh_findings.h"
 #include "io/mesh_sniff.h"
+#include "io/off_check.h"
 #include "io/ply_check.h"
 #include "io/zip_package.h"
 #include "vox/core/text.h"
@@ -147,6 +148,8 @@ Result<MeshFileLoad> readWithAssimp(std::span<const uint8_t> bytes, const std::s
   std::vector<uint8_t> package;
   if (format == MeshFormat::kPly) {
     if (auto facts = checkPly(bytes, name); !facts) return facts.error();
+  } else if (format == MeshFormat::kOff) {
+    if (Status s = checkOff(bytes, name); !s.ok()) return s.error();
   } else if (format == MeshFormat::k3mf) {
     auto p = read3mfPackage(bytes, name, memoryLimit(options));
     if (!p) return p.error();

@@ -272,3 +272,6 @@ write(BAD, "step_named.ply", STEP_START + "ENDSEC;\nEND-ISO-10303-21;\n")
 IGES_START = ("a truncated IGES file".ljust(72) + "S      1\n"
               + "1H,,1H;,,,,,,,,,,,,,,,,,,,,,,,,,,,,,;".ljust(72) + "G      1\n")
 write(BAD, "truncated.iges", IGES_START)
+write(BAD, "off_bad_index.off", "OFF\n8 6 0\n" + "".join("%d %d %d\n" % v for v in CUBE_V)
+      + "".join("4 %d %d %d %d\n" % q for q in CUBE_QUADS[:5]) + "4 3 0 4 8\n")
+write(BAD, "off_not_numbers.off", "OFF\n3 1 0\n0 0 0\n1 0 0&1\n0 1 0\n3 0 1 2\n")

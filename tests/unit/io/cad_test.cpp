@@ -250,6 +250,18 @@ TEST(CadFile, truncatedAndBrokenFilesAreRefusedNamingTheFile) {
   EXPECT_EQ(r.error().message.rfind((tmp / "junk.step").string() + ": not a readable STEP file", 0), 0u)
       << r.error().message;
 
+  // A reference that is not one (found by the fuzzer: Open CASCADE 7.6 crashes transferring it).
+  std::string broken = step;
+  const size_t at = broken.find("VERTEX_POINT('',#");
+  ASSERT_NE(at, std::string::npos);
+  broken.erase(at + 16, 1);
+  test::writeFile(tmp / "broken.step", broken);
+  r = loadMeshFile(tmp / "broken.step");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(
+      r.error().message.rfind((tmp / "broken.step").string() + ": malformed STEP file: 1 error (Open CASCADE: ", 0), 0u)
+      << r.error().message;
+
   test::writeIgesFaces(tmp / "box.iges", {{CadShape::kBox, {0, 0, 0}, {1, 1, 1}}});
   const std::string iges = test::readFile(tmp / "box.iges");
   test::writeFile(tmp / "cut.iges", iges.substr(0, iges.size() - 200));

@@ -142,6 +142,8 @@ const Refusal kRefusals[] = {
      "truncated.step: STEP file truncated: it does not end with 'END-ISO-10303-21;'"},
     {"step_named.ply", ErrorCode::kParse,
      "step_named.ply: not a PLY file: it looks like a STEP file (name it .step to read it as one)"},
+    {"off_bad_index.off", ErrorCode::kParse, "off_bad_index.off:16: OFF face 6 refers to vertex '8' of 8"},
+    {"off_not_numbers.off", ErrorCode::kParse, "off_not_numbers.off:4: OFF vertex 2 is not three or more numbers"},
     {"truncated.iges", ErrorCode::kParse,
      "truncated.iges: IGES file truncated: its last line is not a Terminate record ('T' in column 73)"},
 };
