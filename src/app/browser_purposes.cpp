@@ -6,13 +6,17 @@
 #include "app/exports.h"
 #include "app/messages.h"
 #include "app/view_export.h"
+#include "vox/io/mesh_file.h"
 
 namespace vox::app {
 
 std::vector<std::string> browserExtensions(BrowserPurpose purpose) {
   switch (purpose) {
-    case BrowserPurpose::kOpen:
-      return {".stl", ".vxm", ".binvox"};
+    case BrowserPurpose::kOpen: {
+      std::vector<std::string> all = io::meshFileExtensions();
+      all.insert(all.end(), {".vxm", ".binvox"});
+      return all;
+    }
     case BrowserPurpose::kSaveModel:
       return {".vxm", ".binvox"};
     case BrowserPurpose::kExportBinvox:

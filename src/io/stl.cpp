@@ -10,8 +10,9 @@
 //     >= 0x09, so the count would be >= 0x09090909 and the file >= 7.5 GB.
 //  2. else it starts with "solid" (after whitespace / a UTF-8 byte-order mark) and holds no NUL byte -> ASCII.
 //     Text never contains NUL; binary triangle data almost always does (the attribute bytes are usually zero).
-//  3. else a file whose first bytes name another format (PLY, 3MF, STEP, ...) is refused as not an STL, and so is
-//     one whose count bytes are text and do not fit its size (text, but not an ASCII STL).
+//  3. else a file whose first bytes name another format (PLY, 3MF, STEP, ...; src/io/mesh_sniff.cpp) is refused as
+//     not an STL, naming that format, and so is one whose count bytes are text and do not fit its size (text, but
+//     not an ASCII STL).
 //  4. else binary: shorter than the count says -> truncated; longer -> the declared triangles are read and the extra
 //     bytes ignored with a warning (as other STL readers do).
 // ASCII is whitespace-separated: line breaks are not required (a whole file may be one line); a solid's name runs to
@@ -25,6 +26,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "io/mesh_findings.h"
+#include "io/mesh_sniff.h"
 #include "vox/io/file_util.h"
 
 namespace vox::io {
@@ -239,24 +242,6 @@ bool startsWithSolid(std::span<const uint8_t> bytes) {
 
 const char* const kNotAscii = " (it starts with 'solid' but holds binary data, so it is not ASCII)";
 
-// A file of another format, told by its first bytes, so that the message names it rather than a broken STL.
-const char* otherFormat(std::span<const uint8_t> bytes) {
-  const std::string_view head(reinterpret_cast<const char*>(bytes.data()), std::min<size_t>(bytes.size(), 80));
-  const auto starts = [&](std::string_view m) { return head.substr(0, m.size()) == m; };
-  if (starts("ply\n") || starts("ply\r\n")) return "a PLY file";
-  if (starts("PK\x03\x04")) return "a zip archive (3MF is a zip)";
-  if (starts("glTF")) return "a binary glTF (GLB) file";
-  if (starts("ISO-10303-21")) return "a STEP file";
-  if (starts("OFF") && head.size() > 3 && isSpace(uint8_t(head[3]))) return "an OFF file";
-  if (starts("#binvox")) return "a .binvox file (use the .binvox extension)";
-  if (starts("\x89VXM")) return "a .vxm file (use the .vxm extension)";
-  // IGES: 80-column records, the first in the Start section ('S' in column 73, then a sequence number).
-  if (head.size() >= 80 && head[72] == 'S' && head.substr(73, 7).find_first_not_of(" 0123456789") == head.npos) {
-    return "an IGES file";
-  }
-  return nullptr;
-}
-
 // Whether the four bytes of a binary STL's triangle count are all text (whitespace or printable ASCII).
 bool countIsText(std::span<const uint8_t> bytes) {
   for (size_t i = kBinaryHeaderBytes; i < kBinaryPrefixBytes; ++i) {
@@ -300,9 +285,8 @@ Status parseStlMesh(std::span<const uint8_t> bytes, const std::string& name, Stl
     if (Status s = parser.parse(out); !s.ok()) return s;
     if (out.mesh.triangles.empty()) return makeError(ErrorCode::kParse, name + ": ASCII STL contains no triangles");
     if (out.mesh.triangles.size() > kMaxTriangles) return tooManyTriangles(name, out.mesh.triangles.size());
-  } else if (const char* other = otherFormat(bytes)) {
-    return makeError(ErrorCode::kParse, name + ": not an STL file: it looks like " + other +
-                                            ", which voxmod does not read (it reads STL, .vxm and .binvox)");
+  } else if (const ContentKind other = sniffContent(bytes); other.what && other.format != MeshFormat::kStl) {
+    return makeError(ErrorCode::kParse, notWhatItSays(name, MeshFormat::kStl, other));
   } else if (size < kBinaryPrefixBytes) {
     return makeError(ErrorCode::kParse, name + ": not an STL file: " + std::to_string(size) +
                                             " bytes is shorter than a binary STL header (84 bytes)" +
@@ -331,22 +315,8 @@ Status parseStlMesh(std::span<const uint8_t> bytes, const std::string& name, Stl
 
 // Topology (the watertightness check) and the warnings it gives.
 void finishStlLoad(StlLoad& out) {
-  const std::string& name = out.mesh.name;
   out.topology = analyzeTopology(out.mesh);
-  const MeshTopology& t = out.topology;
-  if (t.degenerate_triangles > 0) {
-    out.warnings.push_back(name + ": " + std::to_string(t.degenerate_triangles) +
-                           " degenerate triangles (zero area; kept)");
-  }
-  if (t.closes_when_noise_welded && !t.watertight()) {
-    // Exporter noise (corners that should coincide differing by ~1e-17) is not a hole: information, not a warning.
-    out.notes.push_back(name + ": treated as closed: its " + std::to_string(t.boundary_edges + t.nonmanifold_edges) +
-                        " open edges close when vertices within 1e-9 of the model's size are welded (exporter noise)");
-  } else if (!t.watertight()) {
-    out.warnings.push_back(name + ": not watertight: " + std::to_string(t.boundary_edges) + " boundary edges, " +
-                           std::to_string(t.nonmanifold_edges) +
-                           " non-manifold edges (vertices welded by exact equality)");
-  }
+  addTopologyFindings(out.mesh.name, out.topology, out.warnings, out.notes);
 }
 
 }  // namespace
