@@ -125,12 +125,14 @@ Status buildTree(openvdb::FloatTree& tree, const Dims& dims, const ProgressFn& p
   return Ok{};
 }
 
-openvdb::FloatGrid::Ptr newGrid(const std::string& name, const GridFrame& frame) {
+openvdb::FloatGrid::Ptr newGrid(const std::string& name, const Dims& dims, const GridFrame& frame) {
   auto grid = openvdb::FloatGrid::create(0.0f);
   grid->setName(name);
   grid->setTransform(transformOf(frame));
   grid->setCreator("voxmod");
   grid->insertMeta("units", openvdb::StringMetadata(frame.units));
+  // A VDB grid is unbounded: the lattice it came from is recorded so that a reader knows the full extent.
+  grid->insertMeta("dims", openvdb::Vec3IMetadata(openvdb::Vec3i(dims.nx, dims.ny, dims.nz)));
   return grid;
 }
 
@@ -142,7 +144,7 @@ Result<openvdb::GridPtrVec> buildGrids(const VolumeContent& content, const Progr
   auto part = [&](double f) { return !progress || progress((double(done) + f) / double(volumes)); };
   if (content.voxels) {
     const VoxelGrid& g = *content.voxels;
-    auto grid = newGrid("voxels", g.frame());
+    auto grid = newGrid("voxels", g.dims(), g.frame());
     grid->setGridClass(openvdb::GRID_FOG_VOLUME);
     auto block = [&](int32_t x0, int32_t y0, int32_t z0, Slab& s) { addVoxelBlock(g, x0, y0, z0, s); };
     if (Status s = buildTree(grid->tree(), g.dims(), part, block); !s) return s.error();
@@ -151,7 +153,7 @@ Result<openvdb::GridPtrVec> buildGrids(const VolumeContent& content, const Progr
   }
   for (const NamedField& nf : content.fields) {
     const ScalarField& f = *nf.field;
-    auto grid = newGrid(nf.name, f.frame);
+    auto grid = newGrid(nf.name, f.dims, f.frame);
     auto block = [&](int32_t x0, int32_t y0, int32_t z0, Slab& s) { addFieldBlock(f, x0, y0, z0, s); };
     if (Status s = buildTree(grid->tree(), f.dims, part, block); !s) return s.error();
     grids.push_back(grid);

@@ -8,8 +8,9 @@
 // take it as a density volume. A BoolGrid would be smaller but is a mask, not a density, to both. Index (i, j, k)
 // of every grid is voxel (i, j, k); the transform maps it to the voxel's centre (scale = voxel size, translation =
 // the centre of voxel (0, 0, 0)); each grid carries the units as string metadata "units" ("mm", ..., "model" when
-// unknown). 8^3 blocks that are entirely filled are stored as active tiles, so a solid part costs little. Written
-// with OpenVDB's default compression (Blosc).
+// unknown) and the grid's dims (nx, ny, nz) as vec3i metadata "dims" (a VDB grid itself has no bounds). 8^3 blocks that
+// are entirely filled are stored as active tiles, so a solid part costs little. Written with OpenVDB's default
+// compression (Blosc).
 #include <cstdint>
 #include <vector>
 

@@ -52,6 +52,7 @@ TEST(Vdb, openVdbReadsTheVoxelsWithTheirTransformAndUnits) {
   const openvdb::Vec3d c = v->indexToWorld(openvdb::Coord(5, 3, 2));
   EXPECT_NEAR(c.x(), g.frame().voxelCentre(5, 3, 2).x, 1e-12);
   EXPECT_EQ(v->metaValue<std::string>("units"), "mm");
+  EXPECT_EQ(v->metaValue<openvdb::Vec3i>("dims"), openvdb::Vec3i(70, 19, 11));
   auto acc = v->getConstAccessor();
   for (int32_t z = 0; z < g.nz(); ++z)
     for (int32_t y = 0; y < g.ny(); ++y)
