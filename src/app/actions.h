@@ -24,6 +24,8 @@ enum class ActionId {
   kExportSectionPng,
   kExportXrayPng,
   kExportXrayCsv,
+  kExportVolume,
+  kExportThickness,
   kExportSize,
   kQuit,
   kUndo,
