@@ -77,19 +77,6 @@ void reportHotSpots(const std::vector<HotSpot>& spots, int32_t shown, Output& ou
   }
 }
 
-// Empty when `path` names a volume format that holds scalar fields; otherwise the message refusing it.
-std::string fieldOutputProblem(const std::string& path) {
-  const auto format = io::volumeFormatOf(path);
-  if (format && io::holdsFields(*format)) return {};
-  return path + ": scalar fields are written as " + io::volumeExtensionList(true) +
-         (format ? " (a .vox file holds voxels only)" : "");
-}
-
-// A field as the volume file `path` names (its format checked by fieldOutputProblem).
-Result<std::vector<uint8_t>> encodeField(const std::string& name, const ScalarField& field, const std::string& path) {
-  return io::encodeVolume(io::oneField(name, field), *io::volumeFormatOf(path), path, terminalProgress("writing"));
-}
-
 // The section PNG's bytes: the thickness map with its colour bar and legend.
 Result<std::vector<uint8_t>> sectionPng(const Thickness& t, const SectionParams& p, const std::string& units,
                                         const ThicknessOptions& o) {
@@ -145,7 +132,7 @@ int runThickness(const ThicknessOptions& o) {
 
   std::vector<io::PendingFile> files;
   if (!o.out.empty()) {
-    auto bytes = encodeField("thickness", thicknessField(*thickness), o.out);
+    auto bytes = encodeFieldFile("thickness", thicknessField(*thickness), o.out, terminalProgress("writing"));
     if (!bytes) return out.fail(bytes.error());
     files.push_back({o.out, std::move(bytes).value()});
   }
@@ -156,7 +143,8 @@ int runThickness(const ThicknessOptions& o) {
       if (!c) return out.fail(c.error());
       clearance = std::move(c).value();
     }
-    auto bytes = encodeField("distance", distanceField(*distance, clearance ? &*clearance : nullptr), o.distance_out);
+    auto bytes = encodeFieldFile("distance", distanceField(*distance, clearance ? &*clearance : nullptr),
+                                 o.distance_out, terminalProgress("writing"));
     if (!bytes) return out.fail(bytes.error());
     files.push_back({o.distance_out, std::move(bytes).value()});
   }

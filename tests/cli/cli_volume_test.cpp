@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/test_support.h"
+#include "vox/io/nrrd.h"
 #include "vox/io/stl.h"
 
 namespace vox {
@@ -55,6 +56,36 @@ TEST_F(CliVolume, thicknessWritesItsFieldsAsVolumesAndRefusesVoxOnlyFormats) {
     EXPECT_NE(refused.err.find(".nrrd, .vti or .vdb"), std::string::npos) << refused.err;
     EXPECT_FALSE(std::filesystem::exists(path(bad)));
   }
+}
+
+// The 10^3 block of the unit cube at R = 10: 5 skin layers; every ray along an axis crosses 10 voxels of 0.1.
+TEST_F(CliVolume, peelWritesTheDepthAndXrayTheRaysAsVolumes) {
+  auto peel = runVoxmod(
+      {"peel", box_stl(), "--res", "10", "--all", "--depth", path("depth.nrrd"), "-o", path("core.vxm"), "--json"});
+  ASSERT_EQ(peel.exit_code, 0) << peel.err;
+  EXPECT_EQ(json::parse(peel.out)["depth"], path("depth.nrrd"));
+  EXPECT_TRUE(std::filesystem::exists(path("core.vxm")));
+  auto depth = io::loadNrrdField(path("depth.nrrd"));
+  ASSERT_TRUE(depth.ok()) << depth.error().message;
+  EXPECT_EQ(depth->at(0, 0, 0), 1.0f);  // the outer skin
+  EXPECT_EQ(depth->at(4, 5, 5), 5.0f);  // the core
+  EXPECT_EQ(depth->at(2, 5, 5), 3.0f);
+
+  auto xray = runVoxmod({"xray", box_stl(), "--res", "10", "--axis", "y", "--mode", "total", "-o", path("x.png"),
+                         "--volume", path("x.nrrd")});
+  ASSERT_EQ(xray.exit_code, 0) << xray.err;
+  auto slab = io::loadNrrdField(path("x.nrrd"));
+  ASSERT_TRUE(slab.ok()) << slab.error().message;
+  EXPECT_EQ(slab->dims, (Dims{10, 1, 10}));
+  for (float v : slab->values) EXPECT_NEAR(v, 1.0f, 1e-6f);
+
+  EXPECT_EQ(runVoxmod({"peel", box_stl(), "--res", "10", "--all", "--depth", path("d.vox")}).exit_code, 1);
+  EXPECT_EQ(runVoxmod({"peel", box_stl(), "--res", "10", "--distance", "0.1", "--depth", path("d.vti")}).exit_code, 1);
+  EXPECT_EQ(runVoxmod({"xray", box_stl(), "--res", "10", "--axis", "y", "--mode", "total", "-o", path("y.png"),
+                       "--volume", path("y.vox")})
+                .exit_code,
+            1);
+  EXPECT_FALSE(std::filesystem::exists(path("y.png")));
 }
 
 TEST_F(CliVolume, anUnwritableOutputIsExitTwoNamingTheFileAndLeavesNothing) {
