@@ -175,7 +175,12 @@ Result<std::vector<uint8_t>> encodeVdb(const VolumeContent& content, const Progr
     std::ostringstream out(std::ios_base::binary);
     openvdb::MetaMap file_meta;
     file_meta.insertMeta("creator", openvdb::StringMetadata("voxmod"));
-    openvdb::io::Stream(out).write(*grids, file_meta);
+    openvdb::io::Stream stream(out);
+    // The per-grid statistics OpenVDB adds by default (file_bbox_min/max, file_voxel_count, file_mem_bytes) are
+    // computed by TBB tasks; they are optional metadata, and leaving them out keeps the writer on the calling thread
+    // (the window's export job, and the thread sanitizer that cannot see TBB's synchronisation).
+    stream.setGridStatsMetadataEnabled(false);
+    stream.write(*grids, file_meta);
     if (!out) return makeError(ErrorCode::kIo, "OpenVDB: the file could not be written to memory");
     std::string bytes = std::move(out).str();
     if (progress && !progress(1.0)) return makeError(ErrorCode::kCancelled, "cancelled");
