@@ -15,6 +15,7 @@
 #include <string>
 #include <utility>
 
+#include <oneapi/tbb/global_control.h>
 #include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
 
@@ -169,18 +170,17 @@ Result<std::vector<uint8_t>> encodeVdb(const VolumeContent& content, const Progr
     return makeError(ErrorCode::kInvalidArgument, why);
   }
   try {
+    // OpenVDB runs some of its work as TBB tasks (the file's statistics, freeing a tree). Here they stay on the
+    // calling thread: the trees are built in parallel above, the window already runs the export as a background job
+    // beside its own threads, and the thread sanitizer cannot follow TBB's synchronisation between its workers.
+    const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
     initializeOpenVdb();
     auto grids = buildGrids(content, progress);
     if (!grids) return grids.error();
     std::ostringstream out(std::ios_base::binary);
     openvdb::MetaMap file_meta;
     file_meta.insertMeta("creator", openvdb::StringMetadata("voxmod"));
-    openvdb::io::Stream stream(out);
-    // The per-grid statistics OpenVDB adds by default (file_bbox_min/max, file_voxel_count, file_mem_bytes) are
-    // computed by TBB tasks; they are optional metadata, and leaving them out keeps the writer on the calling thread
-    // (the window's export job, and the thread sanitizer that cannot see TBB's synchronisation).
-    stream.setGridStatsMetadataEnabled(false);
-    stream.write(*grids, file_meta);
+    openvdb::io::Stream(out).write(*grids, file_meta);
     if (!out) return makeError(ErrorCode::kIo, "OpenVDB: the file could not be written to memory");
     std::string bytes = std::move(out).str();
     if (progress && !progress(1.0)) return makeError(ErrorCode::kCancelled, "cancelled");

@@ -10,8 +10,7 @@
 // the centre of voxel (0, 0, 0)); each grid carries the units as string metadata "units" ("mm", ..., "model" when
 // unknown) and the grid's dims (nx, ny, nz) as vec3i metadata "dims" (a VDB grid itself has no bounds). 8^3 blocks that
 // are entirely filled are stored as active tiles, so a solid part costs little. Written with OpenVDB's default
-// compression (Blosc), without its optional per-grid statistics (file_bbox_min/max, file_voxel_count), which it
-// computes on TBB threads: readers compute them when they need them.
+// compression (Blosc) and its per-grid statistics (file_bbox_min/max, file_voxel_count, file_mem_bytes).
 #include <cstdint>
 #include <vector>
 
