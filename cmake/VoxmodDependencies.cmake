@@ -35,6 +35,21 @@ target_link_libraries(OCCT::occt INTERFACE TKSTEP TKSTEPBase TKIGES TKXSBase TKS
 add_library(OCCT::primitives INTERFACE IMPORTED)
 target_link_libraries(OCCT::primitives INTERFACE OCCT::occt TKPrim TKBO)
 
+# Volume export (docs/dependencies.md). libvtk9-dev: VTK image data (.vti) through VTK's own XML writer; only the
+# modules the writer needs.
+find_package(VTK REQUIRED COMPONENTS CommonCore CommonDataModel IOXML)
+# libopenvdb-dev: OpenVDB volumes (.vdb). Debian's FindOpenVDB.cmake requires Boost's iostreams CMake package, which
+# libopenvdb-dev does not depend on (libopenvdb.so links it itself), so the library and headers are found directly.
+# OpenVDB's headers use TBB and Imath's half (libtbb-dev, libimath-dev: dependencies of libopenvdb-dev).
+find_package(TBB REQUIRED)
+find_package(Imath REQUIRED)
+find_library(OPENVDB_LIBRARY openvdb REQUIRED)
+find_path(OPENVDB_INCLUDE_DIR openvdb/openvdb.h REQUIRED)
+add_library(OpenVDB::openvdb UNKNOWN IMPORTED)
+set_target_properties(OpenVDB::openvdb PROPERTIES IMPORTED_LOCATION "${OPENVDB_LIBRARY}"
+                                                  INTERFACE_INCLUDE_DIRECTORIES "${OPENVDB_INCLUDE_DIR}"
+                                                  INTERFACE_LINK_LIBRARIES "TBB::tbb;Imath::Imath")
+
 set(OpenGL_GL_PREFERENCE GLVND)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)   # libopengl-dev, libegl-dev
 find_package(glfw3 3.3 REQUIRED)                      # libglfw3-dev

@@ -11,6 +11,8 @@ packages=(
   libassimp-dev libminizip-dev libexpat1-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  # volume export: VTK image data (.vti) and OpenVDB (.vdb); see docs/dependencies.md
+  libvtk9-dev libopenvdb-dev
   # OpenGL / EGL (glvnd + Mesa llvmpipe); see docs/dependencies.md
   libegl-dev libopengl-dev libgl-dev libegl1 libegl-mesa0 libopengl0 libgl1 libglx-mesa0 libgl1-mesa-dri
   # window tests and screenshots

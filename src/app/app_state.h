@@ -160,7 +160,9 @@ enum class BrowserPurpose {
   kExportViewPng,
   kExportSectionPng,
   kExportXrayPng,
-  kExportXrayCsv
+  kExportXrayCsv,
+  kExportVolume,     // the model as .vti, .vdb, .nrrd or .vox (export_volume.h)
+  kExportThickness,  // the thickness volume as .vti, .vdb or .nrrd
 };
 
 struct FileBrowser {
@@ -296,6 +298,7 @@ struct AppState {
   AsyncValue<uint64_t, MassProperties> mass;                    // keyed by model_version
   AsyncValue<XrayKey, std::shared_ptr<const XrayResult>> xray_result;
   AsyncValue<uint64_t, std::shared_ptr<const ThicknessResult>> thickness;  // keyed by model_version
+  Job<std::filesystem::path> volume_export_job;  // File > Export volume: the file being written (export_volume.h)
 
   // Derived images (main thread: sections are cheap enough to compute while a slider moves).
   SectionKey section_key;

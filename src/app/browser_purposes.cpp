@@ -3,6 +3,7 @@
 #include <system_error>
 
 #include "app/document.h"
+#include "app/export_volume.h"
 #include "app/exports.h"
 #include "app/messages.h"
 #include "app/view_export.h"
@@ -30,6 +31,10 @@ std::vector<std::string> browserExtensions(BrowserPurpose purpose) {
       return {".png"};
     case BrowserPurpose::kExportXrayCsv:
       return {".csv"};
+    case BrowserPurpose::kExportVolume:
+      return {".vti", ".vdb", ".nrrd", ".vox"};
+    case BrowserPurpose::kExportThickness:
+      return {".vti", ".vdb", ".nrrd"};
   }
   return {};
 }
@@ -54,6 +59,11 @@ const char* browserTitle(BrowserPurpose purpose) {
       return "Export the X-ray image as PNG";
     case BrowserPurpose::kExportXrayCsv:
       return "Export the X-ray thickness as CSV";
+    case BrowserPurpose::kExportVolume:
+      return "Export the model as a volume: .vti (ParaView), .vdb (Blender, Houdini), .nrrd (3D Slicer), .vox "
+             "(MagicaVoxel)";
+    case BrowserPurpose::kExportThickness:
+      return "Export the thickness as a volume: .vti or .vdb (voxels, thickness, distance), .nrrd (thickness)";
   }
   return "";
 }
@@ -99,6 +109,12 @@ void openBrowser(AppState& state, BrowserPurpose purpose) {
       b.file_name =
           stem + "_xray_" + axisName(state.xray.params.axis) + "_" + xrayModeName(state.xray.params.mode) + ".csv";
       break;
+    case BrowserPurpose::kExportVolume:
+      b.file_name = stem + ".vti";
+      break;
+    case BrowserPurpose::kExportThickness:
+      b.file_name = stem + "_thickness.vti";
+      break;
   }
 }
 
@@ -142,11 +158,18 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
     case BrowserPurpose::kExportXrayCsv:
       ok = exportXrayCsv(state, path);
       break;
+    case BrowserPurpose::kExportVolume:  // written in the background: it says where it wrote when done
+      ok = startVolumeExport(state, path);
+      break;
+    case BrowserPurpose::kExportThickness:
+      ok = startThicknessExport(state, path);
+      break;
   }
   if (ok) {
     state.settings.last_directory = std::filesystem::absolute(path).parent_path().string();
     // Say where a file went (the name typed may have been relative, or the directory not the one in mind).
-    if (purpose != BrowserPurpose::kOpen) {
+    const bool in_background = purpose == BrowserPurpose::kExportVolume || purpose == BrowserPurpose::kExportThickness;
+    if (purpose != BrowserPurpose::kOpen && !in_background) {
       state.status_message = "Wrote " + std::filesystem::absolute(path).lexically_normal().string();
       state.status_since = nowSeconds();
     }
