@@ -193,6 +193,9 @@ class CornerIndex {
     return size_t(block_rank_[w / 8] + word_rank_[w] +
                   uint64_t(std::popcount(bits_[w] & ((uint64_t(1) << (key & 63)) - 1))));
   }
+  size_t words() const { return bits_.size(); }
+  uint64_t word(size_t w) const { return bits_[w]; }
+  size_t wordRank(size_t w) const { return size_t(block_rank_[w / 8] + word_rank_[w]); }
   uint32_t& base(size_t rank) { return base_[rank]; }
   uint32_t base(size_t rank) const { return base_[rank]; }
   uint8_t& cfg(size_t rank) { return cfg_[rank]; }
@@ -317,9 +320,8 @@ void Mesher::makeCorner(const P3& p) {
   const size_t i = corners_->rank(cornerIndex(p));
   if (corners_->base(i) != CornerIndex::kNone) return;
   // the first rectangle with a corner here makes the corner's vertices, one per fan
-  const int cfg = cfgAt(p);
+  const int cfg = corners_->cfg(i);
   corners_->base(i) = uint32_t(mesh_.vertices.size());
-  corners_->cfg(i) = uint8_t(cfg);
   const glm::dvec3 at{double(p[0]), double(p[1]), double(p[2])};
   const int fans = fans_.count[cfg];
   for (int f = 0; f < fans; ++f) add(fans > 1 ? at + kSplitMove * fans_.move[cfg][f] : at);
@@ -426,6 +428,17 @@ Result<IndexedMesh> Mesher::build() {
     corners_->mark(cornerIndex(point(r.a, r.c, r.u0, r.v1)));
   }
   corners_->freeze();
+  // every corner's configuration, in parallel over the bit words
+  const int64_t words = int64_t(corners_->words()), nx1 = g_.nx() + 1, ny1 = g_.ny() + 1;
+  parallelChunks(0, words, 1 << 12, threadsFor(int64_t(rects_.size()) * 16), [&](int, int64_t w0, int64_t w1) {
+    size_t i = corners_->wordRank(size_t(w0));
+    for (int64_t w = w0; w < w1; ++w) {
+      for (uint64_t t = corners_->word(size_t(w)); t; t &= t - 1) {
+        const int64_t key = w * 64 + std::countr_zero(t);
+        corners_->cfg(i++) = uint8_t(cfgAt(P3{key % nx1, (key / nx1) % ny1, key / (nx1 * ny1)}));
+      }
+    }
+  });
   for (const Rect& r : rects_) {
     makeCorner(point(r.a, r.c, r.u0, r.v0));
     makeCorner(point(r.a, r.c, r.u1, r.v0));
