@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <optional>
@@ -220,7 +221,11 @@ class Mesher {
   SurfaceMeshStats stats;
 
  private:
-  void addPlane(int a, int32_t c, bool neg, std::vector<uint64_t>& img, int64_t rows, int64_t words, int shift);
+  // The rectangles of one face image, appended to `out`; returns its voxel faces.
+  int64_t addPlane(int a, int32_t c, bool neg, std::vector<uint64_t>& img, int64_t rows, int64_t words, int shift,
+                   std::vector<Rect>& out) const;
+  // Z (a = 2) or Y (a = 1) planes, in parallel over blocks of planes, appended in plane order.
+  bool collectPlanes(int a, const ProgressFn& progress);
   int cfgAt(const P3& p) const {
     int cfg = 0;
     for (int k = 0; k < 8; ++k)
@@ -257,22 +262,29 @@ class Mesher {
   IndexedMesh mesh_;
 };
 
-void Mesher::addPlane(int a, int32_t c, bool neg, std::vector<uint64_t>& img, int64_t rows, int64_t words, int shift) {
-  stats.voxel_faces +=
-      rectangles(img, rows, words, params_.merge_coplanar, [&](int64_t b0, int64_t b1, int64_t r0, int64_t r1) {
-        rects_.push_back(Rect{int8_t(a), neg, c, int32_t(b0 - shift), int32_t(b1 - shift), int32_t(r0), int32_t(r1)});
-      });
+int64_t Mesher::addPlane(int a, int32_t c, bool neg, std::vector<uint64_t>& img, int64_t rows, int64_t words, int shift,
+                         std::vector<Rect>& out) const {
+  return rectangles(img, rows, words, params_.merge_coplanar, [&](int64_t b0, int64_t b1, int64_t r0, int64_t r1) {
+    out.push_back(Rect{int8_t(a), neg, c, int32_t(b0 - shift), int32_t(b1 - shift), int32_t(r0), int32_t(r1)});
+  });
 }
 
-bool Mesher::collect(const ProgressFn& progress) {
-  const int64_t nx = g_.nx(), ny = g_.ny(), nz = g_.nz(), wpr = g_.wordsPerRow();
-  std::vector<uint64_t> pos, neg;
-  // Z planes (rows y, bits padded x) and Y planes (rows z, bits padded x).
-  for (int a : {2, 1}) {
-    const int64_t planes = (a == 2 ? nz : ny) + 1, rows = a == 2 ? ny : nz;
-    for (int64_t c = 0; c < planes; ++c) {
-      pos.assign(size_t(rows * wpr), 0);
-      neg.assign(size_t(rows * wpr), 0);
+bool Mesher::collectPlanes(int a, const ProgressFn& progress) {
+  const int64_t wpr = g_.wordsPerRow();
+  const int64_t planes = (a == 2 ? g_.nz() : g_.ny()) + 1, rows = a == 2 ? g_.ny() : g_.nz();
+  constexpr int64_t kGrain = 8;
+  struct Block {
+    std::vector<Rect> rects;
+    int64_t faces = 0;
+  };
+  std::vector<Block> blocks(size_t((planes + kGrain - 1) / kGrain));
+  std::atomic<bool> cancelled{false};
+  std::atomic<int64_t> done{0};
+  parallelChunks(0, planes, kGrain, threadsFor(planes * rows * wpr), [&](int t, int64_t c0, int64_t c1) {
+    if (cancelled.load(std::memory_order_relaxed)) return;
+    Block& block = blocks[size_t(c0 / kGrain)];
+    std::vector<uint64_t> pos(size_t(rows * wpr)), neg(size_t(rows * wpr));
+    for (int64_t c = c0; c < c1; ++c) {
       for (int64_t r = 0; r < rows; ++r) {
         const uint64_t* lo = a == 2 ? g_.rowWords(int32_t(r), int32_t(c - 1)) : g_.rowWords(int32_t(c - 1), int32_t(r));
         const uint64_t* hi = a == 2 ? g_.rowWords(int32_t(r), int32_t(c)) : g_.rowWords(int32_t(c), int32_t(r));
@@ -281,36 +293,57 @@ bool Mesher::collect(const ProgressFn& progress) {
           neg[size_t(r * wpr + w)] = ~lo[w] & hi[w];
         }
       }
-      addPlane(a, int32_t(c), false, pos, rows, wpr, 1);
-      addPlane(a, int32_t(c), true, neg, rows, wpr, 1);
-      if ((c & 63) == 0 && progress &&
-          !progress(a == 2 ? 0.25 * double(c) / double(planes) : 0.25 + 0.25 * double(c) / double(planes)))
-        return false;
+      block.faces += addPlane(a, int32_t(c), false, pos, rows, wpr, 1, block.rects);
+      block.faces += addPlane(a, int32_t(c), true, neg, rows, wpr, 1, block.rects);
     }
+    const int64_t d = done.fetch_add(c1 - c0) + (c1 - c0);
+    if (t == 0 && progress && !progress((a == 2 ? 0.0 : 0.25) + 0.25 * double(d) / double(planes))) cancelled = true;
+  });
+  if (cancelled) return false;
+  for (Block& b : blocks) {
+    rects_.insert(rects_.end(), b.rects.begin(), b.rects.end());
+    stats.voxel_faces += b.faces;
   }
+  return true;
+}
+
+bool Mesher::collect(const ProgressFn& progress) {
+  const int64_t nx = g_.nx(), ny = g_.ny(), nz = g_.nz(), wpr = g_.wordsPerRow();
+  // Z planes (rows y, bits padded x) and Y planes (rows z, bits padded x).
+  for (int a : {2, 1})
+    if (!collectPlanes(a, progress)) return false;
   // X planes: rows z, bits y, from the bit changes along each row; 64 planes at a time (those of one word of the
-  // rows), so the images hold 64 planes, not all of them.
-  const int64_t wy = (ny + 63) / 64;
-  std::vector<std::vector<uint64_t>> xpos(64), xneg(64);
-  for (int64_t w = 0; w < wpr && w * 64 <= nx; ++w) {
-    for (int64_t z = 0; z < nz; ++z) {
-      for (int64_t y = 0; y < ny; ++y) {
-        const uint64_t* row = g_.rowWords(int32_t(y), int32_t(z));
-        const uint64_t next = w + 1 < wpr ? row[w + 1] : 0;
-        for (uint64_t t = row[w] ^ (row[w] >> 1 | next << 63); t; t &= t - 1) {
-          const int bit = std::countr_zero(t);  // plane x = 64w + bit: voxels x - 1 (this bit) and x (the next)
-          auto& img = (row[w] >> bit & 1) ? xpos[size_t(bit)] : xneg[size_t(bit)];
-          if (img.empty()) img.assign(size_t(nz * wy), 0);
-          img[size_t(z * wy + (y >> 6))] |= uint64_t(1) << (y & 63);
+  // rows), so the images hold 64 planes, not all of them; the words of the rows in parallel, appended in order.
+  const int64_t wy = (ny + 63) / 64, xwords = std::min(wpr, nx / 64 + 1);
+  std::vector<std::vector<Rect>> xrects(static_cast<size_t>(xwords));
+  std::vector<int64_t> xfaces(static_cast<size_t>(xwords), 0);
+  parallelChunks(0, xwords, 1, threadsFor(nz * ny * xwords), [&](int, int64_t w0, int64_t w1) {
+    std::vector<std::vector<uint64_t>> xpos(64), xneg(64);
+    for (int64_t w = w0; w < w1; ++w) {
+      for (int64_t z = 0; z < nz; ++z) {
+        for (int64_t y = 0; y < ny; ++y) {
+          const uint64_t* row = g_.rowWords(int32_t(y), int32_t(z));
+          const uint64_t next = w + 1 < wpr ? row[w + 1] : 0;
+          for (uint64_t t = row[w] ^ (row[w] >> 1 | next << 63); t; t &= t - 1) {
+            const int bit = std::countr_zero(t);  // plane x = 64w + bit: voxels x - 1 (this bit) and x (the next)
+            auto& img = (row[w] >> bit & 1) ? xpos[size_t(bit)] : xneg[size_t(bit)];
+            if (img.empty()) img.assign(size_t(nz * wy), 0);
+            img[size_t(z * wy + (y >> 6))] |= uint64_t(1) << (y & 63);
+          }
         }
       }
+      auto& out = xrects[size_t(w)];
+      for (int bit = 0; bit < 64; ++bit) {
+        const auto c = int32_t(w * 64 + bit);
+        if (!xpos[size_t(bit)].empty()) xfaces[size_t(w)] += addPlane(0, c, false, xpos[size_t(bit)], nz, wy, 0, out);
+        if (!xneg[size_t(bit)].empty()) xfaces[size_t(w)] += addPlane(0, c, true, xneg[size_t(bit)], nz, wy, 0, out);
+        // rectangles() leaves the images cleared, ready for the next 64 planes
+      }
     }
-    for (int bit = 0; bit < 64; ++bit) {
-      const auto c = int32_t(w * 64 + bit);
-      if (!xpos[size_t(bit)].empty()) addPlane(0, c, false, xpos[size_t(bit)], nz, wy, 0);
-      if (!xneg[size_t(bit)].empty()) addPlane(0, c, true, xneg[size_t(bit)], nz, wy, 0);
-      // rectangles() leaves the images cleared, ready for the next 64 planes
-    }
+  });
+  for (int64_t w = 0; w < xwords; ++w) {
+    rects_.insert(rects_.end(), xrects[size_t(w)].begin(), xrects[size_t(w)].end());
+    stats.voxel_faces += xfaces[size_t(w)];
   }
   stats.rectangles = int64_t(rects_.size());
   return !progress || progress(0.6);
