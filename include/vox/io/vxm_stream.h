@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 
+#include "vox/core/progress.h"
 #include "vox/core/result.h"
 #include "vox/core/voxel_grid.h"
 #include "vox/io/file_util.h"
@@ -71,6 +72,16 @@ Status readVxmInWindows(const std::filesystem::path& path, int32_t layers, int32
 // Time: the passes, each decoding the whole .vxm body; memory: the block, one window.
 Status convertVxmToBinvox(const std::filesystem::path& vxm, const std::filesystem::path& binvox, uint64_t buffer_bytes,
                           int32_t window_layers);
+
+// A coarse copy of a .vxm file's grid, for looking at a grid too large for memory (the window opens such a file so):
+// each block of level x level x level voxels becomes one voxel, filled when any of its voxels is (so walls thinner
+// than a block stay visible), dims ceil(n / level), voxel size level x h, the same origin, units and source. Read in
+// windows of `level` layers; memory: the coarse grid, one window, and one row of words per coarse row.
+// Fails with the reader's errors, or kCancelled when `progress` says so.
+Result<VoxelGrid> readVxmCoarse(const std::filesystem::path& path, int32_t level, const ProgressFn& progress = {});
+// The smallest power of two level (1, 2, 4, ..., 64) whose coarse grid of a grid of these dims takes at most
+// `bytes` (estimateGridBytes); 64 when none does.
+int32_t coarseLevelFor(const Dims& dims, uint64_t bytes);
 
 // Layers of a grid of these dims that fit in `bytes` (at least 1): for choosing window sizes.
 int32_t layersWithin(const Dims& dims, uint64_t bytes);

@@ -119,3 +119,33 @@ TEST(VxmStream, binvoxInPassesIsTheInMemoryEncoding) {
 
 }  // namespace
 }  // namespace vox
+
+namespace vox {
+namespace {
+
+TEST(VxmStream, coarseCopyFillsEachBlockThatHoldsAVoxel) {
+  test::TempDir tmp;
+  VoxelGrid g = test::randomGrid(Dims{150, 21, 13}, 0.01, 3);
+  g.frame().voxel_size = 0.5;
+  ASSERT_TRUE(io::saveVxm(g, tmp / "g.vxm").ok());
+  for (int32_t level : {1, 2, 3, 4, 64}) {
+    SCOPED_TRACE(level);
+    auto c = io::readVxmCoarse(tmp / "g.vxm", level);
+    ASSERT_TRUE(c.ok()) << c.error().message;
+    EXPECT_EQ(c->dims(), (Dims{(150 + level - 1) / level, (21 + level - 1) / level, (13 + level - 1) / level}));
+    EXPECT_DOUBLE_EQ(c->voxelSize(), 0.5 * level);
+    VoxelGrid expected(c->dims());
+    for (int32_t z = 0; z < g.nz(); ++z)
+      for (int32_t y = 0; y < g.ny(); ++y)
+        for (int32_t x = 0; x < g.nx(); ++x)
+          if (g.get(x, y, z)) expected.set(x / level, y / level, z / level);
+    for (int32_t z = 0; z < c->nz(); ++z)
+      for (int32_t y = 0; y < c->ny(); ++y)
+        for (int32_t x = 0; x < c->nx(); ++x) ASSERT_EQ(c->get(x, y, z), expected.get(x, y, z)) << x << " " << y;
+  }
+  EXPECT_EQ(io::coarseLevelFor(Dims{4096, 4096, 4096}, uint64_t(2) << 30), 2);  // 2048^3 bits and padding
+  EXPECT_EQ(io::coarseLevelFor(Dims{100, 100, 100}, uint64_t(1) << 30), 1);
+}
+
+}  // namespace
+}  // namespace vox
