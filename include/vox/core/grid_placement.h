@@ -9,7 +9,7 @@
 
 namespace vox {
 
-inline constexpr int32_t kMaxResolution = 4096;
+inline constexpr int32_t kMaxResolution = 16384;  // VoxelGrid::kMaxDim; past about 4096 only a streamed .vxm fits
 
 struct GridPlacement {
   Dims dims;
