@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
+#include <sstream>
 #include <thread>
 
 #include <nlohmann/json.hpp>
@@ -400,6 +402,88 @@ TEST(CliBatch, mpiRanksWriteWhatOneProcessWrites) {
   for (size_t i = 0; i < ra.size(); ++i) {
     ra[i].erase("seconds"), rb[i].erase("seconds"), ra[i].erase("output"), rb[i].erase("output");
     EXPECT_EQ(ra[i], rb[i]) << i;
+  }
+}
+
+// A rank killed (SIGKILL) in the middle of an MPI batch: the job ends with an error, the report lists the files
+// finished before (each complete), no other file is there, and --resume converts the rest without redoing those.
+TEST(CliBatch, mpiRankKilledInTheMiddleThenResumed) {
+  VOX_REQUIRE_SHARED(shared);
+  if (std::system("command -v mpirun >/dev/null 2>&1") != 0) {
+    if (test::inCI()) FAIL() << "mpirun (openmpi-bin) is missing in CI";
+    GTEST_SKIP() << "mpirun not found (openmpi-bin); skipping";
+  }
+  TempDir tmp;
+  // The shared meshes three times over (links in three directories): enough work to kill a rank in the middle.
+  std::vector<std::string> inputs;
+  for (const char* copy : {"a", "b", "c"}) {
+    fs::create_directories(tmp / "in" / copy);
+    for (const std::string& mesh : sharedMeshes(shared)) {
+      const fs::path link = tmp / "in" / copy / fs::path(mesh).filename();
+      fs::create_symlink(mesh, link);
+      inputs.push_back(link.string());
+    }
+  }
+  const fs::path out = tmp / "out";
+  std::vector<std::string> args = {"mpirun", "--oversubscribe", "-np", "3"};
+  if (geteuid() == 0) args.push_back("--allow-run-as-root");
+  args.push_back(test::voxmodExecutable());
+  for (const std::string& a : batchArgs(inputs, out, "binvox", {"--threads", "1"})) args.push_back(a);
+  std::fflush(nullptr);
+  const pid_t mpirun = fork();
+  if (mpirun == 0) {
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    if (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr)) _exit(126);
+    execvp(argv[0], argv.data());
+    _exit(127);
+  }
+  const fs::path journal = out / ".voxmod-batch.jsonl";
+  for (int i = 0; i < 6000; ++i) {
+    std::ifstream f(journal);
+    if (std::count(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>(), '\n') >= 3) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  // The last rank mpirun started (its children are the ranks, in rank order).
+  auto ranks = runProgram({"pgrep", "-P", std::to_string(mpirun)});
+  std::istringstream pids(ranks.out);
+  std::vector<pid_t> children;
+  for (pid_t p; pids >> p;) children.push_back(p);
+  ASSERT_EQ(children.size(), 3u) << ranks.out;
+  ASSERT_EQ(kill(*std::max_element(children.begin(), children.end()), SIGKILL), 0);
+  int status = 0;
+  waitpid(mpirun, &status, 0);
+  ASSERT_FALSE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the batch finished before a rank was killed";
+
+  // The report lists the files finished, each complete; nothing else is there but temporaries.
+  const auto report = readReport(out / "report.jsonl");
+  ASSERT_GE(report.size(), 3u);
+  ASSERT_LT(report.size(), inputs.size());
+  const auto& expected = voxelizeOneByOne(sharedMeshes(shared));
+  std::set<std::string> done;
+  for (const json& line : report) {
+    ASSERT_EQ(line["status"], "ok") << line.dump();
+    const std::string output = line["output"];
+    EXPECT_TRUE(test::readFile(output) == expected.at(fs::path(output).filename().string())) << output;
+    done.insert(fs::relative(output, out).string());
+  }
+  for (const auto& [name, bytes] : filesBelow(out)) {
+    if (name.ends_with(".binvox") && !isTemporary(name)) {
+      EXPECT_TRUE(done.contains(name)) << name << " unreported";
+    }
+  }
+
+  auto r = runVoxmod(batchArgs(inputs, out, "binvox", {"--resume", "--json"}));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json summary = json::parse(r.out);
+  EXPECT_EQ(summary["skipped"], done.size());
+  EXPECT_EQ(summary["ok"], inputs.size() - done.size());
+  for (const auto& [name, bytes] : filesBelow(out)) {
+    EXPECT_FALSE(isTemporary(name)) << name << " left behind";
+    if (name.ends_with(".binvox")) {
+      EXPECT_TRUE(bytes == expected.at(fs::path(name).filename().string())) << name;
+    }
   }
 }
 
