@@ -166,3 +166,12 @@ int64_t chebyshevDistance(const glm::ivec3& a, const glm::ivec3& b) {
 }
 
 }  // namespace vox
+
+namespace vox {
+
+void VoxelGrid::shareLayerFrom(const VoxelGrid& other, int32_t z) {
+  assert(other.dims_ == dims_ && z >= 0 && z < dims_.nz);
+  layers_[size_t(z + 1)] = other.layerAllocated(z) ? other.layers_[size_t(z + 1)] : zero_layer_;
+}
+
+}  // namespace vox

@@ -128,6 +128,8 @@ class VoxelGrid {
   bool layerAllocated(int32_t z) const { return layers_[size_t(z + 1)] != zero_layer_; }
   // True when layer z shares storage with `other`'s layer z (both snapshots of the same data).
   bool sharesLayerWith(const VoxelGrid& other, int32_t z) const;
+  // Makes layer z (0 <= z < nz) share `other`'s layer z (copy on write, O(1)); the grids must have the same dims.
+  void shareLayerFrom(const VoxelGrid& other, int32_t z);
 
  private:
   // Layer storage comes from calloc and is not written when allocated: memory fresh from the system is already
