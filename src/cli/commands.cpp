@@ -21,6 +21,11 @@ const std::vector<Command>& commands() {
        addThicknessCommand},
       {"render", "Render the surface voxels as shaded points to a PNG (headless)", addRenderCommand},
       {"convert", "Convert between voxel formats (.vxm, .binvox)", addConvertCommand},
+      {"boolean", "Union, intersection, difference or xor of two parts on one lattice", addBooleanCommand},
+      {"bodies", "Split a mesh into its bodies (a voxel file into its components), voxelized on one lattice",
+       addBodiesCommand},
+      {"interfere", "Which parts or bodies share voxels, how many and where", addInterfereCommand},
+      {"clearance", "The smallest gap between two parts that do not touch", addClearanceCommand},
   };
   return table;
 }

@@ -64,6 +64,19 @@ Result<VoxelizeParams> voxelizeParams(const MeshOptions& options) {
   return params;
 }
 
+Result<LoadedMesh> loadMesh(const std::filesystem::path& file, Output& out) {
+  const double t0 = nowSeconds();
+  auto stl = io::loadStl(file);
+  if (!stl) return stl.error();
+  for (const std::string& w : stl->warnings) out.warn(w);
+  for (const std::string& n : stl->notes) out.note(n);
+  LoadedMesh m;
+  m.mesh = std::move(stl->mesh);
+  m.topology = stl->topology;
+  m.load_s = nowSeconds() - t0;
+  return m;
+}
+
 Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptions& options, Output& out) {
   LoadedModel m;
   const double t0 = nowSeconds();
@@ -81,11 +94,9 @@ Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptio
     m.load_s = nowSeconds() - t0;
     return m;
   }
-  auto stl = io::loadStl(file);
+  auto stl = loadMesh(file, out);
   if (!stl) return stl.error();
-  m.load_s = nowSeconds() - t0;
-  for (const std::string& w : stl->warnings) out.warn(w);
-  for (const std::string& n : stl->notes) out.note(n);
+  m.load_s = stl->load_s;
   m.from_mesh = true;
   m.triangles = int64_t(stl->mesh.triangles.size());
   m.topology = stl->topology;

@@ -41,6 +41,16 @@ struct LoadedModel {
   double load_s = 0.0, voxelize_s = 0.0;
 };
 
+// A mesh FILE as read, with its topology. The one place the CLI reads meshes: every subcommand that takes a mesh
+// (loadModel, the assembly subcommands) comes through here, so a format added here reaches all of them.
+struct LoadedMesh {
+  TriangleMesh mesh;
+  MeshTopology topology;
+  double load_s = 0.0;
+};
+// Reads a mesh FILE; its warnings and notes go through `out`.
+Result<LoadedMesh> loadMesh(const std::filesystem::path& file, Output& out);
+
 // The voxelizer's params from the options (--mode, --memory-limit, --units on top of --res / --voxel-size /
 // --threads), for every subcommand that voxelizes a mesh.
 Result<VoxelizeParams> voxelizeParams(const MeshOptions& options);

@@ -95,3 +95,30 @@ void latticeRange(const GridPlacement& placement, const Box3d& bounds, glm::ivec
 }
 
 }  // namespace vox
+
+namespace vox {
+
+Result<GridPlacement> placeBoundsOnLattice(const GridFrame& lattice, const Box3d& bounds) {
+  if (auto s = checkBounds(bounds); !s) return makeError(ErrorCode::kInvalidArgument, s.error().message);
+  const double h = lattice.voxel_size;
+  glm::ivec3 first(0);
+  Dims dims;
+  for (int a = 0; a < 3; ++a) {
+    // As latticeRange: one voxel of margin past the centres nearest the box's faces.
+    const double lo = std::floor((bounds.min[a] - lattice.origin[a]) / h - 0.5) - 1.0;
+    const double hi = std::ceil((bounds.max[a] - lattice.origin[a]) / h - 0.5) + 2.0;
+    if (!(std::abs(lo) < 1073741824.0 && std::abs(hi) < 1073741824.0)) {
+      return makeError(ErrorCode::kLimit, "the mesh lies more than 2^30 voxels from the lattice's origin");
+    }
+    if (hi - lo > double(kMaxResolution)) {
+      return makeError(ErrorCode::kLimit, "the mesh spans " + std::to_string(int64_t(hi - lo)) +
+                                              " voxels of the lattice along an axis (at most " +
+                                              std::to_string(kMaxResolution) + ")");
+    }
+    first[a] = int32_t(lo);
+    (a == 0 ? dims.nx : a == 1 ? dims.ny : dims.nz) = std::max(1, int32_t(hi - lo));
+  }
+  return placeGridOnLattice(lattice, first, dims);
+}
+
+}  // namespace vox

@@ -29,6 +29,11 @@ Result<GridPlacement> placeGridByVoxelSize(const Box3d& bounds, double voxel_siz
 // The voxels [first, first + dims) of the lattice `lattice` (its origin and voxel size), as a placement. dims must each
 // be at least 1.
 GridPlacement placeGridOnLattice(const GridFrame& lattice, const glm::ivec3& first, const Dims& dims);
+// The box of lattice voxels (of the lattice with `lattice`'s origin and voxel size) whose centres may lie inside
+// `bounds`, with a voxel of margin on every side, as a placement: how a mesh joins an assembly whose lattice is already
+// fixed. Fails (kLimit) when that box would be longer than kMaxResolution voxels, or lies more than 2^30 voxels from
+// the lattice origin (kInvalidArgument for an empty or non-finite box).
+Result<GridPlacement> placeBoundsOnLattice(const GridFrame& lattice, const Box3d& bounds);
 // The lattice voxels whose centres may lie inside `bounds` (model units) on `placement`'s lattice: from the first
 // centre at or above bounds.min to the last at or below bounds.max on each axis, clamped to the placement's voxels
 // [first, first + dims). Empty (first == end on some axis) when no centre lies inside on some axis.
