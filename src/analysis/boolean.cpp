@@ -59,39 +59,33 @@ Result<VoxelGrid> booleanOp(const VoxelGrid& a, const VoxelGrid& b, BoolOp op) {
     for (int32_t z = int32_t(z0); z < int32_t(z1); ++z) {
       const bool ha = a.layerAllocated(z), hb = b.layerAllocated(z);
       if (!hb) continue;  // union, xor and difference keep a's layer; intersection stays empty
-      if (!ha && (op == BoolOp::kUnion || op == BoolOp::kXor)) {
-        out.shareLayerFrom(b, z);  // a's layer is empty: the result is b's layer, shared
+      if (!ha) {
+        // a's layer is empty: union and xor are b's layer, shared; intersection and difference stay empty.
+        if (op == BoolOp::kUnion || op == BoolOp::kXor) out.shareLayerFrom(b, z);
         continue;
       }
-      const uint64_t* wb = b.layerWords(z);
+      // Both layers hold voxels: a fresh layer written once (no copy of a's layer first), given back when empty.
       const uint64_t* wa = a.layerWords(z);
+      const uint64_t* wb = b.layerWords(z);
+      uint64_t* w = out.freshLayerWords(z);
+      uint64_t any = 0;
       switch (op) {
-        case BoolOp::kUnion: {
-          uint64_t* w = out.mutableLayerWords(z);
-          for (int64_t i = 0; i < n; ++i) w[i] = wa[i] | wb[i];
+        case BoolOp::kUnion:
+          for (int64_t i = 0; i < n; ++i) any |= w[i] = wa[i] | wb[i];
           break;
-        }
-        case BoolOp::kIntersection: {
-          if (!ha) break;
-          uint64_t* w = out.mutableLayerWords(z);
-          for (int64_t i = 0; i < n; ++i) w[i] = wa[i] & wb[i];
+        case BoolOp::kIntersection:
+          for (int64_t i = 0; i < n; ++i) any |= w[i] = wa[i] & wb[i];
           break;
-        }
-        case BoolOp::kDifference: {
-          if (!ha) break;
-          uint64_t* w = out.mutableLayerWords(z);
-          for (int64_t i = 0; i < n; ++i) w[i] = wa[i] & ~wb[i];
+        case BoolOp::kDifference:
+          for (int64_t i = 0; i < n; ++i) any |= w[i] = wa[i] & ~wb[i];
           break;
-        }
-        case BoolOp::kXor: {
-          uint64_t* w = out.mutableLayerWords(z);
-          for (int64_t i = 0; i < n; ++i) w[i] = wa[i] ^ wb[i];
+        case BoolOp::kXor:
+          for (int64_t i = 0; i < n; ++i) any |= w[i] = wa[i] ^ wb[i];
           break;
-        }
       }
+      if (any == 0) out.releaseLayer(z);
     }
   });
-  if (op != BoolOp::kUnion) out.releaseEmptyLayers();  // xor and the others can empty a layer
   return out;
 }
 

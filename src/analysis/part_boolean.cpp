@@ -2,8 +2,10 @@
 // rows is built word by word from the operands' rows read at the lattice position of the word (rowBitsAt shifts
 // across word boundaries), so parts never need to be resampled or padded to a common size first. Equal boxes take
 // booleanOp's path, which shares the layers only one operand has.
+#include <algorithm>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "vox/analysis/analysis.h"
 #include "vox/analysis/assembly.h"
@@ -81,23 +83,27 @@ LatticeGrid booleanParts(const LatticeGrid& a, const LatticeGrid& b, PartOp op, 
   const uint64_t last_mask = (uint64_t(1) << ((int64_t(s.x) + 1) & 63)) - 1;  // bits below padding bit nx + 1
   const int threads = threadsFor(int64_t(s.y) * s.z * wpr);
   parallelChunks(0, s.z, 4, threads, [&](int, int64_t z0, int64_t z1) {
+    std::vector<uint64_t> bits_a(size_t(last_word) + 1), bits_b(size_t(last_word) + 1);
     for (int32_t z = int32_t(z0); z < int32_t(z1); ++z) {
       for (int32_t y = 0; y < s.y; ++y) {
         const uint64_t* ra = latticeRow(a, box.min.y + y, box.min.z + z);
         const uint64_t* rb = latticeRow(b, box.min.y + y, box.min.z + z);
         if (!ra && !rb) continue;
         if (!ra && (op == PartOp::kIntersection || op == PartOp::kDifference)) continue;
-        uint64_t* row = nullptr;
-        for (int64_t w = 0; w <= last_word; ++w) {
-          const uint64_t bits_a = ra ? rowBitsAt(ra, wa, shift_a + 64 * w) : 0;
-          const uint64_t bits_b = rb ? rowBitsAt(rb, wb, shift_b + 64 * w) : 0;
-          uint64_t v = combine(bits_a, bits_b, op);
-          if (w == 0) v &= ~uint64_t(1);
-          if (w == last_word) v &= last_mask;
-          if (v == 0) continue;
-          if (!row) row = out.grid.mutableRowWords(y, z);
-          row[w] = v;
-        }
+        if (!rb && op == PartOp::kIntersection) continue;
+        if (ra) shiftedRowWords(ra, wa, shift_a, last_word + 1, bits_a.data());
+        if (rb) shiftedRowWords(rb, wb, shift_b, last_word + 1, bits_b.data());
+        if (!ra) std::fill(bits_a.begin(), bits_a.end(), 0);
+        if (!rb) std::fill(bits_b.begin(), bits_b.end(), 0);
+        bits_a[0] &= ~uint64_t(1);  // padding bits of the result stay zero
+        bits_a[size_t(last_word)] &= last_mask;
+        bits_b[0] &= ~uint64_t(1);
+        bits_b[size_t(last_word)] &= last_mask;
+        uint64_t any = 0;
+        for (int64_t w = 0; w <= last_word; ++w) any |= combine(bits_a[size_t(w)], bits_b[size_t(w)], op);
+        if (any == 0) continue;
+        uint64_t* row = out.grid.mutableRowWords(y, z);
+        for (int64_t w = 0; w <= last_word; ++w) row[w] = combine(bits_a[size_t(w)], bits_b[size_t(w)], op);
       }
     }
   });

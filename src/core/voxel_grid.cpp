@@ -51,6 +51,13 @@ uint64_t* VoxelGrid::mutableLayerWords(int32_t z) {
   return layer->data();
 }
 
+uint64_t* VoxelGrid::freshLayerWords(int32_t z) {
+  assert(z >= 0 && z < dims_.nz);
+  auto& layer = layers_[size_t(z) + 1];
+  layer = std::make_shared<Layer>(size_t(wordsPerLayer()));
+  return layer->data();
+}
+
 uint64_t* VoxelGrid::mutableRowWords(int32_t y, int32_t z) {
   assert(y >= 0 && y < dims_.ny);
   return mutableLayerWords(z) + (int64_t(y) + 1) * words_per_row_;

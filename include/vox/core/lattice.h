@@ -79,6 +79,21 @@ inline uint64_t rowBitsAt(const uint64_t* row, int64_t wpr, int64_t bit) {
   return (lo >> s) | (hi << (64 - s));
 }
 
+// out[w] = rowBitsAt(row, wpr, shift + 64 w) for w in [0, n): a whole row read at another grid's word boundaries,
+// with two loads and two shifts per word where the row has both words.
+inline void shiftedRowWords(const uint64_t* row, int64_t wpr, int64_t shift, int64_t n, uint64_t* out) {
+  const int64_t q = shift >> 6;
+  const int r = int(shift & 63);
+  const int64_t lo = std::clamp<int64_t>(-q, 0, n), hi = std::clamp<int64_t>(wpr - 1 - q, lo, n);
+  for (int64_t w = 0; w < lo; ++w) out[w] = rowBitsAt(row, wpr, shift + 64 * w);
+  if (r == 0) {
+    for (int64_t w = lo; w < hi; ++w) out[w] = row[q + w];
+  } else {
+    for (int64_t w = lo; w < hi; ++w) out[w] = (row[q + w] >> r) | (row[q + w + 1] << (64 - r));
+  }
+  for (int64_t w = hi; w < n; ++w) out[w] = rowBitsAt(row, wpr, shift + 64 * w);
+}
+
 // Row (Y, Z) of a lattice grid in lattice coordinates, or nullptr when the grid does not cover that row.
 inline const uint64_t* latticeRow(const LatticeGrid& g, int32_t Y, int32_t Z) {
   const int32_t y = Y - g.first.y, z = Z - g.first.z;
