@@ -28,6 +28,31 @@ uint64_t combine(uint64_t a, uint64_t b, PartOp op) {
   return 0;
 }
 
+template <PartOp kOp>
+uint64_t combineRowAs(uint64_t* a, const uint64_t* b, int64_t n) {
+  uint64_t any = 0;
+  for (int64_t w = 0; w < n; ++w) {
+    a[w] = combine(a[w], b[w], kOp);
+    any |= a[w];
+  }
+  return any;
+}
+
+// a[w] = a[w] op b[w] for w in [0, n), the loop compiled once per operation; returns the OR of the results.
+uint64_t combineRow(uint64_t* a, const uint64_t* b, int64_t n, PartOp op) {
+  switch (op) {
+    case PartOp::kUnion:
+      return combineRowAs<PartOp::kUnion>(a, b, n);
+    case PartOp::kIntersection:
+      return combineRowAs<PartOp::kIntersection>(a, b, n);
+    case PartOp::kDifference:
+      return combineRowAs<PartOp::kDifference>(a, b, n);
+    case PartOp::kXor:
+      return combineRowAs<PartOp::kXor>(a, b, n);
+  }
+  return 0;
+}
+
 BoolOp toBoolOp(PartOp op) {
   switch (op) {
     case PartOp::kUnion:
@@ -83,31 +108,31 @@ LatticeGrid booleanParts(const LatticeGrid& a, const LatticeGrid& b, PartOp op, 
   const uint64_t last_mask = (uint64_t(1) << ((int64_t(s.x) + 1) & 63)) - 1;  // bits below padding bit nx + 1
   const int threads = threadsFor(int64_t(s.y) * s.z * wpr);
   parallelChunks(0, s.z, 4, threads, [&](int, int64_t z0, int64_t z1) {
-    std::vector<uint64_t> bits_a(size_t(last_word) + 1), bits_b(size_t(last_word) + 1);
+    std::vector<uint64_t> bits_b(size_t(last_word) + 1);
     for (int32_t z = int32_t(z0); z < int32_t(z1); ++z) {
+      uint64_t* layer = nullptr;  // allocated at the first row either operand has, given back if nothing is left
+      uint64_t layer_any = 0;
       for (int32_t y = 0; y < s.y; ++y) {
         const uint64_t* ra = latticeRow(a, box.min.y + y, box.min.z + z);
         const uint64_t* rb = latticeRow(b, box.min.y + y, box.min.z + z);
         if (!ra && !rb) continue;
         if (!ra && (op == PartOp::kIntersection || op == PartOp::kDifference)) continue;
         if (!rb && op == PartOp::kIntersection) continue;
-        if (ra) shiftedRowWords(ra, wa, shift_a, last_word + 1, bits_a.data());
-        if (rb) shiftedRowWords(rb, wb, shift_b, last_word + 1, bits_b.data());
-        if (!ra) std::fill(bits_a.begin(), bits_a.end(), 0);
-        if (!rb) std::fill(bits_b.begin(), bits_b.end(), 0);
-        bits_a[0] &= ~uint64_t(1);  // padding bits of the result stay zero
-        bits_a[size_t(last_word)] &= last_mask;
-        bits_b[0] &= ~uint64_t(1);
-        bits_b[size_t(last_word)] &= last_mask;
-        uint64_t any = 0;
-        for (int64_t w = 0; w <= last_word; ++w) any |= combine(bits_a[size_t(w)], bits_b[size_t(w)], op);
-        if (any == 0) continue;
-        uint64_t* row = out.grid.mutableRowWords(y, z);
-        for (int64_t w = 0; w <= last_word; ++w) row[w] = combine(bits_a[size_t(w)], bits_b[size_t(w)], op);
+        if (!layer) layer = out.grid.freshLayerWords(z);
+        uint64_t* row = layer + (int64_t(y) + 1) * wpr;  // the result row; a's bits first, then combined in place
+        if (ra) shiftedRowWords(ra, wa, shift_a, last_word + 1, row);
+        if (rb) {
+          shiftedRowWords(rb, wb, shift_b, last_word + 1, bits_b.data());
+        } else {
+          std::fill(bits_b.begin(), bits_b.end(), 0);
+        }
+        layer_any |= combineRow(row, bits_b.data(), last_word + 1, op);
+        row[0] &= ~uint64_t(1);  // padding bits of the result stay zero (the operands have none there)
+        row[last_word] &= last_mask;
       }
+      if (layer && layer_any == 0) out.grid.releaseLayer(z);
     }
   });
-  out.grid.releaseEmptyLayers();
   return out;
 }
 
