@@ -63,7 +63,7 @@ Result<GridPlacement> wholePlacement(const std::vector<Input>& inputs, const Vox
 
 // A voxel file's grid as a part (or its components as parts), on the lattice of `whole`.
 Status addVoxelInput(Input& in, const GridPlacement& whole, const Lattice& lattice, bool bodies, bool several,
-                     PartsOnLattice& out) {
+                     Connectivity connectivity, PartsOnLattice& out) {
   glm::ivec3 first(0);
   if (Status s = checkSharedLattice(whole.frame, in.grid->frame(), &first); !s) {
     // An input error (exit 2): the files cannot be combined word by word.
@@ -79,7 +79,7 @@ Status addVoxelInput(Input& in, const GridPlacement& whole, const Lattice& latti
     out.triangles.push_back(-1);
     return Ok{};
   }
-  const Components comps = findComponents(part.grid, Connectivity::kFace);
+  const Components comps = findComponents(part.grid, connectivity);
   for (size_t i = 0; i < comps.components.size(); ++i) {
     const Component& c = comps.components[i];
     LatticeGrid body{componentGrid(part.grid, comps, i), part.first};
@@ -132,7 +132,7 @@ Status addMeshInput(const Input& in, const GridPlacement& whole, const VoxelizeP
 }  // namespace
 
 Result<PartsOnLattice> placeInputs(const std::vector<std::string>& files, const MeshOptions& options, bool bodies,
-                                   Output& out) {
+                                   Output& out, int connectivity) {
   PartsOnLattice parts;
   auto inputs = readInputs(files, out, parts.load_s);
   if (!inputs) return inputs.error();
@@ -157,7 +157,8 @@ Result<PartsOnLattice> placeInputs(const std::vector<std::string>& files, const 
   const bool several = files.size() > 1;
   const double t0 = nowSeconds();
   for (Input& in : *inputs) {
-    Status s = in.grid ? addVoxelInput(in, whole, parts.lattice, bodies, several, parts)
+    Status s = in.grid ? addVoxelInput(in, whole, parts.lattice, bodies, several,
+                                       connectivity == 26 ? Connectivity::kAll : Connectivity::kFace, parts)
                        : addMeshInput(in, whole, *params, bodies, several, !any_voxels, parts, out);
     if (!s) return s.error();
   }

@@ -82,6 +82,7 @@ int runBoolean(const BooleanOptions& o) {
 struct BodiesOptions {
   CommonOptions c;
   std::string dir, format = "vxm";
+  int connectivity = 6;
 };
 
 // Every body as a voxel file DIR/body_NNN.EXT, all written or none.
@@ -108,7 +109,7 @@ Status writeBodies(const PartsOnLattice& p, const std::string& dir, const std::s
 int runBodies(const BodiesOptions& o) {
   Output out(o.c.json);
   const double t0 = nowSeconds();
-  auto placed = placeInputs({o.c.file}, o.c.mesh, true, out);
+  auto placed = placeInputs({o.c.file}, o.c.mesh, true, out, o.connectivity);
   if (!placed) return out.fail(placed.error());
   const PartsOnLattice& p = *placed;
   auto& d = out.data();
@@ -142,6 +143,7 @@ int runBodies(const BodiesOptions& o) {
 struct InterfereOptions {
   std::vector<std::string> files;
   bool bodies = false, json = false;
+  int connectivity = 6;
   MeshOptions mesh;
 };
 
@@ -159,7 +161,7 @@ nlohmann::ordered_json pairJson(const InterferencePair& pair, const Lattice& lat
 int runInterfere(const InterfereOptions& o) {
   Output out(o.json);
   const double t0 = nowSeconds();
-  auto placed = placeInputs(o.files, o.mesh, o.bodies, out);
+  auto placed = placeInputs(o.files, o.mesh, o.bodies, out, o.connectivity);
   if (!placed) return out.fail(placed.error());
   const PartsOnLattice& p = *placed;
   const double t1 = nowSeconds();
@@ -255,6 +257,10 @@ void addBodiesCommand(CLI::App& sub, CommandContext& ctx) {
   sub.add_option("-o,--output", o->dir, "Write each body as a voxel file body_NNN.vxm into this directory");
   sub.add_option("--format", o->format, "Voxel file format of the bodies: vxm or binvox")
       ->check(CLI::IsMember({"vxm", "binvox"}));
+  sub.add_option("--connectivity", o->connectivity,
+                 "For a voxel FILE: its bodies are components joined through faces (6, default) or also edges and "
+                 "corners (26)")
+      ->check(CLI::IsMember({6, 26}));
   sub.callback([o, &ctx] { ctx.exit_code = runBodies(*o); });
 }
 
@@ -262,6 +268,10 @@ void addInterfereCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<InterfereOptions>();
   addFilesAndMeshOptions(sub, o->files, o->json, o->mesh, -1);
   sub.add_flag("--bodies", o->bodies, "Split each file into its bodies (mesh shells, voxel components)");
+  sub.add_option("--connectivity", o->connectivity,
+                 "With --bodies, for voxel files: components joined through faces (6, default) or also edges and "
+                 "corners (26)")
+      ->check(CLI::IsMember({6, 26}));
   sub.callback([o, &ctx] { ctx.exit_code = runInterfere(*o); });
 }
 

@@ -157,3 +157,34 @@ TEST_F(AssemblyCli, badInputAndOutputAreClearErrors) {
 
 }  // namespace
 }  // namespace vox
+
+namespace vox {
+namespace {
+
+TEST_F(AssemblyCli, voxelFileBodiesAreComponentsAndMeshesJoinItsLattice) {
+  // ab.stl voxelized as one grid: the two boxes overlap, so the grid is one 6-connected component.
+  ASSERT_EQ(runVoxmod({"voxelize", path("ab.stl"), "--res", "16", "-o", path("ab.vxm")}).exit_code, 0);
+  auto r = runVoxmod({"bodies", path("ab.vxm"), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  json j = parse(r);
+  ASSERT_EQ(j["bodies"].size(), 1u);
+  EXPECT_EQ(j["bodies"][0]["filled"], 1880);
+  EXPECT_TRUE(j["bodies"][0]["triangles"].is_null());
+  // a.stl voxelized alone on its own grid (h = 1, origin 0): b.stl joins that lattice and overlaps it in the block.
+  ASSERT_EQ(runVoxmod({"voxelize", path("a.stl"), "--res", "10", "-o", path("a10.vxm")}).exit_code, 0);
+  r = runVoxmod({"interfere", path("a10.vxm"), path("b.stl"), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  j = parse(r);
+  ASSERT_EQ(j["pairs"].size(), 1u);
+  EXPECT_EQ(j["pairs"][0]["voxels"], 120);
+  // Two cubes touching only along an edge: two components through faces, one through edges.
+  VoxelGrid g(Dims{4, 4, 1}, GridFrame{});
+  g.set(0, 0, 0);
+  g.set(1, 1, 0);
+  ASSERT_TRUE(io::saveVoxelFile(g, path("diag.vxm")).ok());
+  EXPECT_EQ(parse(runVoxmod({"bodies", path("diag.vxm"), "--json"}))["bodies"].size(), 2u);
+  EXPECT_EQ(parse(runVoxmod({"bodies", path("diag.vxm"), "--connectivity", "26", "--json"}))["bodies"].size(), 1u);
+}
+
+}  // namespace
+}  // namespace vox
