@@ -1,5 +1,5 @@
 #pragma once
-// An assembly: parts on one lattice (vox/core/lattice.h; docs/conventions.md, "Assemblies: one lattice"). Each part
+// An assembly: parts on one lattice (vox/core/lattice.h; docs/conventions.md, "Assemblies"). Each part
 // has a name, a colour, a visibility, its voxels as added (a grid over a box of the lattice) and a placement: a
 // translation in whole voxels and quarter turns about X, Y and Z, both of which keep every voxel on the lattice.
 // Adding a part never touches the others: the assembly's extent is just the union of the parts' placed boxes.

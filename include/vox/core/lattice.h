@@ -1,5 +1,5 @@
 #pragma once
-// One lattice for many parts (docs/conventions.md, "Assemblies: one lattice"). A lattice is a voxel size and an
+// One lattice for many parts (docs/conventions.md, "Assemblies"). A lattice is a voxel size and an
 // origin: lattice voxel (I, J, K) has its centre at origin + ((I + 0.5) h, (J + 0.5) h, (K + 0.5) h), computed in
 // double exactly so (SPEC section 1's formula, with I counted from the lattice origin). Every part of an assembly is
 // a VoxelGrid covering a box of lattice voxels: its voxel (x, y, z) is lattice voxel first + (x, y, z). Parts with
