@@ -8,8 +8,11 @@ packages=(
   build-essential cmake ninja-build pkg-config git clang clang-format
   # libraries
   libglm-dev libglfw3-dev libimgui-dev libstb-dev zlib1g-dev libteem-dev nlohmann-json3-dev libcli11-dev
-  libassimp-dev
+  libassimp-dev libminizip-dev libexpat1-dev
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  # volume export: VTK image data (.vti) and OpenVDB (.vdb); see docs/dependencies.md
+  libvtk9-dev libopenvdb-dev
   # OpenGL / EGL (glvnd + Mesa llvmpipe); see docs/dependencies.md
   libegl-dev libopengl-dev libgl-dev libegl1 libegl-mesa0 libopengl0 libgl1 libglx-mesa0 libgl1-mesa-dri
   # window tests and screenshots

@@ -56,7 +56,10 @@ bool hasDisputed(const AppState& s) {
   return s.doc.model && s.doc.model->origin && s.doc.model->origin->disputed != nullptr;
 }
 
-bool canCancel(const AppState& s) { return modelBusy(s) || s.thickness.computing(s.model_version); }
+bool canCancel(const AppState& s) {
+  return modelBusy(s) || s.thickness.computing(s.model_version) || volumeExportRunning(s);
+}
+bool hasThickness(const AppState& s) { return currentThickness(s) != nullptr; }
 
 // ---- File ----
 void open(AppState& s) { openBrowser(s, BrowserPurpose::kOpen); }
@@ -82,6 +85,12 @@ void exportXray(AppState& s) { openBrowser(s, BrowserPurpose::kExportXrayPng); }
 Status exportXrayPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportXrayPng, a); }
 void exportCsv(AppState& s) { openBrowser(s, BrowserPurpose::kExportXrayCsv); }
 Status exportCsvPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportXrayCsv, a); }
+void exportVolume(AppState& s) { openBrowser(s, BrowserPurpose::kExportVolume); }
+Status exportVolumePath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportVolume, a); }
+void exportThickness(AppState& s) { openBrowser(s, BrowserPurpose::kExportThickness); }
+Status exportThicknessPath(AppState& s, const ActionArgs& a) {
+  return acceptPath(s, BrowserPurpose::kExportThickness, a);
+}
 
 Status exportSize(AppState& s, const ActionArgs& a) {  // W H: the 3D view's export size (0 0: as shown)
   int32_t w = 0, h = 0;
@@ -128,6 +137,7 @@ Status voxelizeAt(AppState& s, const ActionArgs& a) {  // R [MODE], as the dialo
 void cancelAll(AppState& s) {
   cancelJobs(s);
   cancelThickness(s);
+  cancelVolumeExport(s);
 }
 
 // ---- View ----

@@ -14,7 +14,8 @@ bool hasMeasure(const AppState& s);
 bool canPeel(const AppState& s);
 bool canPeelBack(const AppState& s);
 bool hasDisputed(const AppState& s);
-bool canCancel(const AppState& s);  // voxelizing, loading or the thickness runs
+bool canCancel(const AppState& s);     // voxelizing, loading, the thickness or a volume export runs
+bool hasThickness(const AppState& s);  // the Thickness panel's result for the model shown
 
 // ---- File ----
 void open(AppState& s);
@@ -36,6 +37,10 @@ void exportXray(AppState& s);
 Status exportXrayPath(AppState& s, const ActionArgs& a);
 void exportCsv(AppState& s);
 Status exportCsvPath(AppState& s, const ActionArgs& a);
+void exportVolume(AppState& s);
+Status exportVolumePath(AppState& s, const ActionArgs& a);
+void exportThickness(AppState& s);
+Status exportThicknessPath(AppState& s, const ActionArgs& a);
 Status exportSize(AppState& s, const ActionArgs& a);
 
 // ---- Edit ----

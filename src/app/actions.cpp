@@ -31,6 +31,8 @@ const Action kActions[] = {
   {ActionId::kExportSectionPng, "export-section", "File",   "Export section PNG...",              kNone,                       1, -1, exportSection, exportSectionPath, hasSection,  nullptr},
   {ActionId::kExportXrayPng,  "export-xray",     "File",    "Export X-ray PNG...",                kNone,                       1, -1, exportXray,    exportXrayPath,    hasXray,     nullptr},
   {ActionId::kExportXrayCsv,  "export-csv",      "File",    "Export X-ray CSV...",                kNone,                       1, -1, exportCsv,     exportCsvPath,     hasXray,     nullptr},
+  {ActionId::kExportVolume,   "export-volume",   "File",    "Export volume (.vti .vdb .nrrd .vox)...", kNone,                  1, -1, exportVolume,  exportVolumePath,  hasModel,    nullptr},
+  {ActionId::kExportThickness, "export-thickness", "File",  "Export thickness volume (.vti .vdb .nrrd)...", kNone,              1, -1, exportThickness, exportThicknessPath, hasThickness, nullptr},
   {ActionId::kExportSize,     "export-size",     nullptr,   "3D view export size",                kNone,                       2, 2,  nullptr,       exportSize,        nullptr,     nullptr},
   {ActionId::kQuit,           "quit",            "File",    "Quit",                               {GLFW_KEY_Q, kCtrl},         0, 0,  requestQuit,   nullptr,           nullptr,     nullptr},
 
@@ -40,7 +42,7 @@ const Action kActions[] = {
   {ActionId::kMeasure,        "measure",         nullptr,   "Pick a voxel to measure",            kNone,                       3, 3,  nullptr,       measureAt,         hasSection,  nullptr},
 
   {ActionId::kVoxelize,       "voxelize",        "Model",   "Voxelize...",                        {GLFW_KEY_R, kCtrl},         1, 2,  voxelizeDialog, voxelizeAt,       hasMesh,     nullptr},
-  {ActionId::kCancelJob,      "cancel",          "Model",   "Cancel voxelizing / loading / thickness", {GLFW_KEY_ESCAPE, 0},     0, 0,  cancelAll,     nullptr,           canCancel,   nullptr},
+  {ActionId::kCancelJob,      "cancel",          "Model",   "Cancel voxelizing / loading / thickness / export", {GLFW_KEY_ESCAPE, 0}, 0, 0, cancelAll,   nullptr,           canCancel,   nullptr},
 
   {ActionId::kViewFit,        "fit",             "View",    "Fit model",                          {GLFW_KEY_F, 0},             0, 0,  fit,           nullptr,           nullptr,     nullptr},
   {ActionId::kViewIso,        "view-iso",        "View",    "Isometric",                          {GLFW_KEY_0, 0},             0, 0,  viewIso,       nullptr,           nullptr,     nullptr},

@@ -26,6 +26,8 @@ enum class ActionId {
   kExportSectionPng,
   kExportXrayPng,
   kExportXrayCsv,
+  kExportVolume,
+  kExportThickness,
   kExportSize,
   kQuit,
   kUndo,

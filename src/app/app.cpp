@@ -38,8 +38,9 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: voxmod [FILE] [--script SCRIPT] [--screenshot PNG] [--size WIDTHxHEIGHT]\n"
-    "Opens the modeler window. FILE is a mesh (.stl) or voxel file (.vxm, .binvox); without one the bundled part\n"
-    "models/featuretype.stl is opened and voxelized.\n"
+    "Opens the modeler window. FILE is a mesh or CAD file (.stl .obj .ply .3mf .gltf .glb .off .step .stp .iges\n"
+    ".igs) or a voxel file (.vxm, .binvox); without one the bundled part models/featuretype.stl is opened and\n"
+    "voxelized.\n"
     "  --script SCRIPT    run the line commands in SCRIPT (see src/app/script.h), e.g. for tests\n"
     "  --screenshot PNG   when everything has been computed, save the window as PNG and quit\n"
     "  --size WxH         window size in pixels (default: the size it had last time)\n"

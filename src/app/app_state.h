@@ -19,6 +19,7 @@
 #include "vox/analysis/thickness.h"
 #include "vox/core/mesh.h"
 #include "vox/core/voxel_grid.h"
+#include "vox/io/mesh_file.h"
 #include "vox/render/camera.h"
 #include "vox/render/framebuffer.h"
 #include "vox/render/point_renderer.h"
@@ -33,17 +34,26 @@ struct AppState;
 
 // ---- The document ----
 
-// The STL a document was opened from (kept so it can be voxelized again at another resolution).
+// The mesh or CAD file a document was opened from (kept so it can be voxelized again at another resolution).
 struct MeshSource {
   std::filesystem::path path;
   TriangleMesh mesh;
   MeshTopology topology;
-  bool ascii = false;
+  std::string format;                 // "binary STL", "3MF", "STEP (AUTOMOTIVE_DESIGN)", ...
+  std::vector<io::MeshBody> bodies;   // the file's solids / objects, ranges of mesh.triangles
+  std::string units = "model";        // what the coordinates are in (CAD files: mm)
+  std::string file_units;             // as the file names its unit; empty when it names none
   std::vector<std::string> warnings;  // from the reader: degenerate triangles, not watertight
   std::vector<std::string> notes;     // from the reader: information (closed once exporter noise is welded)
   double load_s = 0.0;
   double volume = 0.0;  // signed volume of the mesh (model units cubed), for comparison with the voxel volume
+  // CAD files: the exact geometry and the deflection the mesh was made with; a finer grid tessellates it again.
+  std::shared_ptr<const io::CadModel> cad;
+  double deflection = 0.0;
 };
+
+// A MeshSource from what io::loadMeshFile (or a CAD tessellation) gave.
+std::shared_ptr<MeshSource> makeMeshSource(const std::filesystem::path& path, io::MeshFileLoad&& load);
 
 // How a model grid came about (shown in the Model panel).
 struct ModelOrigin {
@@ -75,7 +85,7 @@ struct ModelSnapshot {
 
 struct Document {
   std::filesystem::path path;              // the file opened (mesh or voxel file); empty when nothing is open
-  std::shared_ptr<const MeshSource> mesh;  // when opened from an STL
+  std::shared_ptr<const MeshSource> mesh;  // when opened from a mesh or CAD file
   std::optional<ModelSnapshot> model;      // none until the mesh is voxelized
   std::vector<ModelSnapshot> undo_stack, redo_stack;
   std::filesystem::path save_path;  // where Save writes; empty until saved once (or loaded from a voxel file)
@@ -150,7 +160,9 @@ enum class BrowserPurpose {
   kExportViewPng,
   kExportSectionPng,
   kExportXrayPng,
-  kExportXrayCsv
+  kExportXrayCsv,
+  kExportVolume,     // the model as .vti, .vdb, .nrrd or .vox (export_volume.h)
+  kExportThickness,  // the thickness volume as .vti, .vdb or .nrrd
 };
 
 struct FileBrowser {
@@ -211,9 +223,15 @@ struct ThicknessUi {
   std::string volume_problem;  // why the 3D view cannot colour by thickness (empty: it can)
 };
 
+// A voxelization, and the CAD file's new tessellation when the open one was too coarse for its grid.
+struct VoxelizeOutcome {
+  VoxelizeResult result;
+  std::shared_ptr<const MeshSource> mesh;  // null when the open mesh was used
+};
+
 struct LoadedFile {
   std::filesystem::path path;
-  std::shared_ptr<const MeshSource> mesh;  // an STL
+  std::shared_ptr<const MeshSource> mesh;  // a mesh or CAD file
   std::optional<VoxelGrid> grid;           // a voxel file
   double load_s = 0.0;
 };
@@ -272,7 +290,7 @@ struct AppState {
 
   // Background work.
   Job<LoadedFile> load_job;
-  Job<VoxelizeResult> voxelize_job;
+  Job<VoxelizeOutcome> voxelize_job;
   VoxelizeParams voxelize_job_params;  // the params of the running voxelization
   double job_started = 0.0;
   AsyncValue<uint64_t, std::shared_ptr<const DepthMap>> depth;  // keyed by base_id
@@ -280,6 +298,7 @@ struct AppState {
   AsyncValue<uint64_t, MassProperties> mass;                    // keyed by model_version
   AsyncValue<XrayKey, std::shared_ptr<const XrayResult>> xray_result;
   AsyncValue<uint64_t, std::shared_ptr<const ThicknessResult>> thickness;  // keyed by model_version
+  Job<std::filesystem::path> volume_export_job;  // File > Export volume: the file being written (export_volume.h)
 
   // Derived images (main thread: sections are cheap enough to compute while a slider moves).
   SectionKey section_key;

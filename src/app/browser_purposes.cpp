@@ -3,16 +3,21 @@
 #include <system_error>
 
 #include "app/document.h"
+#include "app/export_volume.h"
 #include "app/exports.h"
 #include "app/messages.h"
 #include "app/view_export.h"
+#include "vox/io/mesh_file.h"
 
 namespace vox::app {
 
 std::vector<std::string> browserExtensions(BrowserPurpose purpose) {
   switch (purpose) {
-    case BrowserPurpose::kOpen:
-      return {".stl", ".vxm", ".binvox"};
+    case BrowserPurpose::kOpen: {
+      std::vector<std::string> all = io::meshFileExtensions();
+      all.insert(all.end(), {".vxm", ".binvox"});
+      return all;
+    }
     case BrowserPurpose::kSaveModel:
       return {".vxm", ".binvox"};
     case BrowserPurpose::kExportBinvox:
@@ -26,6 +31,10 @@ std::vector<std::string> browserExtensions(BrowserPurpose purpose) {
       return {".png"};
     case BrowserPurpose::kExportXrayCsv:
       return {".csv"};
+    case BrowserPurpose::kExportVolume:
+      return {".vti", ".vdb", ".nrrd", ".vox"};
+    case BrowserPurpose::kExportThickness:
+      return {".vti", ".vdb", ".nrrd"};
   }
   return {};
 }
@@ -50,6 +59,11 @@ const char* browserTitle(BrowserPurpose purpose) {
       return "Export the X-ray image as PNG";
     case BrowserPurpose::kExportXrayCsv:
       return "Export the X-ray thickness as CSV";
+    case BrowserPurpose::kExportVolume:
+      return "Export the model as a volume: .vti (ParaView), .vdb (Blender, Houdini), .nrrd (3D Slicer), .vox "
+             "(MagicaVoxel)";
+    case BrowserPurpose::kExportThickness:
+      return "Export the thickness as a volume: .vti or .vdb (voxels, thickness, distance), .nrrd (thickness)";
   }
   return "";
 }
@@ -95,6 +109,12 @@ void openBrowser(AppState& state, BrowserPurpose purpose) {
       b.file_name =
           stem + "_xray_" + axisName(state.xray.params.axis) + "_" + xrayModeName(state.xray.params.mode) + ".csv";
       break;
+    case BrowserPurpose::kExportVolume:
+      b.file_name = stem + ".vti";
+      break;
+    case BrowserPurpose::kExportThickness:
+      b.file_name = stem + "_thickness.vti";
+      break;
   }
 }
 
@@ -138,12 +158,23 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
     case BrowserPurpose::kExportXrayCsv:
       ok = exportXrayCsv(state, path);
       break;
+    case BrowserPurpose::kExportVolume:  // written in the background: it says where it wrote when done
+      ok = startVolumeExport(state, path);
+      break;
+    case BrowserPurpose::kExportThickness:
+      ok = startThicknessExport(state, path);
+      break;
   }
   if (ok) {
     state.settings.last_directory = std::filesystem::absolute(path).parent_path().string();
     // Say where a file went (the name typed may have been relative, or the directory not the one in mind).
-    if (purpose != BrowserPurpose::kOpen) {
+    const bool in_background = purpose == BrowserPurpose::kExportVolume || purpose == BrowserPurpose::kExportThickness;
+    if (purpose != BrowserPurpose::kOpen && !in_background) {
       state.status_message = "Wrote " + std::filesystem::absolute(path).lexically_normal().string();
+      const bool surface = purpose == BrowserPurpose::kExportSurface || purpose == BrowserPurpose::kExportSmoothSurface;
+      if (surface && state.panel == Panel::kSection && state.view.cut_away) {
+        state.status_message += " (the half the cut-away keeps)";
+      }
       state.status_since = nowSeconds();
     }
     if (auto then = std::move(state.browser.then)) {

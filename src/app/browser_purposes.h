@@ -11,7 +11,7 @@ namespace vox::app {
 
 // Opens the file browser for a purpose (open, save as, exports).
 void openBrowser(AppState& state, BrowserPurpose purpose);
-// The extension(s) a purpose writes or reads, e.g. {".stl", ".vxm", ".binvox"} for kOpen.
+// The extension(s) a purpose writes or reads, e.g. {".stl", ".obj", ..., ".step", ..., ".vxm", ".binvox"} for kOpen.
 std::vector<std::string> browserExtensions(BrowserPurpose purpose);
 const char* browserTitle(BrowserPurpose purpose);
 // Runs the purpose's operation on the chosen path; false when it failed (the browser stays open).

@@ -7,8 +7,8 @@
 #include "app/messages.h"
 #include "app/model_jobs.h"
 #include "app/update.h"
-#include "vox/io/stl.h"
 #include "vox/io/file_util.h"
+#include "vox/io/mesh_file.h"
 #include "vox/io/voxel_file.h"
 
 namespace vox::app {
@@ -117,6 +117,8 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
     state.panel_change_requested = true;
   } else {
     doc.mesh = std::move(loaded.mesh);
+    // A file that states its unit (3MF, glTF, every CAD file) sets the dialog's; for the others the user's stays.
+    if (doc.mesh->units != "model") state.voxelize.params.units = doc.mesh->units;
     doc.saved_version = 0;
     state.panel = Panel::kModel;
     state.panel_change_requested = true;
@@ -137,34 +139,50 @@ void requestOpen(AppState& state, const std::filesystem::path& path) {
   guardUnsaved(state, [path](AppState& s) { startOpen(s, path); });
 }
 
+std::shared_ptr<MeshSource> makeMeshSource(const std::filesystem::path& path, io::MeshFileLoad&& load) {
+  auto mesh = std::make_shared<MeshSource>();
+  mesh->path = path;
+  mesh->mesh = std::move(load.mesh);
+  mesh->topology = load.topology;
+  mesh->format = std::move(load.format_detail);
+  mesh->bodies = std::move(load.bodies);
+  mesh->units = std::move(load.units);
+  mesh->file_units = std::move(load.file_units);
+  mesh->warnings = std::move(load.warnings);
+  mesh->notes = std::move(load.notes);
+  mesh->volume = signedVolume(mesh->mesh);
+  mesh->cad = std::move(load.cad);
+  mesh->deflection = load.deflection;
+  return mesh;
+}
+
 void startOpen(AppState& state, const std::filesystem::path& path) {
   state.voxelize_job.abandon();
   state.job_started = nowSeconds();
-  state.load_job.start("Opening " + path.filename().string(), [path](const ProgressFn&) -> Result<LoadedFile> {
-    const double t0 = nowSeconds();
-    LoadedFile out;
-    out.path = path;
-    if (io::isVoxelFile(path)) {
-      auto grid = io::loadVoxelFile(path);
-      if (!grid) return grid.error();
-      out.grid = std::move(grid).value();
-    } else {
-      auto stl = io::loadStl(path);
-      if (!stl) return stl.error();
-      auto mesh = std::make_shared<MeshSource>();
-      mesh->path = path;
-      mesh->mesh = std::move(stl->mesh);
-      mesh->topology = stl->topology;
-      mesh->ascii = stl->ascii;
-      mesh->warnings = std::move(stl->warnings);
-      mesh->notes = std::move(stl->notes);
-      mesh->volume = signedVolume(mesh->mesh);
-      mesh->load_s = nowSeconds() - t0;
-      out.mesh = std::move(mesh);
-    }
-    out.load_s = nowSeconds() - t0;
-    return out;
-  });
+  // A CAD file is tessellated for the resolution the Voxelize dialog holds; voxelizing finer tessellates it again.
+  const int64_t resolution = state.voxelize.params.resolution;
+  state.load_job.start("Opening " + path.filename().string(),
+                       [path, resolution](const ProgressFn& progress) -> Result<LoadedFile> {
+                         const double t0 = nowSeconds();
+                         LoadedFile out;
+                         out.path = path;
+                         if (io::isVoxelFile(path)) {
+                           auto grid = io::loadVoxelFile(path);
+                           if (!grid) return grid.error();
+                           out.grid = std::move(grid).value();
+                         } else {
+                           io::MeshFileOptions options;
+                           options.resolution = resolution;
+                           options.progress = progress;
+                           auto load = io::loadMeshFile(path, options);
+                           if (!load) return load.error();
+                           auto mesh = makeMeshSource(path, std::move(load).value());
+                           mesh->load_s = nowSeconds() - t0;
+                           out.mesh = std::move(mesh);
+                         }
+                         out.load_s = nowSeconds() - t0;
+                         return out;
+                       });
 }
 
 bool saveModel(AppState& state, const std::filesystem::path& path) {

@@ -8,6 +8,7 @@
 #include "app/document.h"
 #include "app/messages.h"
 #include "vox/core/text.h"
+#include "vox/io/cad.h"
 
 namespace vox::app {
 
@@ -43,9 +44,42 @@ void proposeResolution(AppState& state) {
   }
 }
 
+namespace {
+
+// The deflection the grid of `params` asks of a CAD file's tessellation, when the open mesh is coarser; 0 otherwise.
+double finerDeflection(const MeshSource& mesh, const VoxelizeParams& params) {
+  if (!mesh.cad) return 0.0;
+  auto wanted = io::cadDeflectionFor(mesh.cad->bounds(), params.resolution, params.voxel_size);
+  return wanted && *wanted < mesh.deflection * (1.0 - 1e-9) ? *wanted : 0.0;
+}
+
+// Tessellates again (progress [0, 0.4]) when the grid is finer than the open mesh was made for, then voxelizes.
+Result<VoxelizeOutcome> voxelizeMesh(const std::shared_ptr<const MeshSource>& open, const VoxelizeParams& params,
+                                     const ProgressFn& progress) {
+  VoxelizeOutcome out;
+  std::shared_ptr<const MeshSource> mesh = open;
+  ProgressFn voxelizing = progress;
+  if (const double deflection = finerDeflection(*open, params); deflection > 0.0) {
+    const double t0 = nowSeconds();
+    auto load = io::tessellateCad(*open->cad, deflection, [&](double f) { return !progress || progress(0.4 * f); });
+    if (!load) return load.error();
+    load->cad = open->cad;
+    auto fresh = makeMeshSource(open->path, std::move(load).value());
+    fresh->load_s = open->load_s + (nowSeconds() - t0);
+    mesh = out.mesh = std::move(fresh);
+    voxelizing = [&](double f) { return !progress || progress(0.4 + 0.6 * f); };
+  }
+  auto result = voxelizeSolid(mesh->mesh, params, voxelizing, &mesh->topology);
+  if (!result) return result.error();
+  out.result = std::move(result).value();
+  return out;
+}
+
+}  // namespace
+
 void startVoxelize(AppState& state, const VoxelizeParams& params) {
   if (!state.doc.mesh) {
-    reportError(state, "there is no mesh to voxelize: open an STL file first", state.doc.path);
+    reportError(state, "there is no mesh to voxelize: open a mesh or CAD file first", state.doc.path);
     return;
   }
   state.settings.resolution = params.resolution;
@@ -53,10 +87,9 @@ void startVoxelize(AppState& state, const VoxelizeParams& params) {
   state.voxelize_job_params = params;
   state.job_started = nowSeconds();
   auto mesh = state.doc.mesh;
-  state.voxelize_job.start("Voxelizing " + mesh->path.filename().string(),
-                           [mesh, params](const ProgressFn& progress) -> Result<VoxelizeResult> {
-                             return voxelizeSolid(mesh->mesh, params, progress, &mesh->topology);
-                           });
+  const char* verb = finerDeflection(*mesh, params) > 0.0 ? "Tessellating and voxelizing " : "Voxelizing ";
+  state.voxelize_job.start(verb + mesh->path.filename().string(),
+                           [mesh, params](const ProgressFn& progress) { return voxelizeMesh(mesh, params, progress); });
 }
 
 void cancelJobs(AppState& state) {
@@ -66,7 +99,9 @@ void cancelJobs(AppState& state) {
 
 bool modelBusy(const AppState& state) { return state.load_job.active() || state.voxelize_job.active(); }
 
-void applyVoxelized(AppState& state, VoxelizeResult result, const VoxelizeParams& params, double seconds) {
+void applyVoxelized(AppState& state, VoxelizeOutcome outcome, const VoxelizeParams& params, double seconds) {
+  if (outcome.mesh) state.doc.mesh = std::move(outcome.mesh);
+  VoxelizeResult& result = outcome.result;
   auto origin = std::make_shared<ModelOrigin>();
   origin->mode_used = fillModeName(result.mode_used);
   origin->mode_reason = result.mode_reason;

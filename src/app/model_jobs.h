@@ -8,7 +8,8 @@
 
 namespace vox::app {
 
-// Voxelizes the open mesh in the background; the current model stays on screen until the new one is ready.
+// Voxelizes the open mesh in the background; the current model stays on screen until the new one is ready. A CAD
+// file whose open tessellation is coarser than the grid asks (io::cadDeflectionFor) is tessellated again first.
 void startVoxelize(AppState& state, const VoxelizeParams& params);
 // Memory a voxelization may take without a second thought: 4 GiB, or a quarter of the machine's memory if less.
 uint64_t comfortableVoxelizeBytes();
@@ -21,7 +22,7 @@ void cancelJobs(AppState& state);
 bool modelBusy(const AppState& state);  // loading or voxelizing
 
 // A finished voxelization becomes the model (updateDocument), undoably, with where it came from (mode, reason,
-// warnings, disputed voxels, `seconds` it took).
-void applyVoxelized(AppState& state, VoxelizeResult result, const VoxelizeParams& params, double seconds);
+// warnings, disputed voxels, `seconds` it took); a new tessellation it made becomes the document's mesh.
+void applyVoxelized(AppState& state, VoxelizeOutcome outcome, const VoxelizeParams& params, double seconds);
 
 }  // namespace vox::app

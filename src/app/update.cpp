@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "app/document.h"
+#include "app/export_volume.h"
 #include "app/messages.h"
 #include "app/model_jobs.h"
 #include "app/skin.h"
@@ -52,6 +53,7 @@ void updateDocument(AppState& state) {
   state.mass.poll();
   state.xray_result.poll();
   requestThickness(state);
+  pollVolumeExport(state);
   if (!state.doc.model) return;
 
   const ModelSnapshot& m = *state.doc.model;

@@ -7,6 +7,7 @@
 
 #include "vox/analysis/assembly.h"
 #include "vox/core/mesh_bodies.h"
+#include "vox/io/mesh_file.h"
 #include "vox/io/voxel_file.h"
 #include "vox/voxelize/bodies.h"
 
@@ -16,10 +17,11 @@ namespace {
 struct Input {
   std::string path, name;
   std::optional<VoxelGrid> grid;  // a voxel file
-  std::optional<LoadedMesh> mesh;
+  std::optional<io::MeshFileLoad> mesh;
 };
 
-Result<std::vector<Input>> readInputs(const std::vector<std::string>& files, Output& out, double& load_s) {
+Result<std::vector<Input>> readInputs(const std::vector<std::string>& files, const MeshOptions& options, Output& out,
+                                      double& load_s) {
   const double t0 = nowSeconds();
   std::vector<Input> inputs;
   for (const std::string& f : files) {
@@ -31,7 +33,7 @@ Result<std::vector<Input>> readInputs(const std::vector<std::string>& files, Out
       if (!g) return g.error();
       in.grid = std::move(g).value();
     } else {
-      auto m = loadMesh(f, out);
+      auto m = loadMesh(f, options, out);
       if (!m) return m.error();
       m->mesh.name = in.name;
       in.mesh = std::move(m).value();
@@ -134,7 +136,7 @@ Status addMeshInput(const Input& in, const GridPlacement& whole, const VoxelizeP
 Result<PartsOnLattice> placeInputs(const std::vector<std::string>& files, const MeshOptions& options, bool bodies,
                                    Output& out, int connectivity) {
   PartsOnLattice parts;
-  auto inputs = readInputs(files, out, parts.load_s);
+  auto inputs = readInputs(files, options, out, parts.load_s);
   if (!inputs) return inputs.error();
   auto params = voxelizeParams(options);
   if (!params) return params.error();
@@ -151,7 +153,15 @@ Result<PartsOnLattice> placeInputs(const std::vector<std::string>& files, const 
       }
     }
   }
-  parts.lattice = Lattice{whole.frame.origin, whole.frame.voxel_size, any_voxels ? whole.frame.units : params->units};
+  // Units: the voxel files', else --units, else what the first mesh file says (CAD files: mm).
+  std::string units = params->units;
+  if (any_voxels) {
+    units = whole.frame.units;
+  } else if (options.units.empty()) {
+    units = inputs->front().mesh->units;
+  }
+  parts.lattice = Lattice{whole.frame.origin, whole.frame.voxel_size, units};
+  params->units = units;
   whole.frame.units = parts.lattice.units;
   if (!any_voxels) parts.frame = Box3i{glm::ivec3(0), glm::ivec3(whole.dims.nx, whole.dims.ny, whole.dims.nz)};
   const bool several = files.size() > 1;

@@ -10,10 +10,12 @@
 #include "cli/model_input.h"
 #include "vox/analysis/analysis.h"
 #include "vox/analysis/distance.h"
+#include "vox/analysis/scalar_fields.h"
 #include "vox/core/units.h"
 #include "vox/io/figure.h"
 #include "vox/io/file_util.h"
 #include "vox/io/image_io.h"
+#include "vox/io/volume_export.h"
 #include "vox/io/voxel_file.h"
 
 namespace vox::cli {
@@ -78,7 +80,22 @@ struct PeelOptions {
   bool all = false;
   double distance = -1.0;  // model units; >= 0: round skin removal instead of layers
   std::string out;
+  std::string depth_out;  // --depth: every voxel's skin layer as a volume
 };
+
+// -o and --depth together, written as one: the remaining voxels (.vxm or .binvox) and the depth volume.
+Status writePeelFiles(const PeelOptions& o, const DepthMap& depth, const VoxelGrid& grid, const VoxelGrid& remaining) {
+  std::vector<io::PendingFile> files;
+  if (!o.out.empty()) {
+    const std::string ext = io::lowerExtension(o.out);
+    if (ext != ".vxm" && ext != ".binvox") return io::saveVoxelFile(remaining, o.out);  // its error names the types
+    files.push_back({o.out, ext == ".vxm" ? io::encodeVxm(remaining) : io::encodeBinvox(remaining)});
+  }
+  auto bytes = encodeFieldFile("depth", depthField(depth, grid), o.depth_out);
+  if (!bytes) return bytes.error();
+  files.push_back({o.depth_out, std::move(bytes).value()});
+  return io::writeFilesAtomic(files);
+}
 
 // --distance D: every filled voxel within D of the outside goes (the Euclidean peel, docs/accuracy.md).
 int runPeelByDistance(const PeelOptions& o, const LoadedModel& model, Output& out) {
@@ -101,6 +118,10 @@ int runPeelByDistance(const PeelOptions& o, const LoadedModel& model, Output& ou
 
 int runPeel(const PeelOptions& o) {
   Output out(o.c.json);
+  if (!o.depth_out.empty()) {
+    if (o.distance >= 0.0) return out.fail(kExitUsage, "--depth goes with --layers or --all, not --distance");
+    if (const std::string why = fieldOutputProblem(o.depth_out); !why.empty()) return out.fail(kExitUsage, why);
+  }
   auto model = loadModel(o.c.file, o.c.mesh, out);
   if (!model) return out.fail(model.error());
   if (o.distance >= 0.0) return runPeelByDistance(o, *model, out);
@@ -112,7 +133,9 @@ int runPeel(const PeelOptions& o) {
   if (!depth) return out.fail(depth.error());
   const PeelResult result = depth->peeled(p.all ? depth->layers() : p.layers);
   const PeelResult* r = &result;
-  if (!o.out.empty()) {
+  if (!o.depth_out.empty()) {
+    if (auto s = writePeelFiles(o, *depth, model->grid, r->remaining); !s) return out.fail(s.error());
+  } else if (!o.out.empty()) {
     if (auto s = io::saveVoxelFile(r->remaining, o.out); !s) return out.fail(s.error());
   }
   auto& d = out.data();
@@ -121,6 +144,7 @@ int runPeel(const PeelOptions& o) {
   d["remaining"] = r->remaining_count;
   d["core_voxels"] = r->core_voxels;
   if (!o.out.empty()) d["output"] = o.out;
+  if (!o.depth_out.empty()) d["depth"] = o.depth_out;
   // The window's words: a model has L skin layers, the last (layer L) is the core.
   const size_t layers = r->removed_per_layer.size();
   std::string line =
@@ -138,23 +162,32 @@ struct XrayOptions {
   CommonOptions c;
   XrayParams params;
   std::string out, csv;
+  std::string volume;  // --volume: the X-ray as a one-voxel-thick volume
   int32_t scale = 1;
 };
 
 int runXray(const XrayOptions& o) {
   Output out(o.c.json);
   if (const std::string why = pngOutputProblem(o.out); !why.empty()) return out.fail(kExitUsage, why);
+  if (!o.volume.empty()) {
+    if (const std::string why = fieldOutputProblem(o.volume); !why.empty()) return out.fail(kExitUsage, why);
+  }
   auto model = loadModel(o.c.file, o.c.mesh, out);
   if (!model) return out.fail(model.error());
   auto x = computeXray(model->grid, o.params);
   if (!x) return out.fail(x.error());
-  // The image and the CSV are written as one: both or, on any failure, neither.
+  // The image, the CSV and the volume are written as one: all or, on any failure, none.
   auto png = io::encodePng(io::drawScalarMapFigure(x->thickness, x->max, xrayLegend(*x), o.scale).image, o.out);
   if (!png) return out.fail(png.error());
   std::vector<io::PendingFile> files{{o.out, std::move(png).value()}};
   if (!o.csv.empty()) {
     const std::string csv = xrayCsv(*x);
     files.push_back({o.csv, std::vector<uint8_t>(csv.begin(), csv.end())});
+  }
+  if (!o.volume.empty()) {
+    auto bytes = encodeFieldFile("xray", xrayField(*x, model->grid), o.volume);
+    if (!bytes) return out.fail(bytes.error());
+    files.push_back({o.volume, std::move(bytes).value()});
   }
   if (auto s = io::writeFilesAtomic(files); !s) return out.fail(s.error());
   const double h = model->grid.voxelSize();
@@ -174,6 +207,7 @@ int runXray(const XrayOptions& o) {
   d["mean_mm"] = x->mean * h * to_mm;
   d["output"] = o.out;
   if (!o.csv.empty()) d["csv"] = o.csv;
+  if (!o.volume.empty()) d["volume"] = o.volume;
   out.say(std::string("x-ray ") + xrayModeName(o.params.mode) + " along " + axisName(o.params.axis) + ": " +
           std::to_string(x->rays_hit) + " rays hit; min " + std::to_string(x->min) + ", max " + std::to_string(x->max) +
           ", mean " + significant(x->mean) + " voxels (voxel size " + significant(h) + " " + model->grid.frame().units +
@@ -288,6 +322,9 @@ void addPeelCommand(CLI::App& sub, CommandContext& ctx) {
   layers->excludes(all);
   distance->excludes(layers)->excludes(all);
   sub.add_option("-o,--output", o->out, "Write the remaining voxels to this voxel file");
+  sub.add_option("--depth", o->depth_out,
+                 "Write every voxel's skin layer (1 = the outer skin, the core last; 0 = empty or deeper than the "
+                 "layers peeled) as a volume: .nrrd, .vti or .vdb");
   sub.callback([o, layers, all, distance, &ctx] {
     if (layers->count() == 0 && all->count() == 0 && distance->count() == 0) {
       std::fprintf(stderr, "voxmod peel: give --layers N, --all or --distance D\n");
@@ -307,6 +344,9 @@ void addXrayCommand(CLI::App& sub, CommandContext& ctx) {
       ->transform(xrayModeWords());
   sub.add_option("-o,--output", o->out, "Output PNG (colour scale and legend)")->required();
   sub.add_option("--csv", o->csv, "Also write the per-ray thickness as CSV");
+  sub.add_option("--volume", o->volume,
+                 "Also write the per-ray thickness (model units) as a one-voxel-thick volume in the model's place: "
+                 ".nrrd, .vti or .vdb");
   sub.add_option("--scale", o->scale, "Pixels per ray (default 1)")->check(CLI::Range(1, 64));
   sub.callback([o, &ctx] { ctx.exit_code = runXray(*o); });
 }

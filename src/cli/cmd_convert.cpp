@@ -1,6 +1,6 @@
 // voxmod convert IN OUT: formats by extension (SPEC section 8). A mesh IN is voxelized first; a voxel OUT (.vxm,
-// .binvox) is written as it is, a mesh OUT (.stl, .ply, .obj, .3mf) is the model's surface
-// (vox/analysis/surface_mesh.h).
+// .binvox) is written as it is, a volume OUT (.nrrd, .vti, .vdb, .vox) holds the voxels with their placement, and a
+// mesh OUT (.stl, .ply, .obj, .3mf) is the model's surface (vox/analysis/surface_mesh.h).
 #include <filesystem>
 
 #include <CLI/CLI.hpp>
@@ -10,6 +10,8 @@
 #include "cli/model_input.h"
 #include "vox/analysis/surface_mesh.h"
 #include "vox/io/mesh_export.h"
+#include "vox/io/magicavoxel.h"
+#include "vox/io/volume_export.h"
 #include "vox/io/voxel_file.h"
 
 namespace vox::cli {
@@ -45,12 +47,39 @@ Status writeSurface(const ConvertOptions& o, const VoxelGrid& grid, Output& out)
   return io::saveMesh(*mesh, o.out);
 }
 
+// A volume OUT (.nrrd, .vti, .vdb, .vox: io/volume_export.h): the model's voxels with their placement.
+int convertToVolume(const ConvertOptions& o, Output& out) {
+  auto model = loadModel(o.in, o.mesh, out);
+  if (!model) return out.fail(model.error());
+  const double t0 = nowSeconds();
+  if (auto s = io::saveVolume(io::voxelsOnly(model->grid), o.out, terminalProgress("writing")); !s) {
+    return out.fail(s.error());
+  }
+  auto& d = out.data();
+  d["input"] = o.in;
+  d["output"] = o.out;
+  d["format"] = std::string(io::volumeExtension(*io::volumeFormatOf(o.out))).substr(1);  // "vti"
+  d["dims"] = {model->grid.nx(), model->grid.ny(), model->grid.nz()};
+  d["filled"] = model->grid.filledCount();
+  if (io::volumeFormatOf(o.out) == io::VolumeFormat::kVox) {
+    d["models"] = io::planMagicaVoxel(model->grid).size();  // 256^3 blocks holding voxels
+  }
+  d["write_s"] = nowSeconds() - t0;
+  out.say("wrote " + o.out);
+  return out.finish();
+}
+
 int runConvert(const ConvertOptions& o) {
   Output out(o.json);
+  if (io::isVolumeFile(o.out)) {
+    if (o.voxel_faces || o.smooth)
+      return out.fail(kExitUsage, "--voxel-faces and --smooth apply to a surface mesh OUT");
+    return convertToVolume(o, out);
+  }
   const bool surface = io::isMeshExportFile(o.out);
   if (!io::isVoxelFile(o.out) && !surface) {
-    return out.fail(kExitUsage, o.out + ": unknown output format (voxels: .vxm, .binvox; surface: " +
-                                    io::meshExportExtensions() + ")");
+    return out.fail(kExitUsage, o.out + ": unknown output format (voxels: .vxm, .binvox; volumes: " +
+                                    io::volumeExtensionList() + "; surface: " + io::meshExportExtensions() + ")");
   }
   if ((o.voxel_faces || o.smooth) && !surface) {
     return out.fail(kExitUsage, "--voxel-faces and --smooth apply to a surface mesh OUT");
@@ -79,8 +108,10 @@ int runConvert(const ConvertOptions& o) {
 
 void addConvertCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<ConvertOptions>();
-  sub.add_option("IN", o->in, "Voxel file (.vxm, .binvox) or mesh (.stl)")->required();
-  sub.add_option("OUT", o->out, "Output: voxel file (.vxm, .binvox) or the surface as a mesh (.stl, .ply, .obj, .3mf)")
+  sub.add_option("IN", o->in, "Voxel file (.vxm, .binvox), mesh or CAD file")->required();
+  sub.add_option("OUT", o->out,
+                 "Output: voxel file (.vxm, .binvox), volume (.nrrd, .vti, .vdb, .vox) or the surface as a mesh (.stl, "
+                 ".ply, .obj, .3mf)")
       ->required();
   sub.add_flag("--voxel-faces", o->voxel_faces, "Surface mesh: two triangles per voxel face (no merging)");
   sub.add_flag("--smooth", o->smooth, "Surface mesh: smooth (surface nets), within half a voxel of the voxels");

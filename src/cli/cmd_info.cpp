@@ -36,7 +36,11 @@ int runInfo(const InfoOptions& o) {
   d["memory_bytes"] = g.memoryBytes();
   if (!g.frame().source.empty()) d["source"] = g.frame().source;
   if (model->from_mesh) {
+    d["format"] = model->format;
     d["triangles"] = model->triangles;
+    d["bodies"] = model->bodies;
+    if (!model->file_units.empty()) d["file_units"] = model->file_units;
+    if (model->deflection > 0) d["deflection"] = model->deflection;
     d["watertight"] = model->topology.watertight();
     d["boundary_edges"] = model->topology.boundary_edges;
     d["nonmanifold_edges"] = model->topology.nonmanifold_edges;
@@ -46,6 +50,8 @@ int runInfo(const InfoOptions& o) {
   if (!out.json()) {
     out.say(o.file + ":");
     if (model->from_mesh) {
+      out.say("  format      " + model->format + (model->file_units.empty() ? "" : ", unit " + model->file_units));
+      out.say("  bodies      " + std::to_string(model->bodies));
       out.say("  mesh        " + std::to_string(model->triangles) + " triangles, " +
               (model->topology.watertight()
                    ? std::string("watertight")
@@ -66,7 +72,7 @@ int runInfo(const InfoOptions& o) {
 
 void addInfoCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<InfoOptions>();
-  sub.add_option("FILE", o->file, "Mesh (.stl) or voxel file (.vxm, .binvox)")->required();
+  sub.add_option("FILE", o->file, kFileHelp)->required();
   sub.add_flag("--json", o->json, "Print one JSON object on stdout");
   addMeshOptions(sub, o->mesh);
   sub.callback([o, &ctx] { ctx.exit_code = runInfo(*o); });

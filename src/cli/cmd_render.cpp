@@ -94,7 +94,7 @@ int runRender(const RenderOptions& o) {
 
 void addRenderCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<RenderOptions>();
-  sub.add_option("FILE", o->file, "Voxel file (.vxm, .binvox) or mesh (.stl, voxelized with --res)")->required();
+  sub.add_option("FILE", o->file, kFileHelp)->required();
   sub.add_option("-o,--output", o->out, "Output PNG")->required();
   sub.add_option("--width", o->width, "Image width in pixels (default 800)")->check(CLI::Range(1, 16384));
   sub.add_option("--height", o->height, "Image height in pixels (default 600)")->check(CLI::Range(1, 16384));

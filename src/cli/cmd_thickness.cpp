@@ -1,6 +1,6 @@
 // voxmod thickness (docs/conventions.md, "Distance and thickness"): the exact distance field, local thickness with
-// its statistics, thin walls under --min-wall and hot spots; the fields as NRRD and a thickness section as PNG. The
-// files asked for are written together or not at all.
+// its statistics, thin walls under --min-wall and hot spots; the fields as volumes (NRRD, VTK image data or OpenVDB,
+// by extension) and a thickness section as PNG. The files asked for are written together or not at all.
 #include <algorithm>
 #include <optional>
 
@@ -15,7 +15,7 @@
 #include "vox/io/figure.h"
 #include "vox/io/file_util.h"
 #include "vox/io/image_io.h"
-#include "vox/io/nrrd.h"
+#include "vox/io/volume_export.h"
 
 namespace vox::cli {
 namespace {
@@ -88,6 +88,10 @@ Result<std::vector<uint8_t>> sectionPng(const Thickness& t, const SectionParams&
 
 int runThickness(const ThicknessOptions& o) {
   Output out(o.c.json);
+  for (const std::string* field : {&o.out, &o.distance_out}) {
+    if (field->empty()) continue;
+    if (const std::string why = fieldOutputProblem(*field); !why.empty()) return out.fail(kExitUsage, why);
+  }
   if (!o.png.empty()) {
     if (const std::string why = pngOutputProblem(o.png); !why.empty()) return out.fail(kExitUsage, why);
     if (o.section_axis.empty()) return out.fail(kExitUsage, "--png needs --section-axis and --section-index");
@@ -128,7 +132,7 @@ int runThickness(const ThicknessOptions& o) {
 
   std::vector<io::PendingFile> files;
   if (!o.out.empty()) {
-    auto bytes = io::encodeNrrd(thicknessField(*thickness));
+    auto bytes = encodeFieldFile("thickness", thicknessField(*thickness), o.out, terminalProgress("writing"));
     if (!bytes) return out.fail(bytes.error());
     files.push_back({o.out, std::move(bytes).value()});
   }
@@ -139,7 +143,8 @@ int runThickness(const ThicknessOptions& o) {
       if (!c) return out.fail(c.error());
       clearance = std::move(c).value();
     }
-    auto bytes = io::encodeNrrd(distanceField(*distance, clearance ? &*clearance : nullptr));
+    auto bytes = encodeFieldFile("distance", distanceField(*distance, clearance ? &*clearance : nullptr),
+                                 o.distance_out, terminalProgress("writing"));
     if (!bytes) return out.fail(bytes.error());
     files.push_back({o.distance_out, std::move(bytes).value()});
   }
@@ -169,8 +174,8 @@ void addThicknessCommand(CLI::App& sub, CommandContext& ctx) {
   addCommonOptions(sub, o->c);
   sub.add_option("--min-wall", o->min_wall, "Report walls thinner than this (model units), grouped in regions")
       ->check(CLI::PositiveNumber);
-  sub.add_option("-o,--output", o->out, "Write the local thickness (model units) as NRRD");
-  sub.add_option("--distance", o->distance_out, "Write the distance to the surface (model units) as NRRD");
+  sub.add_option("-o,--output", o->out, "Write the local thickness (model units): .nrrd, .vti or .vdb");
+  sub.add_option("--distance", o->distance_out, "Write the distance to the surface (model units): .nrrd, .vti or .vdb");
   sub.add_flag("--signed", o->signed_distance, "With --distance: empty voxels hold minus their distance to the part");
   auto* axis = sub.add_option("--section-axis", o->section_axis, "Section for --png: x, y or z")
                    ->check(CLI::IsMember({"x", "y", "z"}));

@@ -1,6 +1,7 @@
 // voxmod voxelize MESH --res R | --voxel-size H [--mode M] [--threads N] -o OUT (docs/conventions.md, "Command line").
 // JSON keys: triangles, dims, voxel_size, origin, filled, volume, load_s, voxelize_s, write_s, total_s, warnings;
-// also mode, mode_reason, disputed_voxels, strays_removed, grid_bytes and peak_rss_bytes.
+// also format, bodies, units, file_units, deflection, mode, mode_reason, disputed_voxels, strays_removed, grid_bytes
+// and peak_rss_bytes.
 #include <sys/resource.h>
 
 #include <new>
@@ -10,7 +11,6 @@
 #include "cli/cmd_list.h"
 #include "cli/commands.h"
 #include "cli/model_input.h"
-#include "vox/io/stl.h"
 #include "vox/io/voxel_file.h"
 
 namespace vox::cli {
@@ -32,21 +32,20 @@ int runVoxelize(const VoxelizeOptions& o) {
   Output out(o.json);
   const double t0 = nowSeconds();
   if (!io::isVoxelFile(o.out)) return out.fail(kExitUsage, o.out + ": unknown output format (use .vxm or .binvox)");
-  auto stl = io::loadStl(o.mesh);
-  if (!stl) return out.fail(stl.error());
+  auto mesh = loadMesh(o.mesh, o.mesh_options, out);
+  if (!mesh) return out.fail(mesh.error());
   const double t_loaded = nowSeconds();
-  for (const std::string& w : stl->warnings) out.warn(w);
-  for (const std::string& n : stl->notes) out.note(n);
 
   auto params = voxelizeParams(o.mesh_options);
   if (!params) return out.fail(params.error());
-  auto result = voxelizeSolid(stl->mesh, *params, terminalProgress("voxelizing"), &stl->topology);
+  params->units = mesh->units;
+  auto result = voxelizeSolid(mesh->mesh, *params, terminalProgress("voxelizing"), &mesh->topology);
   if (!result) return out.fail(Error{result.error().code, o.mesh + ": " + result.error().message});
   const double t_voxelized = nowSeconds();
   for (const std::string& w : result->warnings) out.warn(w);
   // The mesh is no longer needed: release it before the file is encoded, so writing never adds to the peak.
-  const int64_t triangles = int64_t(stl->mesh.triangles.size());
-  std::vector<Triangle>().swap(stl->mesh.triangles);
+  const int64_t triangles = int64_t(mesh->mesh.triangles.size());
+  std::vector<Triangle>().swap(mesh->mesh.triangles);
   VoxelGrid& g = result->grid;
   g.frame().source = std::filesystem::path(o.mesh).filename().string();
 
@@ -72,12 +71,17 @@ int runVoxelize(const VoxelizeOptions& o) {
   auto& d = out.data();
   d["mesh"] = o.mesh;
   d["output"] = o.out;
+  d["format"] = mesh->format_detail;
   d["triangles"] = triangles;
+  d["bodies"] = mesh->bodies.size();
   d["dims"] = {g.nx(), g.ny(), g.nz()};
   d["voxel_size"] = h;
   d["origin"] = jsonVec3(g.frame().origin);
   d["filled"] = filled;
   d["volume"] = double(filled) * h * h * h;
+  d["units"] = g.frame().units;
+  if (!mesh->file_units.empty()) d["file_units"] = mesh->file_units;
+  if (mesh->deflection > 0) d["deflection"] = mesh->deflection;
   d["mode"] = fillModeName(result->mode_used);
   d["mode_reason"] = result->mode_reason;
   d["disputed_voxels"] = result->disputed_count;
@@ -102,7 +106,8 @@ int runVoxelize(const VoxelizeOptions& o) {
 
 void addVoxelizeCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<VoxelizeOptions>();
-  sub.add_option("MESH", o->mesh, "Input mesh (.stl, binary or ASCII)")->required();
+  sub.add_option("MESH", o->mesh, "Input mesh or CAD file: .stl .obj .ply .3mf .gltf .glb .off .step .stp .iges .igs")
+      ->required();
   sub.add_option("-o,--output", o->out, "Output voxel file (.vxm or .binvox)")->required();
   sub.add_flag("--remove-strays", o->mesh_options.params.remove_strays,
                "Remove one- and two-dimensional stray voxels (four or five free faces)");

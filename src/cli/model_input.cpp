@@ -8,13 +8,16 @@
 #include <CLI/CLI.hpp>
 
 #include "vox/core/units.h"
-#include "vox/io/stl.h"
 #include "vox/io/voxel_file.h"
 
 namespace vox::cli {
 
+const char* const kFileHelp =
+    "Voxel file (.vxm, .binvox), or a mesh or CAD file voxelized with --res: .stl .obj .ply .3mf .gltf .glb .off "
+    ".step .stp .iges .igs";
+
 void addCommonOptions(CLI::App& sub, CommonOptions& c, const std::string& mode_names) {
-  sub.add_option("FILE", c.file, "Voxel file (.vxm, .binvox) or mesh (.stl, voxelized with --res)")->required();
+  sub.add_option("FILE", c.file, kFileHelp)->required();
   sub.add_flag("--json", c.json, "Print one JSON object on stdout");
   addMeshOptions(sub, c.mesh, mode_names);
 }
@@ -30,8 +33,8 @@ void addMeshOptions(CLI::App& sub, MeshOptions& options, const std::string& mode
           ->check(CLI::IsMember(fillModeNameList()));
   options.mesh_only = {res, size, mode};
   sub.add_option("--units", options.units,
-                 "Length units of the model's coordinates: mm, cm, m, in (STL files carry none; default: the "
-                 "voxel file's, or 'model')")
+                 "Length units of the file's coordinates: mm, cm, m, in (STL, OBJ, PLY and OFF carry none; "
+                 "default: the file's own, or 'model'). CAD files are converted from it to millimetres")
       ->check(CLI::IsMember(std::vector<std::string>(kLengthUnits.begin(), kLengthUnits.end())));
   sub.add_option("--threads", options.params.threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(0, 1024));
@@ -64,17 +67,22 @@ Result<VoxelizeParams> voxelizeParams(const MeshOptions& options) {
   return params;
 }
 
-Result<LoadedMesh> loadMesh(const std::filesystem::path& file, Output& out) {
-  const double t0 = nowSeconds();
-  auto stl = io::loadStl(file);
-  if (!stl) return stl.error();
-  for (const std::string& w : stl->warnings) out.warn(w);
-  for (const std::string& n : stl->notes) out.note(n);
-  LoadedMesh m;
-  m.mesh = std::move(stl->mesh);
-  m.topology = stl->topology;
-  m.load_s = nowSeconds() - t0;
-  return m;
+io::MeshFileOptions meshFileOptions(const MeshOptions& options) {
+  io::MeshFileOptions o;
+  o.resolution = options.params.resolution;
+  o.voxel_size = options.params.voxel_size;
+  o.units = options.units;
+  if (options.memory_limit_mib > 0) o.memory_limit_bytes = uint64_t(options.memory_limit_mib) << 20;
+  o.progress = terminalProgress("reading");  // only CAD files report progress: reading, healing, tessellating
+  return o;
+}
+
+Result<io::MeshFileLoad> loadMesh(const std::filesystem::path& file, const MeshOptions& options, Output& out) {
+  auto mesh = io::loadMeshFile(file, meshFileOptions(options));
+  if (!mesh) return mesh.error();
+  for (const std::string& w : mesh->warnings) out.warn(w);
+  for (const std::string& n : mesh->notes) out.note(n);
+  return mesh;
 }
 
 Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptions& options, Output& out) {
@@ -94,17 +102,22 @@ Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptio
     m.load_s = nowSeconds() - t0;
     return m;
   }
-  auto stl = loadMesh(file, out);
-  if (!stl) return stl.error();
-  m.load_s = stl->load_s;
+  auto mesh = loadMesh(file, options, out);
+  if (!mesh) return mesh.error();
+  m.load_s = nowSeconds() - t0;
   m.from_mesh = true;
-  m.triangles = int64_t(stl->mesh.triangles.size());
-  m.topology = stl->topology;
+  m.triangles = int64_t(mesh->mesh.triangles.size());
+  m.topology = mesh->topology;
+  m.format = mesh->format_detail;
+  m.bodies = int64_t(mesh->bodies.size());
+  m.file_units = mesh->file_units;
+  m.deflection = mesh->deflection;
 
   auto params = voxelizeParams(options);
   if (!params) return params.error();
+  params->units = mesh->units;
   const double t1 = nowSeconds();
-  auto result = voxelizeSolid(stl->mesh, *params, terminalProgress("voxelizing"), &stl->topology);
+  auto result = voxelizeSolid(mesh->mesh, *params, terminalProgress("voxelizing"), &mesh->topology);
   if (!result) {
     return makeError(result.error().code, file.filename().string() + ": " + result.error().message);
   }

@@ -1,6 +1,7 @@
 #pragma once
-// FILE arguments: a voxel file (.vxm, .binvox) is read; anything else is read as an STL mesh and voxelized with
-// the --res / --voxel-size / --mode / --threads options (docs/conventions.md, "Command line": default resolution 200).
+// FILE arguments: a voxel file (.vxm, .binvox) is read; anything else is read as a mesh or CAD file
+// (io::loadMeshFile: STL, OBJ, PLY, 3MF, glTF, OFF, STEP, IGES) and voxelized with the --res / --voxel-size / --mode /
+// --threads options (docs/conventions.md, "Command line": default resolution 200).
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -10,6 +11,7 @@
 #include "vox/core/mesh.h"
 #include "vox/core/text.h"
 #include "vox/core/voxel_grid.h"
+#include "vox/io/mesh_file.h"
 #include "vox/voxelize/voxelize.h"
 
 namespace CLI {
@@ -38,25 +40,30 @@ struct LoadedModel {
   int64_t triangles = 0;  // when from_mesh
   MeshTopology topology;  // when from_mesh
   std::string mode_used;  // when from_mesh
+  // When from_mesh: the file's format ("binary STL", "STEP (AUTOMOTIVE_DESIGN)"), bodies, the unit it declares and,
+  // for CAD files, the tessellation's deflection (model units).
+  std::string format;
+  int64_t bodies = 0;
+  std::string file_units;
+  double deflection = 0.0;
   double load_s = 0.0, voxelize_s = 0.0;
 };
-
-// A mesh FILE as read, with its topology. The one place the CLI reads meshes: every subcommand that takes a mesh
-// (loadModel, the assembly subcommands) comes through here, so a format added here reaches all of them.
-struct LoadedMesh {
-  TriangleMesh mesh;
-  MeshTopology topology;
-  double load_s = 0.0;
-};
-// Reads a mesh FILE; its warnings and notes go through `out`.
-Result<LoadedMesh> loadMesh(const std::filesystem::path& file, Output& out);
 
 // The voxelizer's params from the options (--mode, --memory-limit, --units on top of --res / --voxel-size /
 // --threads), for every subcommand that voxelizes a mesh.
 Result<VoxelizeParams> voxelizeParams(const MeshOptions& options);
 
+// What io::loadMeshFile needs from the options: the grid (CAD files are tessellated for its voxel size), --units,
+// --memory-limit; progress on stderr when it is a terminal.
+io::MeshFileOptions meshFileOptions(const MeshOptions& options);
+// Reads a mesh or CAD file; its warnings and notes go through `out`.
+Result<io::MeshFileLoad> loadMesh(const std::filesystem::path& file, const MeshOptions& options, Output& out);
+
 // Reads FILE; messages and warnings go through `out`. Progress goes to stderr when it is a terminal.
 Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptions& options, Output& out);
+
+// The FILE argument's help: which files a subcommand reads.
+extern const char* const kFileHelp;
 
 // What every analysis subcommand takes: FILE (a voxel file, or a mesh voxelized with the mesh options) and --json.
 struct CommonOptions {

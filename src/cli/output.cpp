@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "vox/io/file_util.h"
+#include "vox/io/volume_export.h"
 
 namespace vox::cli {
 
@@ -28,6 +29,20 @@ std::string pngOutputProblem(const std::string& path) {
   if (io::lowerExtension(path) == ".png") return {};
   return path + ": unknown image format '" + std::filesystem::path(path).extension().string() +
          "' (voxmod writes PNG images: use a .png file name)";
+}
+
+std::string fieldOutputProblem(const std::string& path) {
+  const auto format = io::volumeFormatOf(path);
+  if (format && io::holdsFields(*format)) return {};
+  return path + ": scalar fields are written as " + io::volumeExtensionList(true) +
+         (format ? " (a .vox file holds voxels only)" : "");
+}
+
+Result<std::vector<uint8_t>> encodeFieldFile(const std::string& name, const ScalarField& field, const std::string& path,
+                                             const ProgressFn& progress) {
+  const auto format = io::volumeFormatOf(path);
+  if (!format) return makeError(ErrorCode::kInvalidArgument, fieldOutputProblem(path));
+  return io::encodeVolume(io::oneField(name, field), *format, path, progress);
 }
 
 void Output::note(const std::string& line) {

@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "vox/core/progress.h"
 #include "vox/core/result.h"
+#include "vox/core/scalar_field.h"
 
 namespace vox::cli {
 
@@ -44,6 +46,12 @@ int exitCodeFor(const Error& e);
 // Empty when `path` ends in .png (any case); otherwise the message that refuses it as a usage error, as convert
 // refuses an unknown format: voxmod writes images only as PNG and never puts PNG bytes under another name.
 std::string pngOutputProblem(const std::string& path);
+// Empty when `path` names a volume format that holds scalar fields (.nrrd, .vti, .vdb: vox/io/volume_export.h);
+// otherwise the message that refuses it as a usage error (a .vox file holds voxels only).
+std::string fieldOutputProblem(const std::string& path);
+// A scalar field as the bytes of the volume file `path` names (checked first with fieldOutputProblem), under `name`.
+Result<std::vector<uint8_t>> encodeFieldFile(const std::string& name, const ScalarField& field, const std::string& path,
+                                             const ProgressFn& progress = {});
 
 // A number for a human line: `digits` significant digits ("%.6g"): 0.000279412, 1e-09, 12345.7; never "0.000000".
 std::string significant(double v, int digits = 6);

@@ -52,6 +52,8 @@ Result<std::vector<uint8_t>> encode(void* data, int type, const Dims& dims, cons
   const glm::dvec3 c = frame.voxelCentre(0, 0, 0);
   const double origin[3] = {c.x, c.y, c.z};
   if (nrrdSpaceOriginSet(n.get(), origin)) return makeError(ErrorCode::kInvalidArgument, "NRRD: " + teemError());
+  // The length unit of the space (SPEC 6 leaves it open; NRRD's "space units" field): "mm", ..., "model" when unknown.
+  for (unsigned i = 0; i < 3; ++i) n->spaceUnits[i] = airStrdup(frame.units.c_str());
   int centers[3] = {nrrdCenterCell, nrrdCenterCell, nrrdCenterCell};
   nrrdAxisInfoSet_nva(n.get(), nrrdAxisInfoCenter, centers);
 
@@ -132,6 +134,7 @@ Result<ScalarField> loadNrrdField(const std::filesystem::path& path) {
     frame.voxel_size = h;
     const glm::dvec3 c0(n->spaceOrigin[0], n->spaceOrigin[1], n->spaceOrigin[2]);
     frame.origin = c0 - glm::dvec3(0.5 * h);
+    if (n->spaceUnits[0] && *n->spaceUnits[0]) frame.units = n->spaceUnits[0];
   }
   ScalarField out;
   out.dims = Dims{int32_t(sx), int32_t(sy), int32_t(sz)};

@@ -10,8 +10,9 @@
 //     >= 0x09, so the count would be >= 0x09090909 and the file >= 7.5 GB.
 //  2. else it starts with "solid" (after whitespace / a UTF-8 byte-order mark) and holds no NUL byte -> ASCII.
 //     Text never contains NUL; binary triangle data almost always does (the attribute bytes are usually zero).
-//  3. else a file whose first bytes name another format (PLY, 3MF, STEP, ...) is refused as not an STL, and so is
-//     one whose count bytes are text and do not fit its size (text, but not an ASCII STL).
+//  3. else a file whose first bytes name another format (PLY, 3MF, STEP, ...; src/io/mesh_sniff.cpp) is refused as
+//     not an STL, naming that format, and so is one whose count bytes are text and do not fit its size (text, but
+//     not an ASCII STL).
 //  4. else binary: shorter than the count says -> truncated; longer -> the declared triangles are read and the extra
 //     bytes ignored with a warning (as other STL readers do).
 // ASCII is whitespace-separated: line breaks are not required (a whole file may be one line); a solid's name runs to
@@ -25,6 +26,9 @@
 #include <cmath>
 #include <cstring>
 
+#include "io/mesh_findings.h"
+#include "vox/core/parallel.h"
+#include "io/mesh_sniff.h"
 #include "vox/io/file_util.h"
 
 namespace vox::io {
@@ -239,24 +243,6 @@ bool startsWithSolid(std::span<const uint8_t> bytes) {
 
 const char* const kNotAscii = " (it starts with 'solid' but holds binary data, so it is not ASCII)";
 
-// A file of another format, told by its first bytes, so that the message names it rather than a broken STL.
-const char* otherFormat(std::span<const uint8_t> bytes) {
-  const std::string_view head(reinterpret_cast<const char*>(bytes.data()), std::min<size_t>(bytes.size(), 80));
-  const auto starts = [&](std::string_view m) { return head.substr(0, m.size()) == m; };
-  if (starts("ply\n") || starts("ply\r\n")) return "a PLY file";
-  if (starts("PK\x03\x04")) return "a zip archive (3MF is a zip)";
-  if (starts("glTF")) return "a binary glTF (GLB) file";
-  if (starts("ISO-10303-21")) return "a STEP file";
-  if (starts("OFF") && head.size() > 3 && isSpace(uint8_t(head[3]))) return "an OFF file";
-  if (starts("#binvox")) return "a .binvox file (use the .binvox extension)";
-  if (starts("\x89VXM")) return "a .vxm file (use the .vxm extension)";
-  // IGES: 80-column records, the first in the Start section ('S' in column 73, then a sequence number).
-  if (head.size() >= 80 && head[72] == 'S' && head.substr(73, 7).find_first_not_of(" 0123456789") == head.npos) {
-    return "an IGES file";
-  }
-  return nullptr;
-}
-
 // Whether the four bytes of a binary STL's triangle count are all text (whitespace or printable ASCII).
 bool countIsText(std::span<const uint8_t> bytes) {
   for (size_t i = kBinaryHeaderBytes; i < kBinaryPrefixBytes; ++i) {
@@ -300,9 +286,8 @@ Status parseStlMesh(std::span<const uint8_t> bytes, const std::string& name, Stl
     if (Status s = parser.parse(out); !s.ok()) return s;
     if (out.mesh.triangles.empty()) return makeError(ErrorCode::kParse, name + ": ASCII STL contains no triangles");
     if (out.mesh.triangles.size() > kMaxTriangles) return tooManyTriangles(name, out.mesh.triangles.size());
-  } else if (const char* other = otherFormat(bytes)) {
-    return makeError(ErrorCode::kParse, name + ": not an STL file: it looks like " + other +
-                                            ", which voxmod does not read (it reads STL, .vxm and .binvox)");
+  } else if (const ContentKind other = sniffContent(bytes); other.what && other.format != MeshFormat::kStl) {
+    return makeError(ErrorCode::kParse, notWhatItSays(name, MeshFormat::kStl, other));
   } else if (size < kBinaryPrefixBytes) {
     return makeError(ErrorCode::kParse, name + ": not an STL file: " + std::to_string(size) +
                                             " bytes is shorter than a binary STL header (84 bytes)" +
@@ -331,22 +316,8 @@ Status parseStlMesh(std::span<const uint8_t> bytes, const std::string& name, Stl
 
 // Topology (the watertightness check) and the warnings it gives.
 void finishStlLoad(StlLoad& out) {
-  const std::string& name = out.mesh.name;
   out.topology = analyzeTopology(out.mesh);
-  const MeshTopology& t = out.topology;
-  if (t.degenerate_triangles > 0) {
-    out.warnings.push_back(name + ": " + std::to_string(t.degenerate_triangles) +
-                           " degenerate triangles (zero area; kept)");
-  }
-  if (t.closes_when_noise_welded && !t.watertight()) {
-    // Exporter noise (corners that should coincide differing by ~1e-17) is not a hole: information, not a warning.
-    out.notes.push_back(name + ": treated as closed: its " + std::to_string(t.boundary_edges + t.nonmanifold_edges) +
-                        " open edges close when vertices within 1e-9 of the model's size are welded (exporter noise)");
-  } else if (!t.watertight()) {
-    out.warnings.push_back(name + ": not watertight: " + std::to_string(t.boundary_edges) + " boundary edges, " +
-                           std::to_string(t.nonmanifold_edges) +
-                           " non-manifold edges (vertices welded by exact equality)");
-  }
+  addTopologyFindings(out.mesh.name, out.topology, out.warnings, out.notes);
 }
 
 }  // namespace
@@ -369,30 +340,63 @@ Result<StlLoad> loadStl(const std::filesystem::path& path) {
   return out;
 }
 
-Status saveStlBinary(const TriangleMesh& mesh, const std::filesystem::path& path) {
-  if (mesh.triangles.size() > UINT32_MAX) {
-    return makeError(ErrorCode::kLimit, path.string() + ": " + std::to_string(mesh.triangles.size()) +
+namespace {
+
+// One binary STL record: the facet normal from the vertex order (right-hand rule, zero for a degenerate triangle),
+// the three corners, zero attribute bytes.
+void encodeStlTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, uint8_t* p) {
+  const glm::vec3 e1 = b - a, e2 = c - a;
+  glm::vec3 n(e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x);
+  const float len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+  n = len > 0 && std::isfinite(len) ? n / len : glm::vec3(0);
+  const glm::vec3* v[4] = {&n, &a, &b, &c};
+  for (int k = 0; k < 4; ++k) {
+    for (int i = 0; i < 3; ++i) storeU32(p + 12 * k + 4 * i, std::bit_cast<uint32_t>((*v[k])[i]));
+  }
+  p[48] = p[49] = 0;
+}
+
+// Writes `count` triangles, corner(t, k) giving corner k of triangle t in float: the records are encoded in chunks,
+// each on all threads, and streamed into the atomic save (no whole-file buffer).
+template <class Corner>
+Status writeStl(const std::filesystem::path& path, size_t count, const std::string& name, Corner corner) {
+  if (count > UINT32_MAX) {
+    return makeError(ErrorCode::kLimit, path.string() + ": " + std::to_string(count) +
                                             " triangles do not fit a binary STL (at most 4294967295)");
   }
-  std::vector<uint8_t> bytes(kBinaryPrefixBytes + kBinaryTriangleBytes * mesh.triangles.size(), 0);
-  // The header must not start with "solid", or naive readers would take the file for ASCII.
-  const std::string header = "binary STL written by voxmod" + (mesh.name.empty() ? "" : ": " + mesh.name);
-  std::memcpy(bytes.data(), header.data(), std::min(header.size(), kBinaryHeaderBytes));
-  storeU32(bytes.data() + kBinaryHeaderBytes, uint32_t(mesh.triangles.size()));
-  uint8_t* p = bytes.data() + kBinaryPrefixBytes;
-  for (const Triangle& t : mesh.triangles) {
-    // The facet normal from the vertex order (right-hand rule), zero for a degenerate triangle.
-    const glm::vec3 e1 = t.v[1] - t.v[0], e2 = t.v[2] - t.v[0];
-    glm::vec3 n(e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x);
-    const float len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-    n = len > 0 && std::isfinite(len) ? n / len : glm::vec3(0);
-    for (int a = 0; a < 3; ++a) storeU32(p + 4 * a, std::bit_cast<uint32_t>(n[a]));
-    for (int c = 0; c < 3; ++c) {
-      for (int a = 0; a < 3; ++a) storeU32(p + 12 + 12 * c + 4 * a, std::bit_cast<uint32_t>(t.v[c][a]));
+  return writeFileAtomic(path, [&](ByteSink& sink) -> Status {
+    std::vector<uint8_t> prefix(kBinaryPrefixBytes, 0);
+    // The header must not start with "solid", or naive readers would take the file for ASCII.
+    const std::string header = "binary STL written by voxmod" + (name.empty() ? "" : ": " + name);
+    std::memcpy(prefix.data(), header.data(), std::min(header.size(), kBinaryHeaderBytes));
+    storeU32(prefix.data() + kBinaryHeaderBytes, uint32_t(count));
+    if (Status s = sink.append(prefix); !s) return s;
+    constexpr size_t kChunk = size_t(1) << 18;  // triangles: 13 MB
+    std::vector<uint8_t> bytes(kBinaryTriangleBytes * std::min(count, kChunk));
+    for (size_t t0 = 0; t0 < count; t0 += kChunk) {
+      const size_t n = std::min(kChunk, count - t0);
+      parallelChunks(0, int64_t(n), 4096, threadsFor(int64_t(n) * 16), [&](int, int64_t i0, int64_t i1) {
+        for (int64_t i = i0; i < i1; ++i) {
+          const size_t t = t0 + size_t(i);
+          encodeStlTriangle(corner(t, 0), corner(t, 1), corner(t, 2), bytes.data() + kBinaryTriangleBytes * size_t(i));
+        }
+      });
+      if (Status s = sink.append(std::span<const uint8_t>(bytes.data(), kBinaryTriangleBytes * n)); !s) return s;
     }
-    p += kBinaryTriangleBytes;  // the attribute bytes stay zero
-  }
-  return writeFileAtomic(path, bytes);
+    return Ok{};
+  });
+}
+
+}  // namespace
+
+Status saveStlBinary(const TriangleMesh& mesh, const std::filesystem::path& path) {
+  return writeStl(path, mesh.triangles.size(), mesh.name,
+                  [&](size_t t, int k) { return mesh.triangles[t].v[size_t(k)]; });
+}
+
+Status saveStlBinary(const IndexedMesh& mesh, const std::filesystem::path& path) {
+  return writeStl(path, mesh.triangles.size(), mesh.name,
+                  [&](size_t t, int k) { return glm::vec3(mesh.vertices[mesh.triangles[t][size_t(k)]]); });
 }
 
 }  // namespace vox::io

@@ -161,3 +161,117 @@ write(BAD, "vxm_filled_mismatch.vxm", vxm((3, 2, 2), SAMPLE_RUNS, filled=9))
 write(BAD, "vxm_huge_dims.vxm", vxm((16384, 16384, 16384), [0, 16384 ** 3]))  # all filled: 512 GiB
 write(BAD, "vxm_dims_too_large.vxm", vxm((20000, 1, 1), [20000]))
 write(BAD, "vxm_zero_voxel_size.vxm", vxm((3, 2, 2), SAMPLE_RUNS, h=0.0))
+
+# ---- Mesh and CAD formats read through loadMeshFile (docs/file-format.md, "Mesh and CAD input") ----
+# tests/data/mesh/ holds a unit cube in every format assimp reads for voxmod (tests/unit/io/mesh_file_test.cpp, and
+# scripts/fuzz.sh's seeds); tests/data/malformed/ the files each of those readers must refuse.
+
+MESH = os.path.join(HERE, "mesh")
+os.makedirs(MESH, exist_ok=True)
+CUBE_V = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+CUBE_QUADS = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]  # outward
+CUBE_TRIS = [t for q in CUBE_QUADS for t in ((q[0], q[1], q[2]), (q[0], q[2], q[3]))]
+
+
+def ply_header(fmt, vertices, faces):
+    return ("ply\nformat %s 1.0\nelement vertex %d\nproperty float x\nproperty float y\nproperty float z\n"
+            "element face %d\nproperty list uchar int vertex_indices\nend_header\n" % (fmt, vertices, faces))
+
+
+def ply_binary(vertices, faces, declared_vertices=None):
+    out = ply_header("binary_little_endian", declared_vertices or len(vertices), len(faces)).encode()
+    out += b"".join(struct.pack("<3f", *v) for v in vertices)
+    return out + b"".join(struct.pack("<B", len(f)) + struct.pack("<%di" % len(f), *f) for f in faces)
+
+
+def zip_bytes(entries):
+    import io
+    import zipfile
+    buf = io.BytesIO()
+    with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as z:
+        for name, data in entries:
+            z.writestr(zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0)), data)
+    return buf.getvalue()
+
+
+def three_mf(unit):
+    verts = "".join('<vertex x="%d" y="%d" z="%d"/>' % v for v in CUBE_V)
+    tris = "".join('<triangle v1="%d" v2="%d" v3="%d"/>' % t for t in CUBE_TRIS)
+    model = ('<?xml version="1.0" encoding="UTF-8"?>\n<model unit="%s" xml:lang="en-US" '
+             'xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02"><resources>'
+             '<object id="1" name="cube" type="model"><mesh><vertices>%s</vertices><triangles>%s</triangles>'
+             '</mesh></object></resources><build><item objectid="1"/></build></model>\n' % (unit, verts, tris))
+    types = ('<?xml version="1.0" encoding="UTF-8"?>\n<Types xmlns="http://schemas.openxmlformats.org/package/2006/'
+             'content-types"><Default Extension="rels" ContentType="application/vnd.openxmlformats-package.'
+             'relationships+xml"/><Default Extension="model" ContentType="application/vnd.ms-package.'
+             '3dmanufacturing-3dmodel+xml"/></Types>\n')
+    rels = ('<?xml version="1.0" encoding="UTF-8"?>\n<Relationships xmlns="http://schemas.openxmlformats.org/package/'
+            '2006/relationships"><Relationship Target="/3D/3dmodel.model" Id="rel0" '
+            'Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>\n')
+    return zip_bytes([("[Content_Types].xml", types), ("_rels/.rels", rels), ("3D/3dmodel.model", model)])
+
+
+def gltf_parts():
+    import json
+    positions = b"".join(struct.pack("<3f", *v) for v in CUBE_V)
+    indices = b"".join(struct.pack("<3H", *t) for t in CUBE_TRIS)
+    doc = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0, "name": "cube"}],
+           "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+           "buffers": [{"byteLength": len(positions) + len(indices)}],
+           "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": len(positions)},
+                           {"buffer": 0, "byteOffset": len(positions), "byteLength": len(indices)}],
+           "accessors": [{"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
+                          "min": [0, 0, 0], "max": [1, 1, 1]},
+                         {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}]}
+    return doc, positions + indices
+
+
+def gltf_embedded():
+    import base64
+    import json
+    doc, data = gltf_parts()
+    doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(data).decode()
+    return json.dumps(doc, indent=1) + "\n"
+
+
+def glb():
+    import json
+    doc, data = gltf_parts()
+    text = json.dumps(doc).encode()
+    text += b" " * (-len(text) % 4)
+    data += b"\0" * (-len(data) % 4)
+    body = struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(data), 0x004E4942) + data
+    return struct.pack("<4sII", b"glTF", 2, 12 + len(body)) + body
+
+
+write(MESH, "cube.obj", "# unit cube\n" + "".join("v %d %d %d\n" % v for v in CUBE_V)
+      + "".join("f %d %d %d %d\n" % tuple(i + 1 for i in q) for q in CUBE_QUADS))
+write(MESH, "cube_ascii.ply", ply_header("ascii", 8, 6) + "".join("%d %d %d\n" % v for v in CUBE_V)
+      + "".join("4 %d %d %d %d\n" % q for q in CUBE_QUADS))
+write(MESH, "cube_binary.ply", ply_binary(CUBE_V, CUBE_QUADS))
+write(MESH, "cube.off", "OFF\n8 6 0\n" + "".join("%d %d %d\n" % v for v in CUBE_V)
+      + "".join("4 %d %d %d %d\n" % q for q in CUBE_QUADS))
+write(MESH, "cube_micron.3mf", three_mf("micron"))  # 1 micron: read as 0.001 mm
+write(MESH, "cube.gltf", gltf_embedded())
+write(MESH, "cube.glb", glb())
+
+write(BAD, "empty.obj", b"")
+write(BAD, "obj_comments_only.obj", "# exported by nothing at all\n# no vertex, no face: nothing to voxelize here\n")
+write(BAD, "ply_lying_counts.ply", ply_header("ascii", 9, 6) + "".join("%d %d %d\n" % v for v in CUBE_V)
+      + "".join("4 %d %d %d %d\n" % q for q in CUBE_QUADS))
+write(BAD, "ply_binary_truncated.ply", ply_binary(CUBE_V, CUBE_QUADS)[:-9])
+write(BAD, "ply_bad_index.ply", ply_binary(CUBE_V, CUBE_QUADS[:5] + [(3, 0, 4, 8)]))
+write(BAD, "not_zip.3mf", '<?xml version="1.0"?>\n<model unit="millimeter"></model>\n')
+write(BAD, "zip_without_model.3mf", zip_bytes([("[Content_Types].xml", "<Types/>\n")]))
+STEP_START = ("ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION(('a truncated file'),'2;1');\n"
+              "FILE_NAME('cut.step','2024-01-01T00:00:00',(''),(''),'','','');\n"
+              "FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\nDATA;\n"
+              "#1=CARTESIAN_POINT('',(0.,0.,0.));\n#2=DIRECTION('',(0.,0.,1.));\n")
+write(BAD, "truncated.step", STEP_START)
+write(BAD, "step_named.ply", STEP_START + "ENDSEC;\nEND-ISO-10303-21;\n")
+IGES_START = ("a truncated IGES file".ljust(72) + "S      1\n"
+              + "1H,,1H;,,,,,,,,,,,,,,,,,,,,,,,,,,,,,;".ljust(72) + "G      1\n")
+write(BAD, "truncated.iges", IGES_START)
+write(BAD, "off_bad_index.off", "OFF\n8 6 0\n" + "".join("%d %d %d\n" % v for v in CUBE_V)
+      + "".join("4 %d %d %d %d\n" % q for q in CUBE_QUADS[:5]) + "4 3 0 4 8\n")
+write(BAD, "off_not_numbers.off", "OFF\n3 1 0\n0 0 0\n1 0 0&1\n0 1 0\n3 0 1 2\n")

@@ -17,7 +17,9 @@
 #include "app/script.h"
 #include "app/script_runner.h"
 #include "app/settings.h"
+#include "support/cad_parts.h"
 #include "support/test_support.h"
+#include "vox/io/cad.h"
 #include "vox/io/stl.h"
 #include "vox/io/voxel_file.h"
 
@@ -416,6 +418,43 @@ TEST(AppDocument, reVoxelizingKeepsTheViewOnTheSamePartOfTheModel) {
   undo(state);
   EXPECT_NEAR(state.view.camera.distance, 6.0, 1e-9);
   EXPECT_NEAR(state.view.camera.target.x, 3.0, 1e-9);
+}
+
+// A STEP part opens as a mesh in millimetres (the Voxelize dialog takes the unit), tessellated for the dialog's
+// resolution; voxelizing at a finer one tessellates it again in the job, and the finer mesh becomes the document's.
+TEST(AppDocument, aStepPartIsTessellatedForTheGridItIsVoxelizedOn) {
+  test::TempDir dir;
+  test::writeStep(dir / "c.step", {{test::CadShape::kCylinder, {0, 0, 0}, {10, 0, 20}}});
+  AppState state;
+  state.voxelize.params.resolution = 20;
+  startOpen(state, dir / "c.step");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.mesh != nullptr; }));
+  const auto opened = state.doc.mesh;
+  EXPECT_EQ(opened->format, "STEP (AUTOMOTIVE_DESIGN)");
+  EXPECT_EQ(opened->units, "mm");
+  EXPECT_EQ(state.voxelize.params.units, "mm");
+  ASSERT_NE(opened->cad, nullptr);
+  EXPECT_NEAR(opened->deflection, io::kCadDeflectionVoxels * 1.0, 1e-9);  // h = 20 mm / 20
+
+  startVoxelize(state, VoxelizeParams{.resolution = 20, .units = "mm"});
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  EXPECT_EQ(state.doc.mesh, opened);  // fine enough already
+  EXPECT_EQ(state.model.frame().units, "mm");
+
+  const uint64_t before = state.model_version;
+  startVoxelize(state, VoxelizeParams{.resolution = 200, .units = "mm"});
+  ASSERT_TRUE(pump(state, [&] { return state.model_version != before; }));
+  ASSERT_NE(state.doc.mesh, opened);
+  EXPECT_NEAR(state.doc.mesh->deflection, io::kCadDeflectionVoxels * 0.1, 1e-9);
+  EXPECT_GT(state.doc.mesh->mesh.triangles.size(), opened->mesh.triangles.size());
+  EXPECT_TRUE(state.doc.mesh->topology.watertight());
+}
+
+TEST(AppDocument, theOpenBrowserListsEveryInputFormat) {
+  const std::vector<std::string> e = browserExtensions(BrowserPurpose::kOpen);
+  for (const char* ext :
+       {".stl", ".obj", ".ply", ".3mf", ".gltf", ".glb", ".off", ".step", ".stp", ".iges", ".igs", ".vxm", ".binvox"})
+    EXPECT_NE(std::find(e.begin(), e.end(), ext), e.end()) << ext;
 }
 
 // Voxelizing a mesh can be redone in a moment: it is not an unsaved change worth a prompt. A peel is.

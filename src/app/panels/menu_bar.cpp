@@ -47,7 +47,7 @@ void drawMainMenu(AppState& state) {
     }
     if (a.id == ActionId::kSaveAs || a.id == ActionId::kExportXrayCsv || a.id == ActionId::kCancelJob ||
         a.id == ActionId::kViewNegZ || a.id == ActionId::kZoomOut || a.id == ActionId::kViewDisputed ||
-        a.id == ActionId::kRedo) {
+        a.id == ActionId::kRedo || a.id == ActionId::kExportThickness) {
       ImGui::Separator();
     }
   }

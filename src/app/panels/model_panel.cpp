@@ -16,7 +16,10 @@ void meshSection(const AppState& state) {
   const MeshSource& m = *state.doc.mesh;
   heading("Mesh");
   if (beginFactTable("mesh")) {
-    tableRow("Triangles", groupDigits(int64_t(m.mesh.triangles.size())) + (m.ascii ? " (ASCII STL)" : " (binary STL)"));
+    tableRow("File", m.format + (m.file_units.empty() ? "" : ", unit " + m.file_units));
+    tableRow("Triangles", groupDigits(int64_t(m.mesh.triangles.size())));
+    if (m.bodies.size() > 1) tableRow("Bodies", groupDigits(int64_t(m.bodies.size())));
+    if (m.deflection > 0) tableRow("Tessellated within", formatLength(m.deflection, m.units));
     const MeshTopology& t = m.topology;
     tableRow("Watertight", t.watertight()               ? std::string("yes")
                            : t.closes_when_noise_welded ? "yes, once exporter noise is welded"
@@ -27,7 +30,7 @@ void meshSection(const AppState& state) {
     const glm::dvec3 e = m.mesh.bounds().extent();
     char size[96];
     std::snprintf(size, sizeof size, "%.4g x %.4g x %.4g", e.x, e.y, e.z);
-    tableRow("Size", size);
+    tableRow("Size", std::string(size) + (m.units == "model" ? "" : " " + m.units));
     char vol[48];
     std::snprintf(vol, sizeof vol, "%.5g", m.volume);
     tableRow("Mesh volume", vol);

@@ -23,6 +23,10 @@ void drawStatusBar(AppState& state) {
     ImGui::TextUnformatted(label.c_str());
     ImGui::SameLine();
     ImGui::ProgressBar(float(p), ImVec2(200.0f, 0.0f));
+  } else if (state.volume_export_job.active()) {  // File > Export volume; Esc cancels
+    ImGui::TextUnformatted(state.volume_export_job.label().c_str());
+    ImGui::SameLine();
+    ImGui::ProgressBar(float(state.volume_export_job.progress()), ImVec2(200.0f, 0.0f));
   } else if (state.thickness.busy()) {  // the Thickness panel's analysis; its Cancel button is in the panel
     ImGui::TextUnformatted("Computing thickness");
     ImGui::SameLine();

@@ -1,11 +1,13 @@
 // The checked-in corpus of broken files (tests/data/malformed/, written by tests/data/make_io_data.py): each
-// reader refuses each file with the error code and the exact message asserted here. Valid files in unusual shapes
+// reader (STL, .vxm, .binvox, and loadMeshFile's for the other mesh and CAD formats) refuses each file with the error
+// code and the exact message asserted here. Valid files in unusual shapes
 // (tests/data/quirks/) load.
 #include <set>
 
 #include <gtest/gtest.h>
 
 #include "support/test_support.h"
+#include "vox/io/mesh_file.h"
 #include "vox/io/stl.h"
 #include "vox/io/voxel_file.h"
 
@@ -33,7 +35,11 @@ Error refusalOf(const std::string& file) {
     auto r = parseStl(bytes, file);
     return r.ok() ? Error{ErrorCode::kInvalidArgument, "<accepted>"} : r.error();
   }
-  auto r = ext == ".vxm" ? decodeVxm(bytes, file) : decodeBinvox(bytes, file);
+  if (ext == ".vxm" || ext == ".binvox") {
+    auto r = ext == ".vxm" ? decodeVxm(bytes, file) : decodeBinvox(bytes, file);
+    return r.ok() ? Error{ErrorCode::kInvalidArgument, "<accepted>"} : r.error();
+  }
+  auto r = parseMeshFile(bytes, file);  // every other mesh and CAD format
   return r.ok() ? Error{ErrorCode::kInvalidArgument, "<accepted>"} : r.error();
 }
 
@@ -48,8 +54,7 @@ const Refusal kRefusals[] = {
      "bytes"},
     // STL: files of other kinds are named as not STL, not as a broken binary STL.
     {"not_stl_ply.stl", ErrorCode::kParse,
-     "not_stl_ply.stl: not an STL file: it looks like a PLY file, which voxmod does not read (it reads STL, .vxm and "
-     ".binvox)"},
+     "not_stl_ply.stl: not an STL file: it looks like a PLY file (name it .ply to read it as one)"},
     {"not_stl_text.stl", ErrorCode::kParse,
      "not_stl_text.stl: not an STL file: it is neither an ASCII STL (it does not start with 'solid') nor a binary "
      "STL (its size does not fit the triangle count at byte 80)"},
@@ -118,6 +123,29 @@ const Refusal kRefusals[] = {
      "vxm_dims_too_large.vxm: grid dimensions 20000 x 1 x 1 are outside 1..16384 per axis"},
     {"vxm_zero_voxel_size.vxm", ErrorCode::kCorrupt,
      "vxm_zero_voxel_size.vxm: .vxm header has a non-finite origin or a voxel size that is not positive"},
+    // Mesh and CAD formats (loadMeshFile)
+    {"empty.obj", ErrorCode::kParse, "empty.obj: file is empty"},
+    {"obj_comments_only.obj", ErrorCode::kParse, "obj_comments_only.obj: OBJ file contains no triangles"},
+    {"ply_lying_counts.ply", ErrorCode::kParse,
+     "ply_lying_counts.ply:18: PLY vertex 9 of 9 has 5 values where the header declares 3: its counts do not match "
+     "the data"},
+    {"ply_binary_truncated.ply", ErrorCode::kParse,
+     "ply_binary_truncated.ply: PLY data ends in face 6 of 6 (byte 181 of the body): the header declares more "
+     "elements than the file holds"},
+    {"ply_bad_index.ply", ErrorCode::kParse,
+     "ply_bad_index.ply: not a readable PLY file (assimp: 'Validation failed: aiMesh::mFaces[5]::mIndices[3] is out "
+     "of range')"},
+    {"not_zip.3mf", ErrorCode::kParse, "not_zip.3mf: not a 3MF file: it does not start with a zip signature ('PK')"},
+    {"zip_without_model.3mf", ErrorCode::kParse,
+     "zip_without_model.3mf: not a 3MF file: the zip holds no 3D model part (3D/3dmodel.model)"},
+    {"truncated.step", ErrorCode::kParse,
+     "truncated.step: STEP file truncated: it does not end with 'END-ISO-10303-21;'"},
+    {"step_named.ply", ErrorCode::kParse,
+     "step_named.ply: not a PLY file: it looks like a STEP file (name it .step to read it as one)"},
+    {"off_bad_index.off", ErrorCode::kParse, "off_bad_index.off:16: OFF face 6 refers to vertex '8' of 8"},
+    {"off_not_numbers.off", ErrorCode::kParse, "off_not_numbers.off:4: OFF vertex 2 is not three or more numbers"},
+    {"truncated.iges", ErrorCode::kParse,
+     "truncated.iges: IGES file truncated: its last line is not a Terminate record ('T' in column 73)"},
 };
 
 class MalformedFile : public ::testing::TestWithParam<Refusal> {};

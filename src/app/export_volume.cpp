@@ -1,0 +1,91 @@
+#include "app/export_volume.h"
+
+#include <memory>
+#include <utility>
+
+#include "app/messages.h"
+#include "app/thickness.h"
+#include "vox/analysis/distance.h"
+#include "vox/analysis/thickness_map.h"
+#include "vox/core/text.h"
+#include "vox/io/volume_export.h"
+
+namespace vox::app {
+namespace {
+
+using ExportResult = Result<std::filesystem::path>;
+
+// The extension's format when it holds what is asked for (fields or not); an error dialog otherwise.
+std::optional<io::VolumeFormat> formatFor(AppState& state, const std::filesystem::path& path, bool fields) {
+  const auto format = io::volumeFormatOf(path);
+  if (!format || (fields && !io::holdsFields(*format))) {
+    reportError(state,
+                std::string(fields ? "the thickness is exported" : "volumes are exported") + " as " +
+                    io::volumeExtensionList(fields) + "; choose one of those extensions",
+                path);
+    return std::nullopt;
+  }
+  return format;
+}
+
+void start(AppState& state, const std::filesystem::path& path, Job<std::filesystem::path>::Work work) {
+  state.volume_export_job.start("Writing " + path.filename().string(), std::move(work));
+}
+
+}  // namespace
+
+bool startVolumeExport(AppState& state, const std::filesystem::path& path) {
+  if (state.model.empty()) {
+    reportError(state, "there is no model to export", path);
+    return false;
+  }
+  if (!formatFor(state, path, false)) return false;
+  start(state, path, [grid = state.model, path](const ProgressFn& progress) -> ExportResult {
+    if (Status s = io::saveVolume(io::voxelsOnly(grid), path, progress); !s) return s.error();
+    return path;
+  });
+  return true;
+}
+
+bool startThicknessExport(AppState& state, const std::filesystem::path& path) {
+  const ThicknessResult* current = currentThickness(state);
+  if (!current || state.model.empty()) {
+    reportError(state, "there is no thickness to export (open the Thickness panel and let it finish)", path);
+    return false;
+  }
+  const auto format = formatFor(state, path, true);
+  if (!format) return false;
+  // The result is shared with the panel, not copied: it is immutable once computed.
+  const auto& shared = *state.thickness.get(state.model_version);
+  start(state, path, [grid = state.model, result = shared, path, format](const ProgressFn& progress) -> ExportResult {
+    const ScalarField thickness = thicknessField(result->thickness);
+    io::VolumeContent content = io::oneField("thickness", thickness);
+    ScalarField distance;
+    if (io::holdsSeveralVolumes(*format)) {  // the voxels and the distance beside the thickness
+      auto d = computeDistance(grid);
+      if (!d) return d.error();
+      distance = distanceField(*d);
+      content = io::VolumeContent{&grid, {{"thickness", &thickness}, {"distance", &distance}}};
+    }
+    if (Status s = io::saveVolume(content, path, progress); !s) return s.error();
+    return path;
+  });
+  return true;
+}
+
+void pollVolumeExport(AppState& state) {
+  auto done = state.volume_export_job.take();
+  if (!done) return;
+  if (done->ok()) {
+    state.status_message = "Wrote " + std::filesystem::absolute(done->value()).lexically_normal().string();
+    state.status_since = nowSeconds();
+  } else if (done->error().code != ErrorCode::kCancelled) {
+    reportError(state, done->error().message);
+  }
+}
+
+bool volumeExportRunning(const AppState& state) { return state.volume_export_job.active(); }
+
+void cancelVolumeExport(AppState& state) { state.volume_export_job.cancel(); }
+
+}  // namespace vox::app

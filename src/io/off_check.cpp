@@ -1,0 +1,117 @@
+#include "io/off_check.h"
+
+#include <charconv>
+#include <string_view>
+#include <vector>
+
+#include "vox/io/file_util.h"
+
+namespace vox::io {
+namespace {
+
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
+// The words of the file's lines, comments and blank lines skipped.
+class OffLines {
+ public:
+  explicit OffLines(std::string_view text) : text_(text) {}
+  bool next(std::vector<std::string_view>& words) {
+    words.clear();
+    while (words.empty() && pos_ < text_.size()) {
+      size_t end = text_.find('\n', pos_);
+      if (end == text_.npos) end = text_.size();
+      ++line_;
+      std::string_view line = text_.substr(pos_, end - pos_);
+      line = line.substr(0, line.find('#'));
+      for (size_t i = 0; i < line.size();) {
+        while (i < line.size() && isSpace(line[i])) ++i;
+        const size_t b = i;
+        while (i < line.size() && !isSpace(line[i])) ++i;
+        if (i > b) words.push_back(line.substr(b, i - b));
+      }
+      pos_ = end + 1;
+    }
+    return !words.empty();
+  }
+  int64_t line() const { return line_; }
+
+ private:
+  std::string_view text_;
+  size_t pos_ = 0;
+  int64_t line_ = 0;
+};
+
+template <class T>
+bool parseWord(std::string_view w, T& out) {
+  const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), out);
+  return ec == std::errc() && end == w.data() + w.size();
+}
+
+bool allNumbers(const std::vector<std::string_view>& w, size_t from) {
+  double v;
+  for (size_t i = from; i < w.size(); ++i) {
+    if (!parseWord(w[i], v)) return false;
+  }
+  return true;
+}
+
+Error at(const std::string& name, const OffLines& lines, const std::string& what) {
+  return makeError(ErrorCode::kParse, name + ":" + std::to_string(lines.line()) + ": OFF " + what);
+}
+
+// The counts, from the header line (after its keyword) or the next line.
+Status readCounts(OffLines& lines, std::vector<std::string_view>& w, const std::string& name, uint64_t& vertices,
+                  uint64_t& faces) {
+  if (!lines.next(w)) return makeError(ErrorCode::kParse, name + ": OFF file is empty");
+  const std::string_view key = w[0];
+  if (key.size() < 3 || key.substr(key.size() - 3) != "OFF") return at(name, lines, "header does not name OFF");
+  if (key.find_first_not_of("STCN4nOF") != key.npos || key.find('4') != key.npos || key.find('n') != key.npos) {
+    return at(name, lines, "header " + quoteBytes(key) + " is a variant voxmod does not read (3D vertices only)");
+  }
+  w.erase(w.begin());
+  if (w.empty() && !lines.next(w)) return makeError(ErrorCode::kParse, name + ": OFF file has no counts line");
+  if (w.size() < 2 || w.size() > 3 || !parseWord(w[0], vertices) || !parseWord(w[1], faces)) {
+    return at(name, lines, "counts line must be 'vertices faces [edges]'");
+  }
+  return Ok{};
+}
+
+}  // namespace
+
+Status checkOff(std::span<const uint8_t> bytes, const std::string& name) {
+  OffLines lines({reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+  std::vector<std::string_view> w;
+  uint64_t vertices = 0, faces = 0;
+  if (Status s = readCounts(lines, w, name, vertices, faces); !s.ok()) return s;
+  const auto ends = [&](const char* what, uint64_t i, uint64_t n) {
+    return makeError(ErrorCode::kParse, name + ": OFF data ends in " + what + " " + std::to_string(i + 1) + " of " +
+                                            std::to_string(n) + " (after line " + std::to_string(lines.line()) +
+                                            "): the counts declare more than the file holds");
+  };
+  for (uint64_t i = 0; i < vertices; ++i) {
+    if (!lines.next(w)) return ends("vertex", i, vertices);
+    if (w.size() < 3 || !allNumbers(w, 0)) {
+      return at(name, lines, "vertex " + std::to_string(i + 1) + " is not three or more numbers");
+    }
+  }
+  for (uint64_t i = 0; i < faces; ++i) {
+    if (!lines.next(w)) return ends("face", i, faces);
+    uint64_t n = 0, index = 0;
+    if (!parseWord(w[0], n) || n == 0 || n > w.size() - 1 || !allNumbers(w, 1 + n)) {
+      return at(name, lines, "face " + std::to_string(i + 1) + " is not 'n i1 ... in' (and colour values)");
+    }
+    for (uint64_t k = 1; k <= n; ++k) {
+      if (!parseWord(w[k], index) || index >= vertices) {
+        return at(name, lines,
+                  "face " + std::to_string(i + 1) + " refers to vertex " + quoteBytes(w[k]) + " of " +
+                      std::to_string(vertices));
+      }
+    }
+  }
+  if (lines.next(w)) {
+    return at(name, lines, "data after the vertices and faces the counts declare: they declare fewer than it holds");
+  }
+  return Ok{};
+}
+
+}  // namespace vox::io

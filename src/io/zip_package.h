@@ -1,0 +1,27 @@
+#pragma once
+// A 3MF package (a zip, 3MF Core Specification 1.2, "Package") made ready for assimp, and its length unit.
+//
+// assimp 5.2 opens 3MF entries through minizip's 32-bit calls, which report the sizes of entries written with ZIP64
+// fields (streaming zip writers do so, e.g. ../shared/meshes/cad/pyramids.3mf) as 4 GiB: it then reads nothing and
+// returns an empty scene. voxmod reads every entry with minizip's 64-bit calls and writes them into a plain zip in
+// memory (stored, no ZIP64 fields) that assimp reads. assimp does not report the model's unit either; it is read
+// here from the root model part's <model unit="..."> with expat (default millimeter, as the specification says).
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "vox/core/result.h"
+
+namespace vox::io {
+
+struct ThreeMfPackage {
+  std::vector<uint8_t> zip;  // every entry, stored, in a zip assimp's minizip calls read
+  std::string unit;          // "micron", "millimeter", "centimeter", "inch", "foot", "meter"
+};
+
+// Fails (kParse) on bytes that are not a zip, a zip without a 3D model part; (kLimit) when the entries unpack to
+// more than `max_bytes`.
+Result<ThreeMfPackage> read3mfPackage(std::span<const uint8_t> bytes, const std::string& name, uint64_t max_bytes);
+
+}  // namespace vox::io

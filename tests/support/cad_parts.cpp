@@ -1,0 +1,88 @@
+#include "support/cad_parts.h"
+
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
+#include <BRep_Builder.hxx>
+#include <IGESControl_Controller.hxx>
+#include <IGESControl_Writer.hxx>
+#include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
+#include <STEPControl_Controller.hxx>
+#include <STEPControl_Writer.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Face.hxx>
+#include <gp_Ax2.hxx>
+#include <gtest/gtest.h>
+
+namespace vox::test {
+namespace {
+
+TopoDS_Shape solidOf(const CadPart& p) {
+  const gp_Pnt c(p.corner.x, p.corner.y, p.corner.z);
+  switch (p.shape) {
+    case CadShape::kBox:
+      return BRepPrimAPI_MakeBox(c, p.size.x, p.size.y, p.size.z).Shape();
+    case CadShape::kCylinder:
+      return BRepPrimAPI_MakeCylinder(gp_Ax2(c, gp::DZ()), p.size.x, p.size.z).Shape();
+    case CadShape::kSphere:
+      return BRepPrimAPI_MakeSphere(c, p.size.x).Shape();
+    case CadShape::kTorus:
+      return BRepPrimAPI_MakeTorus(gp_Ax2(c, gp::DZ()), p.size.x, p.size.y).Shape();
+    case CadShape::kOpenBox: {
+      BRepPrimAPI_MakeBox box(c, p.size.x, p.size.y, p.size.z);
+      BRep_Builder builder;
+      TopoDS_Compound faces;
+      builder.MakeCompound(faces);
+      for (const TopoDS_Face& f :
+           {box.BottomFace(), box.FrontFace(), box.BackFace(), box.LeftFace(), box.RightFace()}) {
+        builder.Add(faces, f);
+      }
+      return faces;
+    }
+  }
+  return {};
+}
+
+// The writers report on stdout through OCCT's default printers; voxmod's own collector (src/io) stays.
+void quietWriters() {
+  Message_SequenceOfPrinters& printers = Message::DefaultMessenger()->ChangePrinters();
+  for (int i = printers.Length(); i >= 1; --i) {
+    if (printers.Value(i)->IsKind(STANDARD_TYPE(Message_PrinterOStream))) printers.Remove(i);
+  }
+}
+
+TopoDS_Compound compoundOf(const std::vector<CadPart>& parts) {
+  BRep_Builder builder;
+  TopoDS_Compound all;
+  builder.MakeCompound(all);
+  for (const CadPart& p : parts) builder.Add(all, solidOf(p));
+  return all;
+}
+
+}  // namespace
+
+void writeStep(const std::filesystem::path& path, const std::vector<CadPart>& parts, const char* unit) {
+  quietWriters();
+  STEPControl_Controller::Init();  // defines the write.step.* settings
+  ASSERT_TRUE(Interface_Static::SetCVal("write.step.schema", "AP214IS"));
+  ASSERT_TRUE(Interface_Static::SetCVal("write.step.unit", unit));  // read when the writer makes its model
+  STEPControl_Writer writer;
+  ASSERT_EQ(writer.Transfer(compoundOf(parts), STEPControl_AsIs), IFSelect_RetDone);
+  ASSERT_EQ(writer.Write(path.c_str()), IFSelect_RetDone) << path;
+  Interface_Static::SetCVal("write.step.unit", "MM");
+}
+
+void writeIgesFaces(const std::filesystem::path& path, const std::vector<CadPart>& parts) {
+  quietWriters();
+  IGESControl_Controller::Init();
+  IGESControl_Writer writer("MM", 0);  // mode 0: faces (trimmed surfaces), no solid
+  ASSERT_TRUE(writer.AddShape(compoundOf(parts)));
+  writer.ComputeModel();
+  ASSERT_TRUE(writer.Write(path.c_str())) << path;
+}
+
+}  // namespace vox::test
