@@ -104,6 +104,7 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
 
   const int threads = params.threads > 0 ? params.threads : std::max(1, int(std::thread::hardware_concurrency()));
   GridFrame frame = plan.placement.frame;
+  frame.origin += glm::dvec3(plan.placement.first) * frame.voxel_size;  // the corner of voxel (0, 0, 0)
   frame.units = params.units;
   frame.source = mesh.name;
 

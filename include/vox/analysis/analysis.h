@@ -217,8 +217,9 @@ std::optional<double> materialDensity(const std::string& name);  // by name, cas
 std::optional<glm::ivec3> pickVoxel(const VoxelGrid& grid, const glm::dvec3& from, const glm::dvec3& to);
 
 // ---- Booleans (thesis 7.2) ----
-enum class BoolOp { kUnion, kIntersection, kDifference };
-// Both grids must have the same dims and frame (same lattice); otherwise an error says what differs.
+enum class BoolOp { kUnion, kIntersection, kDifference, kXor };  // kXor: symmetric difference
+// Both grids must have the same dims and frame (same lattice); otherwise an error says what differs. Grids with
+// different boxes on one lattice: booleanParts (vox/analysis/assembly.h).
 Result<VoxelGrid> booleanOp(const VoxelGrid& a, const VoxelGrid& b, BoolOp op);
 
 }  // namespace vox
