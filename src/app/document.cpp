@@ -119,7 +119,7 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
                      ", too large for memory) at level " + std::to_string(n) + ": each " + std::to_string(n) + " x " +
                      std::to_string(n) + " x " + std::to_string(n) +
                      " block is one voxel, filled when any of its voxels is; "
-                     "take full-resolution sections with voxmod section";
+                     "the Section panel reads full-resolution sections from the file";
     }
     origin->load_s = loaded.load_s;
     VoxelGrid grid = std::move(*loaded.grid);
