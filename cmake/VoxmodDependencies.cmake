@@ -50,6 +50,13 @@ set_target_properties(OpenVDB::openvdb PROPERTIES IMPORTED_LOCATION "${OPENVDB_L
                                                   INTERFACE_INCLUDE_DIRECTORIES "${OPENVDB_INCLUDE_DIR}"
                                                   INTERFACE_LINK_LIBRARIES "TBB::tbb;Imath::Imath")
 
+# libopenmpi-dev (optional): voxmod batch over MPI ranks (mpirun, srun). Without it batch runs on one machine only.
+option(VOXMOD_WITH_MPI "Build voxmod batch with MPI when an MPI implementation is found" ON)
+if(VOXMOD_WITH_MPI)
+  set(MPI_CXX_SKIP_MPICXX ON)  # the C API only: no deprecated C++ bindings
+  find_package(MPI COMPONENTS CXX)
+endif()
+
 set(OpenGL_GL_PREFERENCE GLVND)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)   # libopengl-dev, libegl-dev
 find_package(glfw3 3.3 REQUIRED)                      # libglfw3-dev

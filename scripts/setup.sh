@@ -13,6 +13,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # volume export: VTK image data (.vti) and OpenVDB (.vdb); see docs/dependencies.md
   libvtk9-dev libopenvdb-dev
+  # voxmod batch over MPI ranks (optional at build time); see docs/dependencies.md
+  libopenmpi-dev openmpi-bin
   # OpenGL / EGL (glvnd + Mesa llvmpipe); see docs/dependencies.md
   libegl-dev libopengl-dev libgl-dev libegl1 libegl-mesa0 libopengl0 libgl1 libglx-mesa0 libgl1-mesa-dri
   # window tests and screenshots

@@ -14,4 +14,5 @@ void addMassCommand(CLI::App& sub, CommandContext& ctx);
 void addThicknessCommand(CLI::App& sub, CommandContext& ctx);
 void addRenderCommand(CLI::App& sub, CommandContext& ctx);
 void addConvertCommand(CLI::App& sub, CommandContext& ctx);
+void addBatchCommand(CLI::App& sub, CommandContext& ctx);
 }  // namespace vox::cli

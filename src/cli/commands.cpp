@@ -21,6 +21,7 @@ const std::vector<Command>& commands() {
        addThicknessCommand},
       {"render", "Render the surface voxels as shaded points to a PNG (headless)", addRenderCommand},
       {"convert", "Convert between voxel formats (.vxm, .binvox)", addConvertCommand},
+      {"batch", "Convert many files, one output each, in parallel or over MPI ranks, with a report", addBatchCommand},
   };
   return table;
 }

@@ -65,6 +65,8 @@ void writeFile(const std::filesystem::path& p, const std::string& bytes) {
   f.write(bytes.data(), std::streamsize(bytes.size()));
 }
 
+std::string voxmodExecutable() { return VOXMOD_EXE; }
+
 RunResult runVoxmod(const std::vector<std::string>& args) {
   TempDir tmp;
   const auto out_path = tmp / "stdout", err_path = tmp / "stderr";

@@ -42,6 +42,8 @@ struct RunResult {
   std::string out;  // stdout
   std::string err;  // stderr
 };
+// The voxmod executable under test (for tests that start it themselves: under mpirun, killed midway).
+std::string voxmodExecutable();
 // Runs the voxmod executable with these arguments (no shell quoting needed), capturing stdout and stderr.
 RunResult runVoxmod(const std::vector<std::string>& args);
 

@@ -1,0 +1,114 @@
+// voxmod batch: one input to one output, exactly as `voxmod voxelize` (voxel formats) or `voxmod convert` (volumes,
+// surfaces) would write it, so a batch's outputs are byte for byte those of the one-file commands.
+#include <new>
+
+#include "cli/batch.h"
+#include "vox/analysis/surface_mesh.h"
+#include "vox/io/mesh_export.h"
+#include "vox/io/volume_export.h"
+#include "vox/io/voxel_file.h"
+
+namespace vox::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The input as a grid: a voxel file read, or a mesh or CAD file read and voxelized with `threads` threads. Warnings
+// are collected (a batch prints nothing per file).
+Result<VoxelGrid> readGrid(const BatchItem& item, const BatchSettings& settings, int threads,
+                           std::vector<std::string>& warnings) {
+  const std::string name = fs::path(item.input).filename().string();
+  if (io::isVoxelFile(item.input)) {
+    auto grid = io::loadVoxelFile(item.input);
+    if (grid && !settings.mesh.units.empty()) grid->frame().units = settings.mesh.units;
+    return grid;
+  }
+  io::MeshFileOptions file_options = meshFileOptions(settings.mesh);
+  file_options.progress = {};  // several files at once: no per-file progress lines
+  auto mesh = io::loadMeshFile(item.input, file_options);
+  if (!mesh) return mesh.error();
+  warnings.insert(warnings.end(), mesh->warnings.begin(), mesh->warnings.end());
+  auto params = voxelizeParams(settings.mesh);
+  if (!params) return params.error();
+  params->units = mesh->units;
+  params->threads = threads;
+  auto result = voxelizeSolid(mesh->mesh, *params, {}, &mesh->topology);
+  if (!result) return makeError(result.error().code, item.input + ": " + result.error().message);
+  warnings.insert(warnings.end(), result->warnings.begin(), result->warnings.end());
+  result->grid.frame().source = name;  // as voxelize names it
+  return std::move(result->grid);
+}
+
+// The grid in the format of the item's output (atomic; the directories below OUTDIR made first).
+Status writeGrid(const BatchItem& item, const VoxelGrid& grid) {
+  std::error_code ec;
+  fs::create_directories(item.output.parent_path(), ec);
+  if (ec) return makeError(ErrorCode::kIo, item.output.parent_path().string() + ": cannot create: " + ec.message());
+  if (io::isVoxelFile(item.output)) return io::saveVoxelFile(grid, item.output);
+  if (io::isVolumeFile(item.output)) return io::saveVolume(io::voxelsOnly(grid), item.output);
+  if (grid.filledCount() == 0) {
+    return makeError(ErrorCode::kInvalidArgument, item.input + ": the model has no filled voxels: no surface to write");
+  }
+  auto mesh = extractSurfaceMesh(grid, SurfaceMeshParams{});
+  if (!mesh) return mesh.error();
+  mesh->name = fs::path(item.input).stem().string();  // as convert names it
+  return io::saveMesh(*mesh, item.output);
+}
+
+Json baseLine(const BatchItem& item, const char* status) {
+  Json line;
+  line["input"] = item.input;
+  line["status"] = status;
+  line["output"] = nullptr;
+  line["dims"] = nullptr;
+  line["filled"] = nullptr;
+  line["warnings"] = Json::array();
+  line["seconds"] = 0.0;
+  line["error"] = nullptr;
+  return line;
+}
+
+}  // namespace
+
+Json errorLine(const BatchItem& item, const std::string& error, double seconds) {
+  Json line = baseLine(item, "error");
+  line["seconds"] = seconds;
+  line["error"] = error;
+  return line;
+}
+
+BatchOutcome convertItem(const BatchItem& item, const BatchSettings& settings, int threads) {
+  const double t0 = nowSeconds();
+  BatchOutcome outcome;
+  outcome.index = item.index;
+  auto fail = [&](const std::string& message) {
+    outcome.line = errorLine(item, message, nowSeconds() - t0);
+    outcome.stop_batch = isDiskFull(message);
+    return outcome;
+  };
+  if (!item.problem.empty()) return fail(item.problem);
+  const auto stamp = fileStamp(item.input);  // before reading: a file changed while read is not taken as current
+  std::vector<std::string> warnings;
+  try {
+    auto grid = readGrid(item, settings, threads, warnings);
+    if (!grid) return fail(grid.error().message);
+    if (Status s = writeGrid(item, *grid); !s.ok()) return fail(s.error().message);
+    outcome.line = baseLine(item, "ok");
+    outcome.line["output"] = item.output.string();
+    outcome.line["dims"] = {grid->nx(), grid->ny(), grid->nz()};
+    outcome.line["filled"] = grid->filledCount();
+  } catch (const std::bad_alloc&) {
+    return fail(item.input + ": not enough memory");
+  }
+  outcome.line["warnings"] = warnings;
+  if (stamp) {
+    auto entry = journalEntry(item, settings, *stamp, outcome.line);
+    if (!entry) return fail(entry.error().message);
+    outcome.journal = std::move(entry).value();
+  }
+  outcome.line["seconds"] = nowSeconds() - t0;
+  return outcome;
+}
+
+}  // namespace vox::cli
