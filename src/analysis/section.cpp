@@ -138,4 +138,34 @@ Result<Section> computeSection(const VoxelGrid& grid, const SectionParams& param
   return s;
 }
 
+Result<SectionAccumulator> SectionAccumulator::start(const Dims& dims, const GridFrame& frame,
+                                                     const SectionParams& params) {
+  // The checks, the position and the image's shape from a grid of these dims that holds no voxel (one shared zero
+  // layer).
+  auto empty = computeSection(VoxelGrid(dims, frame), params);
+  if (!empty) return empty.error();
+  SectionAccumulator acc;
+  acc.dims_ = dims;
+  acc.s_ = std::move(empty).value();
+  return acc;
+}
+
+void SectionAccumulator::add(const VoxelGrid& window, int32_t z0, int32_t z1, int32_t z_offset) {
+  if (s_.axis == Axis::kZ) {
+    const int32_t z = s_.index - z_offset;
+    if (z < z0 || z >= z1) return;
+    auto part = computeSection(window, SectionParams{Axis::kZ, z});
+    s_.mask = std::move(part->mask);
+    s_.filled = part->filled;
+    return;
+  }
+  // Sections along X and Y hold a row per layer: the window's rows go where their layers belong.
+  auto part = computeSection(window, SectionParams{s_.axis, s_.index});
+  for (int32_t z = z0; z < z1; ++z) {
+    const uint8_t* from = &part->mask.at(0, window.nz() - 1 - z);
+    std::copy_n(from, s_.mask.width, &s_.mask.at(0, dims_.nz - 1 - (z + z_offset)));
+    s_.filled += std::count(from, from + s_.mask.width, uint8_t(1));
+  }
+}
+
 }  // namespace vox

@@ -94,6 +94,7 @@ struct Document {
   // > 1: the model is a coarse view of `path` at this level (each level^3 block of the file's voxels is one voxel,
   // filled when any of its voxels is), because the file's grid does not fit in memory; Save does not overwrite it.
   int32_t coarse_level = 1;
+  Dims full_dims;  // the file's own dims, when coarse_level > 1
 };
 
 // ---- Params the widgets edit ----
@@ -306,6 +307,11 @@ struct AppState {
   AsyncValue<XrayKey, std::shared_ptr<const XrayResult>> xray_result;
   AsyncValue<uint64_t, std::shared_ptr<const ThicknessResult>> thickness;  // keyed by model_version
   Job<std::filesystem::path> volume_export_job;  // File > Export volume: the file being written (export_volume.h)
+  // A coarse view's section at full resolution, read from the file in the background (full_section.h).
+  Job<Section> full_section_job;
+  std::optional<Section> full_section;
+  std::string full_section_error;
+  Texture full_section_texture;
 
   // Derived images (main thread: sections are cheap enough to compute while a slider moves).
   SectionKey section_key;

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "app/browser_purposes.h"
+#include "app/full_section.h"
 #include "app/messages.h"
 #include "app/model_jobs.h"
 #include "app/update.h"
@@ -103,6 +104,7 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
   state.viewport.dirty = true;
   state.release_memory = true;
   state.measure.picks.clear();
+  clearFullSection(state);
   doc.path = loaded.path;
   addRecentFile(state.settings, std::filesystem::absolute(loaded.path).lexically_normal().string());
   state.settings.last_directory = std::filesystem::absolute(loaded.path).parent_path().string();
@@ -110,13 +112,14 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
     auto origin = std::make_shared<ModelOrigin>();
     origin->what = "loaded " + loaded.path.filename().string();
     doc.coarse_level = loaded.coarse_level;
+    doc.full_dims = loaded.full_dims;
     if (loaded.coarse_level > 1) {
       const int32_t n = loaded.coarse_level;
       origin->what = "coarse view of " + loaded.path.filename().string() + " (" + dimsText(loaded.full_dims) +
                      ", too large for memory) at level " + std::to_string(n) + ": each " + std::to_string(n) + " x " +
                      std::to_string(n) + " x " + std::to_string(n) +
                      " block is one voxel, filled when any of its voxels is; "
-                     "take full-resolution sections with voxmod section";
+                     "the Section panel reads full-resolution sections from the file";
     }
     origin->load_s = loaded.load_s;
     VoxelGrid grid = std::move(*loaded.grid);

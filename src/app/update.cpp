@@ -6,6 +6,7 @@
 
 #include "app/document.h"
 #include "app/export_volume.h"
+#include "app/full_section.h"
 #include "app/messages.h"
 #include "app/model_jobs.h"
 #include "app/skin.h"
@@ -54,6 +55,7 @@ void updateDocument(AppState& state) {
   state.xray_result.poll();
   requestThickness(state);
   pollVolumeExport(state);
+  pollFullSection(state);
   if (!state.doc.model) return;
 
   const ModelSnapshot& m = *state.doc.model;

@@ -78,31 +78,14 @@ int streamedInfo(const std::string& file, const io::VxmHeaderInfo& h, const Mesh
 
 Result<Section> streamedSection(const std::string& file, const io::VxmHeaderInfo& h, const MeshOptions& options,
                                 const SectionParams& params) {
-  // The checks and the image's shape from a grid of the file's dims and frame that holds no voxel (one shared zero
-  // layer); then each window's section rows go where their layers belong.
-  auto section = computeSection(VoxelGrid(h.dims, h.frame), params);
-  if (!section) return section.error();
-  Section& s = *section;
+  auto acc = SectionAccumulator::start(h.dims, h.frame, params);
+  if (!acc) return acc.error();
   const Status read = io::readVxmInWindows(file, windowLayers(h.dims, options), 0, [&](const io::VxmWindow& w) {
-    if (params.axis == Axis::kZ) {
-      if (params.index < w.core_begin || params.index >= w.core_end) return Status(Ok{});
-      auto part = computeSection(w.grid, SectionParams{Axis::kZ, params.index - w.z_offset});
-      if (!part) return Status(part.error());
-      s.mask = std::move(part->mask);
-      s.filled = part->filled;
-      return Status(Ok{});
-    }
-    auto part = computeSection(w.grid, params);
-    if (!part) return Status(part.error());
-    for (int32_t z = w.core_begin; z < w.core_end; ++z) {
-      const uint8_t* from = &part->mask.at(0, w.grid.nz() - 1 - (z - w.z_offset));
-      std::copy_n(from, s.mask.width, &s.mask.at(0, h.dims.nz - 1 - z));
-      s.filled += std::count(from, from + s.mask.width, uint8_t(1));
-    }
+    acc->add(w.grid, w.core_begin - w.z_offset, w.core_end - w.z_offset, w.z_offset);
     return Status(Ok{});
   });
   if (!read) return read.error();
-  return section;
+  return acc->result();
 }
 
 Result<XrayResult> streamedXray(const std::string& file, const io::VxmHeaderInfo& h, const MeshOptions& options,

@@ -11,6 +11,7 @@
 
 #include "app/actions.h"
 #include "app/app_state.h"
+#include "app/full_section.h"
 #include "app/job.h"
 #include "app/measure.h"
 #include "app/operations.h"
@@ -262,7 +263,11 @@ TEST(AppDocument, aVxmFileTooLargeForMemoryOpensAsACoarseViewThatSaysSo) {
   const Dims dims{16384, 16384, 4096};
   GridFrame frame;
   frame.voxel_size = 0.5;
-  const std::vector<glm::ivec3> voxels = {{0, 0, 0}, {16383, 9, 5}, {77, 16383, 4095}};
+  // The level it opens at (a quarter of the memory limit for the grid) and a voxel in the middle of block 100
+  // along x, where the full-resolution section through coarse section x = 100 runs.
+  const int32_t expected_level = io::coarseLevelFor(dims, defaultMemoryLimitBytes() / 4);
+  const int32_t middle = 100 * expected_level + expected_level / 2;
+  const std::vector<glm::ivec3> voxels = {{0, 0, 0}, {16383, 9, 5}, {77, 16383, 4095}, {middle, 50, 7}};
   auto saved = io::saveVxmInSlabs(dir / "huge.vxm", dims, frame, [&](io::VxmLayerWriter& w) {
     const VoxelGrid empty(Dims{dims.nx, dims.ny, 1}, frame);
     for (int32_t z = 0; z < dims.nz; ++z) {
@@ -280,13 +285,27 @@ TEST(AppDocument, aVxmFileTooLargeForMemoryOpensAsACoarseViewThatSaysSo) {
   ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
   const int32_t level = state.doc.coarse_level;
   ASSERT_GT(level, 1);
+  ASSERT_EQ(level, expected_level);
   EXPECT_EQ(state.model.dims(), (Dims{16384 / level, 16384 / level, 4096 / level}));
   EXPECT_DOUBLE_EQ(state.model.voxelSize(), 0.5 * level);
-  EXPECT_EQ(state.model.filledCount(), 3);
+  EXPECT_EQ(state.model.filledCount(), 4);
   for (const glm::ivec3& v : voxels) EXPECT_TRUE(state.model.get(v.x / level, v.y / level, v.z / level));
   EXPECT_NE(state.doc.model->origin->what.find("coarse view of huge.vxm"), std::string::npos);
   EXPECT_TRUE(state.doc.save_path.empty());  // Save never writes the coarse grid over the file
   EXPECT_FALSE(hasUnsavedChanges(state));
+
+  // The Section panel reads the section through the middle of a coarse section's blocks from the file.
+  state.section.axis = Axis::kX;
+  state.section.index = 100;
+  startFullSection(state);
+  ASSERT_TRUE(pump(state, [&] { return state.full_section.has_value() || !state.full_section_error.empty(); }));
+  ASSERT_TRUE(state.full_section_error.empty()) << state.full_section_error;
+  const Section& full = *state.full_section;
+  EXPECT_EQ(full.index, middle);
+  EXPECT_EQ(full.mask.width, 16384);  // y, at the file's resolution
+  EXPECT_EQ(full.mask.height, 4096);  // z
+  EXPECT_EQ(full.filled, 1);
+  EXPECT_EQ(full.mask.at(50, 4095 - 7), 1);
 }
 
 TEST(AppDocument, openPeelUndoRedoAndTheUnsavedState) {

@@ -52,6 +52,20 @@ struct Section {
   Image2D<uint8_t> mask;
 };
 Result<Section> computeSection(const VoxelGrid& grid, const SectionParams& params);
+// The section of a model that arrives a window of Z layers at a time (a .vxm file read in windows): the same
+// result as computeSection. start() fails as computeSection does for an index outside a grid of these dims.
+class SectionAccumulator {
+ public:
+  static Result<SectionAccumulator> start(const Dims& dims, const GridFrame& frame, const SectionParams& params);
+  // Adds layers [z0, z1) of `window`, whose layer 0 is the model's layer z_offset.
+  void add(const VoxelGrid& window, int32_t z0, int32_t z1, int32_t z_offset);
+  // Once every layer (along Z: the section's layer) was added.
+  const Section& result() const { return s_; }
+
+ private:
+  Dims dims_;
+  Section s_;
+};
 // Filled voxels in one section, without building the image. O(section words).
 int64_t sectionCount(const VoxelGrid& grid, Axis axis, int32_t index);
 

@@ -7,10 +7,12 @@
 #include <imgui.h>
 
 #include "app/actions.h"
+#include "app/full_section.h"
 #include "app/operations.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
 #include "vox/core/units.h"
+#include "vox/io/figure.h"
 
 namespace vox::app {
 namespace {
@@ -26,6 +28,33 @@ void advancePlayback(AppState& state, int32_t n) {
   if (next >= n) next = 0;  // loop, like the thesis's "successive incremental sections"
   s.index = next;
   state.viewport.interacting = true;
+}
+
+// A coarse view's section at full resolution, from the file (full_section.h): a button, the progress, the image.
+void drawFullResolution(AppState& state) {
+  heading("Full resolution");
+  const SectionUi& s = state.section;
+  const int32_t full = fullResolutionIndex(state, s.axis, s.index);
+  ImGui::TextWrapped(
+      "This is a coarse view (level %d) of %s. The file's own section %s = %d runs through the middle "
+      "of this section's blocks.",
+      state.doc.coarse_level, state.doc.path.filename().string().c_str(), axisName(s.axis), full);
+  if (state.full_section_job.running()) {
+    ImGui::ProgressBar(float(state.full_section_job.progress()), ImVec2(-1.0f, 0.0f), "reading the file");
+    if (ImGui::Button("Cancel##full_section")) state.full_section_job.cancel();
+  } else if (ImGui::Button("Read it from the file")) {
+    startFullSection(state);
+  }
+  markWidget("full_section_button");
+  if (!state.full_section_error.empty()) ImGui::TextWrapped("%s", state.full_section_error.c_str());
+  if (!state.full_section) return;
+  const Section& f = *state.full_section;
+  if (state.full_section_texture.empty()) state.full_section_texture.upload(io::sectionPicture(f.mask, 1));
+  ImGui::Text("%s = %d of the file: %s filled voxels", axisName(f.axis), f.index, groupDigits(f.filled).c_str());
+  const float w = std::max(1.0f, ImGui::GetContentRegionAvail().x);
+  const float scale = std::min(1.0f, w / float(std::max(f.mask.width, 1)));
+  ImGui::Image(textureId(state.full_section_texture.id()),
+               ImVec2(float(f.mask.width) * scale, float(f.mask.height) * scale));
 }
 
 }  // namespace
@@ -98,6 +127,8 @@ void drawSectionPanel(AppState& state) {
   } else if (!state.section_error.empty()) {
     ImGui::TextWrapped("%s", state.section_error.c_str());
   }
+
+  if (state.doc.coarse_level > 1) drawFullResolution(state);
 
   heading("3D view");
   actionCheckbox(state, ActionId::kViewCut, "Cut away the model at the section");
