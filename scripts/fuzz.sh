@@ -43,7 +43,7 @@ seed_named 7 tests/data/mesh/*.step tests/data/malformed/*.step $shared/meshes/c
 seed_named 8 tests/data/mesh/*.iges tests/data/malformed/*.iges
 
 status=0
-export LSAN_OPTIONS=suppressions=$PWD/tests/fuzz/lsan.supp
+export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp
 for t in stl vxm binvox mesh_file; do
   mkdir -p build-fuzz/crashes/$t
   echo "fuzzing $t for ${seconds}s"

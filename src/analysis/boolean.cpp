@@ -1,7 +1,8 @@
 // Boolean operations between two voxel models on the same lattice (thesis 7.2 names set operations among the
-// natural extensions of a voxel modeller): union, intersection and difference are one word operation per 64
-// voxels. Layers that one operand lacks are handled without touching words: a union shares the other operand's
-// layer (copy on write), an intersection leaves it empty, a difference keeps the first operand's layer.
+// natural extensions of a voxel modeller): union, intersection, difference and symmetric difference (xor) are one
+// word operation per 64 voxels. Layers that one operand lacks are handled without touching words: a union or xor
+// keeps the first operand's layer or shares the second's (copy on write), an intersection leaves it empty, a
+// difference keeps the first operand's layer.
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -57,31 +58,34 @@ Result<VoxelGrid> booleanOp(const VoxelGrid& a, const VoxelGrid& b, BoolOp op) {
   parallelChunks(0, a.nz(), 4, threads, [&](int, int64_t z0, int64_t z1) {
     for (int32_t z = int32_t(z0); z < int32_t(z1); ++z) {
       const bool ha = a.layerAllocated(z), hb = b.layerAllocated(z);
-      if (!hb) continue;  // union and difference keep a's layer; intersection stays empty
-      const uint64_t* wb = b.layerWords(z);
-      const uint64_t* wa = a.layerWords(z);
-      switch (op) {
-        case BoolOp::kUnion: {
-          uint64_t* w = out.mutableLayerWords(z);
-          for (int64_t i = 0; i < n; ++i) w[i] = wa[i] | wb[i];
-          break;
-        }
-        case BoolOp::kIntersection: {
-          if (!ha) break;
-          uint64_t* w = out.mutableLayerWords(z);
-          for (int64_t i = 0; i < n; ++i) w[i] = wa[i] & wb[i];
-          break;
-        }
-        case BoolOp::kDifference: {
-          if (!ha) break;
-          uint64_t* w = out.mutableLayerWords(z);
-          for (int64_t i = 0; i < n; ++i) w[i] = wa[i] & ~wb[i];
-          break;
-        }
+      if (!hb) continue;  // union, xor and difference keep a's layer; intersection stays empty
+      if (!ha) {
+        // a's layer is empty: union and xor are b's layer, shared; intersection and difference stay empty.
+        if (op == BoolOp::kUnion || op == BoolOp::kXor) out.shareLayerFrom(b, z);
+        continue;
       }
+      // Both layers hold voxels: a fresh layer written once (no copy of a's layer first), given back when empty.
+      const uint64_t* wa = a.layerWords(z);
+      const uint64_t* wb = b.layerWords(z);
+      uint64_t* w = out.freshLayerWords(z);
+      uint64_t any = 0;
+      switch (op) {
+        case BoolOp::kUnion:
+          for (int64_t i = 0; i < n; ++i) any |= w[i] = wa[i] | wb[i];
+          break;
+        case BoolOp::kIntersection:
+          for (int64_t i = 0; i < n; ++i) any |= w[i] = wa[i] & wb[i];
+          break;
+        case BoolOp::kDifference:
+          for (int64_t i = 0; i < n; ++i) any |= w[i] = wa[i] & ~wb[i];
+          break;
+        case BoolOp::kXor:
+          for (int64_t i = 0; i < n; ++i) any |= w[i] = wa[i] ^ wb[i];
+          break;
+      }
+      if (any == 0) out.releaseLayer(z);
     }
   });
-  if (op != BoolOp::kUnion) out.releaseEmptyLayers();
   return out;
 }
 

@@ -61,7 +61,9 @@ WordSums wordSums(uint64_t w) {
   return r;
 }
 
-struct Sums {
+}  // namespace
+
+struct MassAccumulator::Sums {
   int64_t n = 0, interior = 0;
   Int128 sx = 0, sy = 0, sz = 0, sxx = 0, syy = 0, szz = 0, sxy = 0, sxz = 0, syz = 0;
   glm::ivec3 lo{INT32_MAX}, hi{-1};
@@ -77,21 +79,23 @@ struct Sums {
   }
 };
 
-}  // namespace
+namespace {
 
-MassProperties computeMassProperties(const VoxelGrid& grid) {
-  MassProperties mp;
-  if (grid.empty()) return mp;
+using Sums = MassAccumulator::Sums;
+
+// Sums over layers [z0, z1) of `grid`, which holds the model's layers from z_offset on.
+Sums sumLayers(const VoxelGrid& grid, int32_t z0, int32_t z1, int32_t z_offset) {
   const int64_t wpr = grid.wordsPerRow();
   const int threads = threadsFor(grid.allocatedLayers() * grid.wordsPerLayer());
   std::vector<Sums> partial(static_cast<size_t>(threads));
-  parallelChunks(0, grid.nz(), 4, threads, [&](int t, int64_t z0, int64_t z1) {
+  parallelChunks(z0, z1, 4, threads, [&](int t, int64_t zl0, int64_t zl1) {
     Sums& s = partial[size_t(t)];
-    for (int32_t z = int32_t(z0); z < int32_t(z1); ++z) {
-      if (!grid.layerAllocated(z)) continue;
-      const uint64_t* below = grid.layerWords(z - 1);
-      const uint64_t* cur = grid.layerWords(z);
-      const uint64_t* above = grid.layerWords(z + 1);
+    for (int32_t zl = int32_t(zl0); zl < int32_t(zl1); ++zl) {
+      if (!grid.layerAllocated(zl)) continue;
+      const int32_t z = zl + z_offset;
+      const uint64_t* below = grid.layerWords(zl - 1);
+      const uint64_t* cur = grid.layerWords(zl);
+      const uint64_t* above = grid.layerWords(zl + 1);
       for (int32_t y = 0; y < grid.ny(); ++y) {
         const int64_t base = (int64_t(y) + 1) * wpr;
         int64_t n = 0, sp = 0, spp = 0;  // padded positions p = x + 1
@@ -128,11 +132,15 @@ MassProperties computeMassProperties(const VoxelGrid& grid) {
   });
   Sums s;
   for (const Sums& p : partial) s.add(p);
+  return s;
+}
 
+MassProperties massFromSums(const Sums& s, const GridFrame& frame) {
+  MassProperties mp;
   mp.filled = s.n;
   if (s.n == 0) return mp;
-  const double h = grid.voxelSize();
-  const glm::dvec3 origin = grid.frame().origin;
+  const double h = frame.voxel_size;
+  const glm::dvec3 origin = frame.origin;
   const double n = double(s.n);
   mp.volume = n * h * h * h;
   mp.centroid = origin + (glm::dvec3(double(s.sx), double(s.sy), double(s.sz)) / n + 0.5) * h;
@@ -156,6 +164,24 @@ MassProperties computeMassProperties(const VoxelGrid& grid) {
   mp.bbox.max = origin + (glm::dvec3(s.hi) + 1.0) * h;
   mp.volume_error_bound = double(s.n - s.interior) * h * h * h;
   return mp;
+}
+
+}  // namespace
+
+MassAccumulator::MassAccumulator() : sums_(std::make_unique<Sums>()) {}
+MassAccumulator::~MassAccumulator() = default;
+
+void MassAccumulator::add(const VoxelGrid& window, int32_t z0, int32_t z1, int32_t z_offset) {
+  sums_->add(sumLayers(window, z0, z1, z_offset));
+}
+
+MassProperties MassAccumulator::result(const GridFrame& frame) const { return massFromSums(*sums_, frame); }
+
+MassProperties computeMassProperties(const VoxelGrid& grid) {
+  if (grid.empty()) return {};
+  MassAccumulator acc;
+  acc.add(grid, 0, grid.nz(), 0);
+  return acc.result(grid.frame());
 }
 
 PrincipalAxes principalAxes(const glm::dmat3& inertia) {

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <optional>
@@ -165,46 +166,48 @@ int64_t rectangles(std::vector<uint64_t>& img, int64_t rows, int64_t words, bool
   return faces;
 }
 
-// The corners that have vertices: open addressing on the corner's index (linear probing, at most half full), each
-// with its configuration and the first of its vertices (one per fan, consecutive). Far cheaper than a node-based
-// map for the millions of lookups along the rectangles' sides.
-class CornerTable {
+// The lattice corners that have vertices: one bit per corner in x-fastest order (the corner's index), a count of
+// the bits before every word (per block of 8 words, and within it), and per set bit (in index order) the corner's
+// configuration and first vertex (one per fan, consecutive). A corner is found by its rank among the set bits: the
+// lookups along a rectangle's sides touch memory near its plane, where a hash table would scatter them over all of it.
+class CornerIndex {
  public:
-  struct Entry {
-    uint64_t key;
-    uint32_t base;
-    uint8_t cfg;
-  };
-  CornerTable() : slots_(size_t(1) << 16, Entry{kEmpty, 0, 0}) {}
-  const Entry* find(uint64_t key) const {
-    for (size_t i = slot(key);; i = (i + 1) & (slots_.size() - 1)) {
-      if (slots_[i].key == key) return &slots_[i];
-      if (slots_[i].key == kEmpty) return nullptr;
+  static constexpr uint32_t kNone = ~uint32_t(0);
+  explicit CornerIndex(uint64_t lattice) : bits_(size_t((lattice + 63) / 64), 0) {}
+  void mark(uint64_t key) { bits_[size_t(key >> 6)] |= uint64_t(1) << (key & 63); }
+  bool has(uint64_t key) const { return (bits_[size_t(key >> 6)] >> (key & 63)) & 1; }
+  // After every mark: the ranks, and room for each corner's vertices.
+  void freeze() {
+    block_rank_.resize(bits_.size() / 8 + 1);
+    word_rank_.resize(bits_.size());
+    uint64_t n = 0;
+    for (size_t w = 0; w < bits_.size(); ++w) {
+      if (w % 8 == 0) block_rank_[w / 8] = n;
+      word_rank_[w] = uint16_t(n - block_rank_[w / 8]);
+      n += uint64_t(std::popcount(bits_[w]));
     }
+    base_.assign(size_t(n), kNone);
+    cfg_.assign(size_t(n), 0);
   }
-  Entry* insert(uint64_t key, uint32_t base, uint8_t cfg) {
-    if (2 * (size_ + 1) > slots_.size()) grow();
-    size_t i = slot(key);
-    while (slots_[i].key != kEmpty) i = (i + 1) & (slots_.size() - 1);
-    slots_[i] = Entry{key, base, cfg};
-    ++size_;
-    return &slots_[i];
+  size_t rank(uint64_t key) const {
+    const size_t w = size_t(key >> 6);
+    return size_t(block_rank_[w / 8] + word_rank_[w] +
+                  uint64_t(std::popcount(bits_[w] & ((uint64_t(1) << (key & 63)) - 1))));
   }
+  size_t words() const { return bits_.size(); }
+  uint64_t word(size_t w) const { return bits_[w]; }
+  size_t wordRank(size_t w) const { return size_t(block_rank_[w / 8] + word_rank_[w]); }
+  uint32_t& base(size_t rank) { return base_[rank]; }
+  uint32_t base(size_t rank) const { return base_[rank]; }
+  uint8_t& cfg(size_t rank) { return cfg_[rank]; }
+  uint8_t cfg(size_t rank) const { return cfg_[rank]; }
 
  private:
-  static constexpr uint64_t kEmpty = ~uint64_t(0);
-  size_t slot(uint64_t key) const {
-    return size_t((key * 0x9E3779B97F4A7C15ull) >> (64 - std::countr_zero(slots_.size())));
-  }
-  void grow() {
-    std::vector<Entry> old(slots_.size() * 2, Entry{kEmpty, 0, 0});
-    old.swap(slots_);
-    size_ = 0;
-    for (const Entry& e : old)
-      if (e.key != kEmpty) insert(e.key, e.base, e.cfg);
-  }
-  std::vector<Entry> slots_;
-  size_t size_ = 0;
+  std::vector<uint64_t> bits_;
+  std::vector<uint64_t> block_rank_;  // set bits before each block of 8 words
+  std::vector<uint16_t> word_rank_;   // set bits before each word within its block
+  std::vector<uint32_t> base_;
+  std::vector<uint8_t> cfg_;
 };
 
 class Mesher {
@@ -218,7 +221,11 @@ class Mesher {
   SurfaceMeshStats stats;
 
  private:
-  void addPlane(int a, int32_t c, bool neg, std::vector<uint64_t>& img, int64_t rows, int64_t words, int shift);
+  // The rectangles of one face image, appended to `out`; returns its voxel faces.
+  int64_t addPlane(int a, int32_t c, bool neg, std::vector<uint64_t>& img, int64_t rows, int64_t words, int shift,
+                   std::vector<Rect>& out) const;
+  // Z (a = 2) or Y (a = 1) planes, in parallel over blocks of planes, appended in plane order.
+  bool collectPlanes(int a, const ProgressFn& progress);
   int cfgAt(const P3& p) const {
     int cfg = 0;
     for (int k = 0; k < 8; ++k)
@@ -250,27 +257,34 @@ class Mesher {
   SurfaceMeshParams params_;
   const CornerFans& fans_;
   std::vector<Rect> rects_;
-  CornerTable corners_;
+  std::optional<CornerIndex> corners_;
   std::unordered_map<uint64_t, uint32_t> middles_;
   IndexedMesh mesh_;
 };
 
-void Mesher::addPlane(int a, int32_t c, bool neg, std::vector<uint64_t>& img, int64_t rows, int64_t words, int shift) {
-  stats.voxel_faces +=
-      rectangles(img, rows, words, params_.merge_coplanar, [&](int64_t b0, int64_t b1, int64_t r0, int64_t r1) {
-        rects_.push_back(Rect{int8_t(a), neg, c, int32_t(b0 - shift), int32_t(b1 - shift), int32_t(r0), int32_t(r1)});
-      });
+int64_t Mesher::addPlane(int a, int32_t c, bool neg, std::vector<uint64_t>& img, int64_t rows, int64_t words, int shift,
+                         std::vector<Rect>& out) const {
+  return rectangles(img, rows, words, params_.merge_coplanar, [&](int64_t b0, int64_t b1, int64_t r0, int64_t r1) {
+    out.push_back(Rect{int8_t(a), neg, c, int32_t(b0 - shift), int32_t(b1 - shift), int32_t(r0), int32_t(r1)});
+  });
 }
 
-bool Mesher::collect(const ProgressFn& progress) {
-  const int64_t nx = g_.nx(), ny = g_.ny(), nz = g_.nz(), wpr = g_.wordsPerRow();
-  std::vector<uint64_t> pos, neg;
-  // Z planes (rows y, bits padded x) and Y planes (rows z, bits padded x).
-  for (int a : {2, 1}) {
-    const int64_t planes = (a == 2 ? nz : ny) + 1, rows = a == 2 ? ny : nz;
-    for (int64_t c = 0; c < planes; ++c) {
-      pos.assign(size_t(rows * wpr), 0);
-      neg.assign(size_t(rows * wpr), 0);
+bool Mesher::collectPlanes(int a, const ProgressFn& progress) {
+  const int64_t wpr = g_.wordsPerRow();
+  const int64_t planes = (a == 2 ? g_.nz() : g_.ny()) + 1, rows = a == 2 ? g_.ny() : g_.nz();
+  constexpr int64_t kGrain = 8;
+  struct Block {
+    std::vector<Rect> rects;
+    int64_t faces = 0;
+  };
+  std::vector<Block> blocks(size_t((planes + kGrain - 1) / kGrain));
+  std::atomic<bool> cancelled{false};
+  std::atomic<int64_t> done{0};
+  parallelChunks(0, planes, kGrain, threadsFor(planes * rows * wpr), [&](int t, int64_t c0, int64_t c1) {
+    if (cancelled.load(std::memory_order_relaxed)) return;
+    Block& block = blocks[size_t(c0 / kGrain)];
+    std::vector<uint64_t> pos(size_t(rows * wpr)), neg(size_t(rows * wpr));
+    for (int64_t c = c0; c < c1; ++c) {
       for (int64_t r = 0; r < rows; ++r) {
         const uint64_t* lo = a == 2 ? g_.rowWords(int32_t(r), int32_t(c - 1)) : g_.rowWords(int32_t(c - 1), int32_t(r));
         const uint64_t* hi = a == 2 ? g_.rowWords(int32_t(r), int32_t(c)) : g_.rowWords(int32_t(c), int32_t(r));
@@ -279,47 +293,68 @@ bool Mesher::collect(const ProgressFn& progress) {
           neg[size_t(r * wpr + w)] = ~lo[w] & hi[w];
         }
       }
-      addPlane(a, int32_t(c), false, pos, rows, wpr, 1);
-      addPlane(a, int32_t(c), true, neg, rows, wpr, 1);
-      if ((c & 63) == 0 && progress &&
-          !progress(a == 2 ? 0.25 * double(c) / double(planes) : 0.25 + 0.25 * double(c) / double(planes)))
-        return false;
+      block.faces += addPlane(a, int32_t(c), false, pos, rows, wpr, 1, block.rects);
+      block.faces += addPlane(a, int32_t(c), true, neg, rows, wpr, 1, block.rects);
     }
+    const int64_t d = done.fetch_add(c1 - c0) + (c1 - c0);
+    if (t == 0 && progress && !progress((a == 2 ? 0.0 : 0.25) + 0.25 * double(d) / double(planes))) cancelled = true;
+  });
+  if (cancelled) return false;
+  for (Block& b : blocks) {
+    rects_.insert(rects_.end(), b.rects.begin(), b.rects.end());
+    stats.voxel_faces += b.faces;
   }
+  return true;
+}
+
+bool Mesher::collect(const ProgressFn& progress) {
+  const int64_t nx = g_.nx(), ny = g_.ny(), nz = g_.nz(), wpr = g_.wordsPerRow();
+  // Z planes (rows y, bits padded x) and Y planes (rows z, bits padded x).
+  for (int a : {2, 1})
+    if (!collectPlanes(a, progress)) return false;
   // X planes: rows z, bits y, from the bit changes along each row; 64 planes at a time (those of one word of the
-  // rows), so the images hold 64 planes, not all of them.
-  const int64_t wy = (ny + 63) / 64;
-  std::vector<std::vector<uint64_t>> xpos(64), xneg(64);
-  for (int64_t w = 0; w < wpr && w * 64 <= nx; ++w) {
-    for (int64_t z = 0; z < nz; ++z) {
-      for (int64_t y = 0; y < ny; ++y) {
-        const uint64_t* row = g_.rowWords(int32_t(y), int32_t(z));
-        const uint64_t next = w + 1 < wpr ? row[w + 1] : 0;
-        for (uint64_t t = row[w] ^ (row[w] >> 1 | next << 63); t; t &= t - 1) {
-          const int bit = std::countr_zero(t);  // plane x = 64w + bit: voxels x - 1 (this bit) and x (the next)
-          auto& img = (row[w] >> bit & 1) ? xpos[size_t(bit)] : xneg[size_t(bit)];
-          if (img.empty()) img.assign(size_t(nz * wy), 0);
-          img[size_t(z * wy + (y >> 6))] |= uint64_t(1) << (y & 63);
+  // rows), so the images hold 64 planes, not all of them; the words of the rows in parallel, appended in order.
+  const int64_t wy = (ny + 63) / 64, xwords = std::min(wpr, nx / 64 + 1);
+  std::vector<std::vector<Rect>> xrects(static_cast<size_t>(xwords));
+  std::vector<int64_t> xfaces(static_cast<size_t>(xwords), 0);
+  parallelChunks(0, xwords, 1, threadsFor(nz * ny * xwords), [&](int, int64_t w0, int64_t w1) {
+    std::vector<std::vector<uint64_t>> xpos(64), xneg(64);
+    for (int64_t w = w0; w < w1; ++w) {
+      for (int64_t z = 0; z < nz; ++z) {
+        for (int64_t y = 0; y < ny; ++y) {
+          const uint64_t* row = g_.rowWords(int32_t(y), int32_t(z));
+          const uint64_t next = w + 1 < wpr ? row[w + 1] : 0;
+          for (uint64_t t = row[w] ^ (row[w] >> 1 | next << 63); t; t &= t - 1) {
+            const int bit = std::countr_zero(t);  // plane x = 64w + bit: voxels x - 1 (this bit) and x (the next)
+            auto& img = (row[w] >> bit & 1) ? xpos[size_t(bit)] : xneg[size_t(bit)];
+            if (img.empty()) img.assign(size_t(nz * wy), 0);
+            img[size_t(z * wy + (y >> 6))] |= uint64_t(1) << (y & 63);
+          }
         }
       }
+      auto& out = xrects[size_t(w)];
+      for (int bit = 0; bit < 64; ++bit) {
+        const auto c = int32_t(w * 64 + bit);
+        if (!xpos[size_t(bit)].empty()) xfaces[size_t(w)] += addPlane(0, c, false, xpos[size_t(bit)], nz, wy, 0, out);
+        if (!xneg[size_t(bit)].empty()) xfaces[size_t(w)] += addPlane(0, c, true, xneg[size_t(bit)], nz, wy, 0, out);
+        // rectangles() leaves the images cleared, ready for the next 64 planes
+      }
     }
-    for (int bit = 0; bit < 64; ++bit) {
-      const auto c = int32_t(w * 64 + bit);
-      if (!xpos[size_t(bit)].empty()) addPlane(0, c, false, xpos[size_t(bit)], nz, wy, 0);
-      if (!xneg[size_t(bit)].empty()) addPlane(0, c, true, xneg[size_t(bit)], nz, wy, 0);
-      // rectangles() leaves the images cleared, ready for the next 64 planes
-    }
+  });
+  for (int64_t w = 0; w < xwords; ++w) {
+    rects_.insert(rects_.end(), xrects[size_t(w)].begin(), xrects[size_t(w)].end());
+    stats.voxel_faces += xfaces[size_t(w)];
   }
   stats.rectangles = int64_t(rects_.size());
   return !progress || progress(0.6);
 }
 
 void Mesher::makeCorner(const P3& p) {
-  const uint64_t key = cornerIndex(p);
-  if (corners_.find(key)) return;
+  const size_t i = corners_->rank(cornerIndex(p));
+  if (corners_->base(i) != CornerIndex::kNone) return;
   // the first rectangle with a corner here makes the corner's vertices, one per fan
-  const int cfg = cfgAt(p);
-  corners_.insert(key, uint32_t(mesh_.vertices.size()), uint8_t(cfg));
+  const int cfg = corners_->cfg(i);
+  corners_->base(i) = uint32_t(mesh_.vertices.size());
   const glm::dvec3 at{double(p[0]), double(p[1]), double(p[2])};
   const int fans = fans_.count[cfg];
   for (int f = 0; f < fans; ++f) add(fans > 1 ? at + kSplitMove * fans_.move[cfg][f] : at);
@@ -327,25 +362,28 @@ void Mesher::makeCorner(const P3& p) {
 }
 
 int64_t Mesher::findCorner(const Rect& r, const P3& p, int64_t uf, int64_t vf) const {
-  const CornerTable::Entry* e = corners_.find(cornerIndex(p));
-  if (!e) return -1;
+  const uint64_t key = cornerIndex(p);
+  if (!corners_->has(key)) return -1;
+  const size_t i = corners_->rank(key);
   const P3 q = point(r.a, r.c, uf, vf);  // the face's min corner
   std::array<int, 3> quadrant{};
   for (int k = 0; k < 3; ++k) quadrant[size_t(k)] = q[size_t(k)] == p[size_t(k)] ? 1 : 0;
-  return e->base + uint32_t(fans_.fan[e->cfg][CornerFans::faceIndex(r.a, quadrant)]);
+  return corners_->base(i) + uint32_t(fans_.fan[corners_->cfg(i)][CornerFans::faceIndex(r.a, quadrant)]);
 }
 
 std::optional<uint64_t> Mesher::middleKey(const Rect& r, int64_t u, int64_t v, int e) const {
   const P3 p = point(r.a, r.c, u, v);
   const int o1 = (e + 1) % 3, o2 = (e + 2) % 3;
-  bool f[4];
-  for (int k = 0; k < 4; ++k) {
+  auto voxel = [&](int k) {
     P3 q = p;
     q[size_t(o1)] += (k & 1) - 1;
     q[size_t(o2)] += (k >> 1) - 1;
-    f[k] = g_.get(q[0], q[1], q[2]);
-  }
-  if (!(f[0] == f[3] && f[1] == f[2] && f[0] != f[1])) return std::nullopt;
+    return g_.get(q[0], q[1], q[2]);
+  };
+  // A checkerboard: voxels 0 and 3 alike, 1 and 2 alike, the two pairs different (tested lazily: most edges fail
+  // at the first pair, since one of r's own two voxels is in each)
+  const bool f0 = voxel(0);
+  if (voxel(3) != f0 || voxel(1) == f0 || voxel(2) == f0) return std::nullopt;
   // r's filled voxel along this edge: the voxel of r's face next to it, on r's filled side of the plane
   P3 vox = point(r.a, r.c - (r.neg ? 0 : 1), std::min<int64_t>(u, r.u1 - 1), std::min<int64_t>(v, r.v1 - 1));
   vox[size_t(e)] = p[size_t(e)];
@@ -415,6 +453,25 @@ void Mesher::emit(const Rect& r, const uint64_t* refs, size_t n, std::vector<uin
 
 Result<IndexedMesh> Mesher::build() {
   // Every rectangle corner first, so that each side finds the vertices of its neighbours.
+  corners_.emplace(uint64_t(g_.nx() + 1) * uint64_t(g_.ny() + 1) * uint64_t(g_.nz() + 1));
+  for (const Rect& r : rects_) {
+    corners_->mark(cornerIndex(point(r.a, r.c, r.u0, r.v0)));
+    corners_->mark(cornerIndex(point(r.a, r.c, r.u1, r.v0)));
+    corners_->mark(cornerIndex(point(r.a, r.c, r.u1, r.v1)));
+    corners_->mark(cornerIndex(point(r.a, r.c, r.u0, r.v1)));
+  }
+  corners_->freeze();
+  // every corner's configuration, in parallel over the bit words
+  const int64_t words = int64_t(corners_->words()), nx1 = g_.nx() + 1, ny1 = g_.ny() + 1;
+  parallelChunks(0, words, 1 << 12, threadsFor(int64_t(rects_.size()) * 16), [&](int, int64_t w0, int64_t w1) {
+    size_t i = corners_->wordRank(size_t(w0));
+    for (int64_t w = w0; w < w1; ++w) {
+      for (uint64_t t = corners_->word(size_t(w)); t; t &= t - 1) {
+        const int64_t key = w * 64 + std::countr_zero(t);
+        corners_->cfg(i++) = uint8_t(cfgAt(P3{key % nx1, (key / nx1) % ny1, key / (nx1 * ny1)}));
+      }
+    }
+  });
   for (const Rect& r : rects_) {
     makeCorner(point(r.a, r.c, r.u0, r.v0));
     makeCorner(point(r.a, r.c, r.u1, r.v0));

@@ -37,6 +37,9 @@ struct Accumulate {
 };
 
 // Rays along X: one per row (y, z). Image x right = y, up = z.
+// rays_hit, min, max and mean from the image.
+void xrayStatistics(XrayResult& r);
+
 void raysAlongX(const VoxelGrid& g, Accumulate acc, Image2D<int32_t>& img) {
   const int64_t wpr = g.wordsPerRow();
   const int threads = threadsFor(g.allocatedLayers() * g.wordsPerLayer());
@@ -109,6 +112,23 @@ void raysAlongY(const VoxelGrid& g, Accumulate acc, Image2D<int32_t>& img) {
 
 // Rays along Z: one per (x, y), following the layers z = 0 .. nz (layer nz is padding). Split over rows y; each
 // chunk of rows walks all layers. Image x right = x, up = y.
+// The boundary between layers z - 1 (`prev`, a row) and z (`cur`) of the rays of one row along Z: a run starts
+// where cur is filled and prev not, and one ends (its length accumulated) where prev is filled and cur not.
+void zBoundary(const uint64_t* prev, const uint64_t* cur, int64_t wpr, int32_t z, Accumulate acc, int32_t* st,
+               int32_t* val) {
+  for (int64_t w = 0; w < wpr; ++w) {
+    for (uint64_t m = prev[w] ^ cur[w]; m; m &= m - 1) {
+      const int b = std::countr_zero(m);
+      const int64_t pos = w * 64 + b;
+      if ((cur[w] >> b) & 1) {
+        st[pos] = z;
+      } else {
+        acc(val[pos], z - st[pos]);
+      }
+    }
+  }
+}
+
 void raysAlongZ(const VoxelGrid& g, Accumulate acc, Image2D<int32_t>& img) {
   const int64_t wpr = g.wordsPerRow();
   const int64_t bits = wpr * 64;
@@ -120,21 +140,8 @@ void raysAlongZ(const VoxelGrid& g, Accumulate acc, Image2D<int32_t>& img) {
     for (int32_t z = 0; z <= g.nz(); ++z) {
       if (!g.layerAllocated(z) && !g.layerAllocated(z - 1)) continue;  // no boundary between two empty layers
       for (int64_t r = 0; r < rows; ++r) {
-        const uint64_t* prev = g.rowWords(int32_t(y0 + r), z - 1);
-        const uint64_t* cur = g.rowWords(int32_t(y0 + r), z);
-        int32_t* st = start.data() + r * bits;
-        int32_t* val = value.data() + r * bits;
-        for (int64_t w = 0; w < wpr; ++w) {
-          for (uint64_t m = prev[w] ^ cur[w]; m; m &= m - 1) {
-            const int b = std::countr_zero(m);
-            const int64_t pos = w * 64 + b;
-            if ((cur[w] >> b) & 1) {
-              st[pos] = z;
-            } else {
-              acc(val[pos], z - st[pos]);
-            }
-          }
-        }
+        zBoundary(g.rowWords(int32_t(y0 + r), z - 1), g.rowWords(int32_t(y0 + r), z), wpr, z, acc,
+                  start.data() + r * bits, value.data() + r * bits);
       }
     }
     for (int64_t r = 0; r < rows; ++r) {
@@ -169,6 +176,67 @@ Result<XrayResult> computeXray(const VoxelGrid& grid, const XrayParams& params) 
       raysAlongZ(grid, acc, r.thickness);
       break;
   }
+  xrayStatistics(r);
+  return r;
+}
+
+XrayAccumulator::XrayAccumulator(const Dims& dims, const GridFrame& frame, const XrayParams& params) : dims_(dims) {
+  r_.axis = params.axis;
+  r_.mode = params.mode;
+  r_.voxel_size = frame.voxel_size;
+  r_.units = frame.units;
+  const int32_t width = params.axis == Axis::kX ? dims.ny : dims.nx;
+  const int32_t height = params.axis == Axis::kZ ? dims.ny : dims.nz;
+  r_.thickness = Image2D<int32_t>(width, height, 0);
+  if (params.axis == Axis::kZ) {
+    const size_t bits = size_t(VoxelGrid(Dims{dims.nx, 1, 1}).wordsPerRow()) * 64;
+    start_.assign(bits * size_t(dims.ny), 0);
+    value_.assign(bits * size_t(dims.ny), 0);
+  }
+}
+
+void XrayAccumulator::add(const VoxelGrid& g, int32_t z0, int32_t z1, int32_t z_offset) {
+  const Accumulate acc{r_.mode};
+  if (r_.axis != Axis::kZ) {
+    // Rays along X and Y lie within a layer: the window's own image, whose rows go where their layers belong.
+    Image2D<int32_t> img(r_.thickness.width, g.nz(), 0);
+    if (r_.axis == Axis::kX) raysAlongX(g, acc, img);
+    if (r_.axis == Axis::kY) raysAlongY(g, acc, img);
+    for (int32_t z = z0; z < z1; ++z) {
+      std::copy_n(&img.at(0, g.nz() - 1 - z), img.width, &r_.thickness.at(0, dims_.nz - 1 - (z + z_offset)));
+    }
+    return;
+  }
+  // Along Z: the boundaries below each layer, and above the model's last one (the window's padding layer).
+  const int64_t wpr = g.wordsPerRow(), bits = wpr * 64;
+  const int32_t last = z1 + z_offset == dims_.nz ? z1 : z1 - 1;
+  const int threads = threadsFor(g.allocatedLayers() * g.wordsPerLayer());
+  parallelChunks(0, g.ny(), 32, threads, [&](int, int64_t y0, int64_t y1) {
+    for (int32_t z = z0; z <= last; ++z) {
+      if (!g.layerAllocated(z) && !g.layerAllocated(z - 1)) continue;
+      for (int64_t y = y0; y < y1; ++y) {
+        zBoundary(g.rowWords(int32_t(y), z - 1), g.rowWords(int32_t(y), z), wpr, z + z_offset, acc,
+                  start_.data() + y * bits, value_.data() + y * bits);
+      }
+    }
+  });
+}
+
+XrayResult XrayAccumulator::result() {
+  if (r_.axis == Axis::kZ) {
+    const int64_t bits = int64_t(start_.size()) / std::max<int64_t>(dims_.ny, 1);
+    for (int32_t y = 0; y < dims_.ny; ++y) {
+      int32_t* out = &r_.thickness.at(0, dims_.ny - 1 - y);
+      for (int32_t x = 0; x < dims_.nx; ++x) out[x] = value_[size_t(y * bits + x + 1)];
+    }
+  }
+  xrayStatistics(r_);
+  return r_;
+}
+
+namespace {
+
+void xrayStatistics(XrayResult& r) {
   int64_t sum = 0;
   int64_t lo = INT64_MAX, hi = 0;
   for (int32_t v : r.thickness.pixels) {
@@ -183,8 +251,9 @@ Result<XrayResult> computeXray(const VoxelGrid& grid, const XrayParams& params) 
     r.max = hi;
     r.mean = double(sum) / double(r.rays_hit);
   }
-  return r;
 }
+
+}  // namespace
 
 std::string xrayCsv(const XrayResult& xray) {
   // Units go into a column name: keep it to letters, digits and '_'.

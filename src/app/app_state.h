@@ -91,6 +91,9 @@ struct Document {
   std::filesystem::path save_path;  // where Save writes; empty until saved once (or loaded from a voxel file)
   // The model version that matches a file on disk; the model is "unsaved" when it differs.
   uint64_t saved_version = 0;
+  // > 1: the model is a coarse view of `path` at this level (each level^3 block of the file's voxels is one voxel,
+  // filled when any of its voxels is), because the file's grid does not fit in memory; Save does not overwrite it.
+  int32_t coarse_level = 1;
 };
 
 // ---- Params the widgets edit ----
@@ -234,6 +237,10 @@ struct LoadedFile {
   std::shared_ptr<const MeshSource> mesh;  // a mesh or CAD file
   std::optional<VoxelGrid> grid;           // a voxel file
   double load_s = 0.0;
+  // > 1: `grid` is a coarse view of a .vxm file too large for memory (io::readVxmCoarse at this level), whose own
+  // dims are full_dims.
+  int32_t coarse_level = 1;
+  Dims full_dims;
 };
 
 // The 3D view: GL objects of the window's context.

@@ -171,6 +171,10 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
     const bool in_background = purpose == BrowserPurpose::kExportVolume || purpose == BrowserPurpose::kExportThickness;
     if (purpose != BrowserPurpose::kOpen && !in_background) {
       state.status_message = "Wrote " + std::filesystem::absolute(path).lexically_normal().string();
+      const bool surface = purpose == BrowserPurpose::kExportSurface || purpose == BrowserPurpose::kExportSmoothSurface;
+      if (surface && state.panel == Panel::kSection && state.view.cut_away) {
+        state.status_message += " (the half the cut-away keeps)";
+      }
       state.status_since = nowSeconds();
     }
     if (auto then = std::move(state.browser.then)) {

@@ -1,15 +1,18 @@
 #include "app/document.h"
 
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "app/browser_purposes.h"
 #include "app/messages.h"
 #include "app/model_jobs.h"
 #include "app/update.h"
+#include "vox/core/text.h"
 #include "vox/io/file_util.h"
 #include "vox/io/mesh_file.h"
 #include "vox/io/voxel_file.h"
+#include "vox/io/vxm_stream.h"
 
 namespace vox::app {
 namespace {
@@ -106,12 +109,21 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
   if (loaded.grid) {
     auto origin = std::make_shared<ModelOrigin>();
     origin->what = "loaded " + loaded.path.filename().string();
+    doc.coarse_level = loaded.coarse_level;
+    if (loaded.coarse_level > 1) {
+      const int32_t n = loaded.coarse_level;
+      origin->what = "coarse view of " + loaded.path.filename().string() + " (" + dimsText(loaded.full_dims) +
+                     ", too large for memory) at level " + std::to_string(n) + ": each " + std::to_string(n) + " x " +
+                     std::to_string(n) + " x " + std::to_string(n) +
+                     " block is one voxel, filled when any of its voxels is; "
+                     "take full-resolution sections with voxmod section";
+    }
     origin->load_s = loaded.load_s;
     VoxelGrid grid = std::move(*loaded.grid);
     if (grid.frame().source.empty()) grid.frame().source = loaded.path.filename().string();
     setModel(state, newBase(state, std::move(grid), std::move(origin), "open " + loaded.path.filename().string()),
              false);
-    doc.save_path = loaded.path;
+    if (loaded.coarse_level == 1) doc.save_path = loaded.path;  // a coarse view never overwrites its file
     doc.saved_version = doc.model->version;
     state.panel = Panel::kModel;
     state.panel_change_requested = true;
@@ -156,6 +168,20 @@ std::shared_ptr<MeshSource> makeMeshSource(const std::filesystem::path& path, io
   return mesh;
 }
 
+namespace {
+
+// The level a .vxm file opens at, and its dims, when its grid does not fit in a quarter of the memory limit (the
+// rest is for the view, undo and the analyses); nullopt when it fits (or cannot be read: loadVoxelFile says why).
+std::optional<std::pair<int32_t, Dims>> coarseViewOf(const std::filesystem::path& path) {
+  if (io::lowerExtension(path) != ".vxm") return std::nullopt;
+  auto h = io::readVxmHeader(path);
+  const uint64_t budget = defaultMemoryLimitBytes() / 4;
+  if (!h || estimateGridBytes(h->dims) <= budget) return std::nullopt;
+  return std::pair{io::coarseLevelFor(h->dims, budget), h->dims};
+}
+
+}  // namespace
+
 void startOpen(AppState& state, const std::filesystem::path& path) {
   state.voxelize_job.abandon();
   state.job_started = nowSeconds();
@@ -166,7 +192,13 @@ void startOpen(AppState& state, const std::filesystem::path& path) {
                          const double t0 = nowSeconds();
                          LoadedFile out;
                          out.path = path;
-                         if (io::isVoxelFile(path)) {
+                         if (const auto coarse = coarseViewOf(path)) {
+                           auto grid = io::readVxmCoarse(path, coarse->first, progress);
+                           if (!grid) return grid.error();
+                           out.grid = std::move(grid).value();
+                           out.coarse_level = coarse->first;
+                           out.full_dims = coarse->second;
+                         } else if (io::isVoxelFile(path)) {
                            auto grid = io::loadVoxelFile(path);
                            if (!grid) return grid.error();
                            out.grid = std::move(grid).value();

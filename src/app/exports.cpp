@@ -4,6 +4,7 @@
 
 #include "app/messages.h"
 #include "app/update.h"
+#include "vox/analysis/cut.h"
 #include "vox/analysis/surface_mesh.h"
 #include "vox/io/figure.h"
 #include "vox/io/file_util.h"
@@ -34,7 +35,15 @@ bool exportSurface(AppState& state, const std::filesystem::path& path, bool smoo
     reportError(state, path.string() + ": not a mesh format (" + io::meshExportExtensions() + ")", path);
     return false;
   }
-  auto mesh = extractSurfaceMesh(state.model, SurfaceMeshParams{true, smooth ? 10 : 0});
+  // What the view shows: with the Section panel's cut-away on, the half it keeps (the cut face included).
+  const bool cut = state.panel == Panel::kSection && state.view.cut_away;
+  const VoxelGrid half =
+      cut ? cutAway(state.model, state.section.axis, state.section.index, state.view.keep_above) : VoxelGrid();
+  if (cut && half.filledCount() == 0) {
+    reportError(state, "the cut-away keeps no voxels: nothing to export", path);
+    return false;
+  }
+  auto mesh = extractSurfaceMesh(cut ? half : state.model, SurfaceMeshParams{true, smooth ? 10 : 0});
   if (!mesh) {
     reportError(state, describe(mesh.error(), path), path);
     return false;

@@ -8,6 +8,7 @@
 #include "cli/cmd_list.h"
 #include "cli/commands.h"
 #include "cli/model_input.h"
+#include "cli/stream_readers.h"
 #include "vox/analysis/analysis.h"
 #include "vox/analysis/distance.h"
 #include "vox/analysis/scalar_fields.h"
@@ -54,9 +55,18 @@ struct SectionOptions {
 int runSection(const SectionOptions& o) {
   Output out(o.c.json);
   if (const std::string why = pngOutputProblem(o.out); !why.empty()) return out.fail(kExitUsage, why);
-  auto model = loadModel(o.c.file, o.c.mesh, out);
-  if (!model) return out.fail(model.error());
-  auto section = computeSection(model->grid, o.params);
+  // The model's dims and frame (its voxels too, unless the file is read in windows).
+  VoxelGrid grid;
+  Result<Section> section = Error{};
+  if (auto h = streamedVxm(o.c.file, o.c.mesh, out)) {
+    grid = VoxelGrid(h->dims, h->frame);
+    section = streamedSection(o.c.file, *h, o.c.mesh, o.params);
+  } else {
+    auto model = loadModel(o.c.file, o.c.mesh, out);
+    if (!model) return out.fail(model.error());
+    grid = std::move(model->grid);
+    section = computeSection(grid, o.params);
+  }
   if (!section) return out.fail(section.error());
   if (auto s = io::savePng(io::sectionPicture(section->mask, o.scale), o.out); !s) return out.fail(s.error());
   auto& d = out.data();
@@ -68,7 +78,7 @@ int runSection(const SectionOptions& o) {
   d["height"] = section->mask.height;
   d["output"] = o.out;
   out.say(std::string("section ") + axisName(o.params.axis) + " = " + std::to_string(o.params.index) + " (at " +
-          significant(section->position) + " " + model->grid.frame().units + "): " + std::to_string(section->filled) +
+          significant(section->position) + " " + grid.frame().units + "): " + std::to_string(section->filled) +
           " filled voxels; wrote " + o.out);
   return out.finish();
 }
@@ -172,9 +182,18 @@ int runXray(const XrayOptions& o) {
   if (!o.volume.empty()) {
     if (const std::string why = fieldOutputProblem(o.volume); !why.empty()) return out.fail(kExitUsage, why);
   }
-  auto model = loadModel(o.c.file, o.c.mesh, out);
-  if (!model) return out.fail(model.error());
-  auto x = computeXray(model->grid, o.params);
+  // The model's dims and frame (its voxels too, unless the file is read in windows).
+  VoxelGrid grid;
+  Result<XrayResult> x = Error{};
+  if (auto h = streamedVxm(o.c.file, o.c.mesh, out)) {
+    grid = VoxelGrid(h->dims, h->frame);
+    x = streamedXray(o.c.file, *h, o.c.mesh, o.params);
+  } else {
+    auto model = loadModel(o.c.file, o.c.mesh, out);
+    if (!model) return out.fail(model.error());
+    grid = std::move(model->grid);
+    x = computeXray(grid, o.params);
+  }
   if (!x) return out.fail(x.error());
   // The image, the CSV and the volume are written as one: all or, on any failure, none.
   auto png = io::encodePng(io::drawScalarMapFigure(x->thickness, x->max, xrayLegend(*x), o.scale).image, o.out);
@@ -185,19 +204,19 @@ int runXray(const XrayOptions& o) {
     files.push_back({o.csv, std::vector<uint8_t>(csv.begin(), csv.end())});
   }
   if (!o.volume.empty()) {
-    auto bytes = encodeFieldFile("xray", xrayField(*x, model->grid), o.volume);
+    auto bytes = encodeFieldFile("xray", xrayField(*x, grid), o.volume);
     if (!bytes) return out.fail(bytes.error());
     files.push_back({o.volume, std::move(bytes).value()});
   }
   if (auto s = io::writeFilesAtomic(files); !s) return out.fail(s.error());
-  const double h = model->grid.voxelSize();
+  const double h = grid.voxelSize();
   // *_mm keys are millimetres when the model's units are known, model units otherwise ("units" says which).
-  const double metres = metresPerUnit(model->grid.frame().units);
+  const double metres = metresPerUnit(grid.frame().units);
   const double to_mm = metres > 0 ? metres * 1000.0 : 1.0;
   auto& d = out.data();
   d["axis"] = axisName(o.params.axis);
   d["mode"] = xrayModeName(o.params.mode);
-  d["units"] = metres > 0 ? std::string("mm") : model->grid.frame().units;
+  d["units"] = metres > 0 ? std::string("mm") : grid.frame().units;
   d["rays_hit"] = x->rays_hit;
   d["min"] = x->min;
   d["max"] = x->max;
@@ -210,7 +229,7 @@ int runXray(const XrayOptions& o) {
   if (!o.volume.empty()) d["volume"] = o.volume;
   out.say(std::string("x-ray ") + xrayModeName(o.params.mode) + " along " + axisName(o.params.axis) + ": " +
           std::to_string(x->rays_hit) + " rays hit; min " + std::to_string(x->min) + ", max " + std::to_string(x->max) +
-          ", mean " + significant(x->mean) + " voxels (voxel size " + significant(h) + " " + model->grid.frame().units +
+          ", mean " + significant(x->mean) + " voxels (voxel size " + significant(h) + " " + grid.frame().units +
           "); wrote " + o.out);
   return out.finish();
 }
@@ -222,6 +241,12 @@ struct MassOptions {
   std::string material;
 };
 
+int massNeedsUnits(const std::string& file, Output& out) {
+  return out.fail(kExitUsage, file +
+                                  ": a mass in kg needs the model's length units, which this file does not give: say "
+                                  "them with --units mm|cm|m|in");
+}
+
 int runMass(const MassOptions& o) {
   Output out(o.c.json);
   double density = o.density;
@@ -230,16 +255,23 @@ int runMass(const MassOptions& o) {
     if (!d) return out.fail(kExitUsage, "unknown material '" + o.material + "' (known: " + materialNames() + ")");
     density = *d;
   }
-  auto model = loadModel(o.c.file, o.c.mesh, out);
-  if (!model) return out.fail(model.error());
-  const std::string& units = model->grid.frame().units;
-  const double metres = metresPerUnit(units);
-  if (density > 0 && metres == 0) {
-    return out.fail(kExitUsage, o.c.file +
-                                    ": a mass in kg needs the model's length units, which this file does not "
-                                    "give: say them with --units mm|cm|m|in");
+  GridFrame frame;
+  MassProperties m;
+  if (auto h = streamedVxm(o.c.file, o.c.mesh, out)) {
+    frame = h->frame;
+    if (density > 0 && metresPerUnit(frame.units) == 0) return massNeedsUnits(o.c.file, out);
+    auto r = streamedMass(o.c.file, *h, o.c.mesh);
+    if (!r) return out.fail(r.error());
+    m = *r;
+  } else {
+    auto model = loadModel(o.c.file, o.c.mesh, out);
+    if (!model) return out.fail(model.error());
+    frame = model->grid.frame();
+    if (density > 0 && metresPerUnit(frame.units) == 0) return massNeedsUnits(o.c.file, out);
+    m = computeMassProperties(model->grid);
   }
-  const MassProperties m = computeMassProperties(model->grid);
+  const std::string& units = frame.units;
+  const double metres = metresPerUnit(units);
   auto& d = out.data();
   d["filled"] = m.filled;
   d["volume"] = m.volume;

@@ -8,11 +8,14 @@
 #include "cli/cmd_list.h"
 #include "cli/commands.h"
 #include "cli/model_input.h"
+#include "cli/stream_readers.h"
 #include "vox/analysis/surface_mesh.h"
 #include "vox/io/mesh_export.h"
 #include "vox/io/magicavoxel.h"
 #include "vox/io/volume_export.h"
 #include "vox/io/voxel_file.h"
+#include "vox/io/vxm_stream.h"
+#include "vox/voxelize/stream.h"
 
 namespace vox::cli {
 namespace {
@@ -69,6 +72,24 @@ int convertToVolume(const ConvertOptions& o, Output& out) {
   return out.finish();
 }
 
+// A .vxm IN too large for memory to a .binvox OUT, without the grid (io::convertVxmToBinvox).
+int convertStreamedToBinvox(const ConvertOptions& o, const io::VxmHeaderInfo& h, Output& out) {
+  const double t0 = nowSeconds();
+  const uint64_t limit = o.mesh.memory_limit_bytes > 0 ? o.mesh.memory_limit_bytes : defaultMemoryLimitBytes();
+  if (auto s = io::convertVxmToBinvox(o.in, o.out, limit / 2, windowLayers(h.dims, o.mesh)); !s) {
+    return out.fail(s.error());
+  }
+  auto& d = out.data();
+  d["input"] = o.in;
+  d["output"] = o.out;
+  d["dims"] = {h.dims.nx, h.dims.ny, h.dims.nz};
+  d["filled"] = h.filled;
+  d["write_s"] = nowSeconds() - t0;
+  d["streamed"] = true;
+  out.say("wrote " + o.out);
+  return out.finish();
+}
+
 int runConvert(const ConvertOptions& o) {
   Output out(o.json);
   if (io::isVolumeFile(o.out)) {
@@ -85,6 +106,9 @@ int runConvert(const ConvertOptions& o) {
     return out.fail(kExitUsage, "--voxel-faces and --smooth apply to a surface mesh OUT");
   }
   if (o.smooth && o.smooth_iterations < 1) return out.fail(kExitUsage, "--smooth-iterations must be at least 1");
+  if (io::lowerExtension(o.out) == ".binvox") {
+    if (auto h = streamedVxm(o.in, o.mesh, out)) return convertStreamedToBinvox(o, *h, out);
+  }
   auto model = loadModel(o.in, o.mesh, out);
   if (!model) return out.fail(model.error());
   if (model->grid.filledCount() == 0 && surface) {

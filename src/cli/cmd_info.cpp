@@ -5,6 +5,7 @@
 #include "cli/cmd_list.h"
 #include "cli/commands.h"
 #include "cli/model_input.h"
+#include "cli/stream_readers.h"
 #include "vox/core/surface.h"
 
 namespace vox::cli {
@@ -18,6 +19,7 @@ struct InfoOptions {
 
 int runInfo(const InfoOptions& o) {
   Output out(o.json);
+  if (auto h = streamedVxm(o.file, o.mesh, out)) return streamedInfo(o.file, *h, o.mesh, out);
   auto model = loadModel(o.file, o.mesh, out);
   if (!model) return out.fail(model.error());
   const VoxelGrid& g = model->grid;

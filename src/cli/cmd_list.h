@@ -15,4 +15,8 @@ void addThicknessCommand(CLI::App& sub, CommandContext& ctx);
 void addRenderCommand(CLI::App& sub, CommandContext& ctx);
 void addConvertCommand(CLI::App& sub, CommandContext& ctx);
 void addBatchCommand(CLI::App& sub, CommandContext& ctx);
+void addBooleanCommand(CLI::App& sub, CommandContext& ctx);
+void addBodiesCommand(CLI::App& sub, CommandContext& ctx);
+void addInterfereCommand(CLI::App& sub, CommandContext& ctx);
+void addClearanceCommand(CLI::App& sub, CommandContext& ctx);
 }  // namespace vox::cli

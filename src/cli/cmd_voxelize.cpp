@@ -1,7 +1,7 @@
 // voxmod voxelize MESH --res R | --voxel-size H [--mode M] [--threads N] -o OUT (docs/conventions.md, "Command line").
 // JSON keys: triangles, dims, voxel_size, origin, filled, volume, load_s, voxelize_s, write_s, total_s, warnings;
 // also format, bodies, units, file_units, deflection, mode, mode_reason, disputed_voxels, strays_removed, grid_bytes
-// and peak_rss_bytes.
+// peak_rss_bytes and streamed (true: written in slabs, cli/voxelize_stream.h).
 #include <sys/resource.h>
 
 #include <new>
@@ -11,7 +11,9 @@
 #include "cli/cmd_list.h"
 #include "cli/commands.h"
 #include "cli/model_input.h"
+#include "cli/voxelize_stream.h"
 #include "vox/io/voxel_file.h"
+#include "vox/voxelize/stream.h"
 
 namespace vox::cli {
 namespace {
@@ -39,6 +41,15 @@ int runVoxelize(const VoxelizeOptions& o) {
   auto params = voxelizeParams(o.mesh_options);
   if (!params) return out.fail(params.error());
   params->units = mesh->units;
+  // A grid that does not fit under the memory limit is voxelized in Z slabs straight into the .vxm file.
+  const FillMode mode = params->mode == FillMode::kAuto ? resolveAutoMode(mesh->topology).mode : params->mode;
+  auto slab_layers = streamSlabLayers(mesh->mesh.bounds(), *params, mode, meshHeldBytes(mesh->mesh));
+  if (!slab_layers) return out.fail(Error{slab_layers.error().code, o.mesh + ": " + slab_layers.error().message});
+  if (*slab_layers > 0 && o.mesh_options.params.remove_strays) {
+    return out.fail(Error{ErrorCode::kLimit, o.mesh + ": the grid does not fit under the memory limit and " +
+                                                 "--remove-strays needs it whole; leave it out or lower --res"});
+  }
+  if (*slab_layers > 0) return runStreamedVoxelize({o.mesh, o.out, *slab_layers, t0, t_loaded}, *mesh, *params, out);
   auto result = voxelizeSolid(mesh->mesh, *params, terminalProgress("voxelizing"), &mesh->topology);
   if (!result) return out.fail(Error{result.error().code, o.mesh + ": " + result.error().message});
   const double t_voxelized = nowSeconds();
@@ -92,6 +103,7 @@ int runVoxelize(const VoxelizeOptions& o) {
   d["total_s"] = t_written - t0;
   d["grid_bytes"] = g.memoryBytes();
   d["peak_rss_bytes"] = peakRssBytes();
+  d["streamed"] = false;
   out.say("voxelized " + o.mesh + " (" + std::to_string(triangles) + " triangles) to " + std::to_string(g.nx()) +
           " x " + std::to_string(g.ny()) + " x " + std::to_string(g.nz()) + ", " + std::to_string(filled) +
           " filled voxels, mode " + fillModeName(result->mode_used) + " (" + result->mode_reason + ")");

@@ -20,8 +20,13 @@ const std::vector<Command>& commands() {
       {"thickness", "Wall thickness: exact distance, local thickness, thin walls and hot spots (NRRD, PNG)",
        addThicknessCommand},
       {"render", "Render the surface voxels as shaded points to a PNG (headless)", addRenderCommand},
-      {"convert", "Convert between voxel formats (.vxm, .binvox)", addConvertCommand},
+      {"convert", "Convert between formats: voxel files, volumes (.nrrd .vti .vdb .vox), surface meshes", addConvertCommand},
       {"batch", "Convert many files, one output each, in parallel or over MPI ranks, with a report", addBatchCommand},
+      {"boolean", "Union, intersection, difference or xor of two parts on one lattice", addBooleanCommand},
+      {"bodies", "Split a mesh into its bodies (a voxel file into its components), voxelized on one lattice",
+       addBodiesCommand},
+      {"interfere", "Which parts or bodies share voxels, how many and where", addInterfereCommand},
+      {"clearance", "The smallest gap between two parts that do not touch", addClearanceCommand},
   };
   return table;
 }

@@ -3,7 +3,10 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <exception>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -22,9 +25,32 @@ void addCommonOptions(CLI::App& sub, CommonOptions& c, const std::string& mode_n
   addMeshOptions(sub, c.mesh, mode_names);
 }
 
+namespace {
+
+// "512" (MiB), "64K", "512M", "2G" (binary units); nullopt for anything else, zero or past 2^60 bytes.
+std::optional<uint64_t> parseMemorySize(const std::string& text) {
+  size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  const std::string unit = text.substr(used);
+  double scale = 0;
+  if (unit.empty() || unit == "M" || unit == "m" || unit == "MiB") scale = double(1 << 20);
+  if (unit == "K" || unit == "k" || unit == "KiB") scale = double(1 << 10);
+  if (unit == "G" || unit == "g" || unit == "GiB") scale = double(1 << 30);
+  const double bytes = v * scale;
+  if (!(bytes >= 1.0) || bytes > double(uint64_t(1) << 60)) return std::nullopt;
+  return uint64_t(bytes);
+}
+
+}  // namespace
+
 void addMeshOptions(CLI::App& sub, MeshOptions& options, const std::string& mode_names) {
   auto* res = sub.add_option("--res", options.params.resolution,
-                             "For a mesh FILE: voxels along the longest axis (1-4096, default 200)");
+                             "For a mesh FILE: voxels along the longest axis (1-16384, default 200)");
   auto* size = sub.add_option("--voxel-size", options.params.voxel_size,
                               "For a mesh FILE: voxel size in model units (instead of --res)");
   res->excludes(size);
@@ -38,9 +64,17 @@ void addMeshOptions(CLI::App& sub, MeshOptions& options, const std::string& mode
       ->check(CLI::IsMember(std::vector<std::string>(kLengthUnits.begin(), kLengthUnits.end())));
   sub.add_option("--threads", options.params.threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(0, 1024));
-  sub.add_option("--memory-limit", options.memory_limit_mib,
-                 "Refuse grids needing more than this many MiB (default: 80% of physical memory)")
-      ->check(CLI::PositiveNumber);
+  sub.add_option_function<std::string>(
+         "--memory-limit",
+         [&options](const std::string& text) {
+           const std::optional<uint64_t> bytes = parseMemorySize(text);
+           if (!bytes) throw CLI::ValidationError("--memory-limit", "'" + text + "' is not a size: 512, 512M, 2G");
+           options.memory_limit_bytes = *bytes;
+         },
+         "Memory for the grid (SIZE: MiB, or with K, M, G; default 80% of physical memory): voxelize streams a larger "
+         "grid to a .vxm file in Z slabs, info/section/xray/mass/convert read a larger .vxm file in windows, the "
+         "rest refuse it")
+      ->type_name("SIZE");
 }
 
 ProgressFn terminalProgress(const std::string& label) {
@@ -63,7 +97,7 @@ Result<VoxelizeParams> voxelizeParams(const MeshOptions& options) {
   auto mode = parseFillMode(options.mode_text);
   if (!mode) return makeError(ErrorCode::kInvalidArgument, "unknown --mode '" + options.mode_text + "'");
   params.mode = *mode;
-  if (options.memory_limit_mib > 0) params.memory_limit_bytes = uint64_t(options.memory_limit_mib) << 20;
+  if (options.memory_limit_bytes > 0) params.memory_limit_bytes = options.memory_limit_bytes;
   return params;
 }
 
@@ -72,7 +106,7 @@ io::MeshFileOptions meshFileOptions(const MeshOptions& options) {
   o.resolution = options.params.resolution;
   o.voxel_size = options.params.voxel_size;
   o.units = options.units;
-  if (options.memory_limit_mib > 0) o.memory_limit_bytes = uint64_t(options.memory_limit_mib) << 20;
+  if (options.memory_limit_bytes > 0) o.memory_limit_bytes = options.memory_limit_bytes;
   o.progress = terminalProgress("reading");  // only CAD files report progress: reading, healing, tessellating
   return o;
 }
@@ -85,16 +119,20 @@ Result<io::MeshFileLoad> loadMesh(const std::filesystem::path& file, const MeshO
   return mesh;
 }
 
+void warnMeshOnlyOptions(const std::filesystem::path& file, const MeshOptions& options, Output& out) {
+  for (const CLI::Option* o : options.mesh_only) {
+    if (o->count() > 0) {
+      out.warn(o->get_name() + " is ignored: " + file.filename().string() +
+               " is a voxel file, already voxelized (the option applies to a mesh FILE)");
+    }
+  }
+}
+
 Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptions& options, Output& out) {
   LoadedModel m;
   const double t0 = nowSeconds();
   if (io::isVoxelFile(file)) {
-    for (const CLI::Option* o : options.mesh_only) {
-      if (o->count() > 0) {
-        out.warn(o->get_name() + " is ignored: " + file.filename().string() +
-                 " is a voxel file, already voxelized (the option applies to a mesh FILE)");
-      }
-    }
+    warnMeshOnlyOptions(file, options, out);
     auto grid = io::loadVoxelFile(file);
     if (!grid) return grid.error();
     m.grid = std::move(grid).value();

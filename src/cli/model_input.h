@@ -24,14 +24,16 @@ namespace vox::cli {
 struct MeshOptions {
   VoxelizeParams params;
   std::string mode_text = "auto";
-  int64_t memory_limit_mib = 0;
+  // --memory-limit SIZE; 0: the default (80% of physical memory).
+  uint64_t memory_limit_bytes = 0;
   std::string units;  // --units: what the model's numbers are in (mm, cm, m, in); empty: the file's own
   // The options above that only a mesh FILE uses, to say so when they are given with a voxel file.
   std::vector<const CLI::Option*> mesh_only;
 };
 
 // Adds --res, --voxel-size, --mode (alias --fill-mode), --threads, --memory-limit to a subcommand. Subcommands
-// whose own --mode means something else (xray) pass mode_names = "--fill-mode".
+// whose own --mode means something else (xray) pass mode_names = "--fill-mode". --memory-limit takes a SIZE: a
+// number of MiB, or a number with K, M or G (KiB, MiB, GiB).
 void addMeshOptions(CLI::App& sub, MeshOptions& options, const std::string& mode_names = "--mode,--fill-mode");
 
 struct LoadedModel {
@@ -58,6 +60,9 @@ Result<VoxelizeParams> voxelizeParams(const MeshOptions& options);
 io::MeshFileOptions meshFileOptions(const MeshOptions& options);
 // Reads a mesh or CAD file; its warnings and notes go through `out`.
 Result<io::MeshFileLoad> loadMesh(const std::filesystem::path& file, const MeshOptions& options, Output& out);
+
+// Warns about each mesh-only option (--res, --voxel-size, --mode) given with the voxel file FILE.
+void warnMeshOnlyOptions(const std::filesystem::path& file, const MeshOptions& options, Output& out);
 
 // Reads FILE; messages and warnings go through `out`. Progress goes to stderr when it is a terminal.
 Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptions& options, Output& out);

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <string>
 
+#include <glm/common.hpp>
+#include <glm/vector_relational.hpp>
+
 namespace vox {
 namespace {
 
@@ -62,6 +65,60 @@ Result<GridPlacement> placeGridByVoxelSize(const Box3d& bounds, double voxel_siz
                                             ")");
   }
   return place(bounds, voxel_size, std::max<int64_t>(1, int64_t(r)));
+}
+
+}  // namespace vox
+
+namespace vox {
+
+GridPlacement placeGridOnLattice(const GridFrame& lattice, const glm::ivec3& first, const Dims& dims) {
+  GridPlacement p;
+  p.frame = lattice;
+  p.dims = dims;
+  p.first = first;
+  p.resolution = std::max({dims.nx, dims.ny, dims.nz});
+  return p;
+}
+
+void latticeRange(const GridPlacement& placement, const Box3d& bounds, glm::ivec3& begin, glm::ivec3& end) {
+  const glm::ivec3 n(placement.dims.nx, placement.dims.ny, placement.dims.nz);
+  const double h = placement.frame.voxel_size;
+  for (int a = 0; a < 3; ++a) {
+    // Centre I lies at origin + (I + 0.5) h. One voxel of margin on either side absorbs every rounding of this
+    // estimate; the voxelizer decides each centre exactly, so extra voxels only stay empty.
+    const double lo = std::floor((bounds.min[a] - placement.frame.origin[a]) / h - 0.5) - 1.0;
+    const double hi = std::ceil((bounds.max[a] - placement.frame.origin[a]) / h - 0.5) + 2.0;
+    const double first = placement.first[a], last = double(placement.first[a]) + n[a];
+    begin[a] = int32_t(std::clamp(lo, first, last));
+    end[a] = int32_t(std::clamp(hi, double(begin[a]), last));
+  }
+}
+
+}  // namespace vox
+
+namespace vox {
+
+Result<GridPlacement> placeBoundsOnLattice(const GridFrame& lattice, const Box3d& bounds) {
+  if (auto s = checkBounds(bounds); !s) return makeError(ErrorCode::kInvalidArgument, s.error().message);
+  const double h = lattice.voxel_size;
+  glm::ivec3 first(0);
+  Dims dims;
+  for (int a = 0; a < 3; ++a) {
+    // As latticeRange: one voxel of margin past the centres nearest the box's faces.
+    const double lo = std::floor((bounds.min[a] - lattice.origin[a]) / h - 0.5) - 1.0;
+    const double hi = std::ceil((bounds.max[a] - lattice.origin[a]) / h - 0.5) + 2.0;
+    if (!(std::abs(lo) < 1073741824.0 && std::abs(hi) < 1073741824.0)) {
+      return makeError(ErrorCode::kLimit, "the mesh lies more than 2^30 voxels from the lattice's origin");
+    }
+    if (hi - lo > double(kMaxResolution)) {
+      return makeError(ErrorCode::kLimit, "the mesh spans " + std::to_string(int64_t(hi - lo)) +
+                                              " voxels of the lattice along an axis (at most " +
+                                              std::to_string(kMaxResolution) + ")");
+    }
+    first[a] = int32_t(lo);
+    (a == 0 ? dims.nx : a == 1 ? dims.ny : dims.nz) = std::max(1, int32_t(hi - lo));
+  }
+  return placeGridOnLattice(lattice, first, dims);
 }
 
 }  // namespace vox

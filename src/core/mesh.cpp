@@ -171,6 +171,10 @@ MeshTopology analyzeTopology(const TriangleMesh& mesh) {
   return topo;
 }
 
+std::vector<uint32_t> weldExactVertices(const TriangleMesh& mesh, int64_t& vertices) {
+  return weldCorners<ExactKey>(mesh, exactKey, vertices);
+}
+
 MeshTopology analyzeTopologyWelded(const TriangleMesh& mesh, double weld_tolerance) {
   MeshTopology topo;
   // Corners are numbered in 32 bits.

@@ -41,10 +41,12 @@ void rowSurfaceMask(const VoxelGrid& grid, int32_t y, int32_t z, uint64_t* out) 
   }
 }
 
-int64_t countSurfaceVoxels(const VoxelGrid& grid) {
+int64_t countSurfaceVoxels(const VoxelGrid& grid) { return countSurfaceVoxels(grid, 0, grid.nz()); }
+
+int64_t countSurfaceVoxels(const VoxelGrid& grid, int32_t z0, int32_t z1) {
   std::vector<uint64_t> mask(size_t(grid.wordsPerRow()));
   int64_t count = 0;
-  for (int32_t z = 0; z < grid.nz(); ++z) {
+  for (int32_t z = z0; z < z1; ++z) {
     if (!grid.layerAllocated(z)) continue;
     for (int32_t y = 0; y < grid.ny(); ++y) {
       rowSurfaceMask(grid, y, z, mask.data());

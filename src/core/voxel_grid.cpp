@@ -51,6 +51,13 @@ uint64_t* VoxelGrid::mutableLayerWords(int32_t z) {
   return layer->data();
 }
 
+uint64_t* VoxelGrid::freshLayerWords(int32_t z) {
+  assert(z >= 0 && z < dims_.nz);
+  auto& layer = layers_[size_t(z) + 1];
+  layer = std::make_shared<Layer>(size_t(wordsPerLayer()));
+  return layer->data();
+}
+
 uint64_t* VoxelGrid::mutableRowWords(int32_t y, int32_t z) {
   assert(y >= 0 && y < dims_.ny);
   return mutableLayerWords(z) + (int64_t(y) + 1) * words_per_row_;
@@ -163,6 +170,15 @@ int64_t cellDistance(const glm::ivec3& a, const glm::ivec3& b) {
 
 int64_t chebyshevDistance(const glm::ivec3& a, const glm::ivec3& b) {
   return std::max({std::llabs(int64_t(a.x) - b.x), std::llabs(int64_t(a.y) - b.y), std::llabs(int64_t(a.z) - b.z)});
+}
+
+}  // namespace vox
+
+namespace vox {
+
+void VoxelGrid::shareLayerFrom(const VoxelGrid& other, int32_t z) {
+  assert(other.dims_ == dims_ && z >= 0 && z < dims_.nz);
+  layers_[size_t(z + 1)] = other.layerAllocated(z) ? other.layers_[size_t(z + 1)] : zero_layer_;
 }
 
 }  // namespace vox

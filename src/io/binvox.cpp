@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <string_view>
 
+#include "io/binvox_detail.h"
 #include "io/voxel_file_common.h"
 #include "vox/io/file_util.h"
 #include "vox/io/voxel_file.h"
@@ -22,28 +23,9 @@ using voxel_file_detail::checkLayerMemory;
 using voxel_file_detail::emitRuns;
 using voxel_file_detail::encodeToMemory;
 using voxel_file_detail::Writer;
+using namespace binvox_detail;
 
 std::string baseName(const std::string& name) { return std::filesystem::path(name).filename().string(); }
-
-// Transposes a 64 x 64 bit matrix in place: afterwards bit c of a[r] is what bit r of a[c] was. The recursive
-// block swap of Hacker's Delight (H. S. Warren, 2nd ed., section 7-3), for 64-bit words, least significant bit
-// first: swap the off-diagonal 32 x 32 blocks, then the 16 x 16 blocks inside each, and so on.
-void transpose64(uint64_t* a) {
-  uint64_t m = 0x00000000FFFFFFFFull;
-  for (int j = 32; j != 0; j >>= 1, m ^= (m << j)) {
-    for (int k = 0; k < 64; k = ((k | j) + 1) & ~j) {
-      const uint64_t t = ((a[k] >> j) ^ a[k | j]) & m;
-      a[k] ^= t << j;
-      a[k | j] ^= t;
-    }
-  }
-}
-
-std::string shortestDouble(double v) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
 
 bool parseDouble(std::string_view s, double& v) {
   if (!s.empty() && s[0] == '+') s.remove_prefix(1);
@@ -55,32 +37,6 @@ bool parseInt(std::string_view s, int64_t& v) {
   const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
   return r.ec == std::errc() && r.ptr == s.data() + s.size();
 }
-
-// (value, count) byte pairs with counts of at most 255, merging adjacent runs of one value.
-class BinvoxRuns {
- public:
-  explicit BinvoxRuns(Writer& out) : out_(out) {}
-  void add(bool filled, uint64_t n) {
-    if (n == 0) return;
-    if (uint8_t(filled) != value_) {
-      flush();
-      value_ = uint8_t(filled);
-    }
-    run_ += n;
-  }
-  void flush() {
-    while (run_ > 0) {
-      const uint64_t piece = std::min<uint64_t>(run_, 255);
-      out_.pair(value_, uint8_t(piece));
-      run_ -= piece;
-    }
-  }
-
- private:
-  Writer& out_;
-  uint8_t value_ = 0;
-  uint64_t run_ = 0;
-};
 
 // y-columns of up to 64 consecutive x values, for the Z layers that hold voxels (numbered compactly, so empty
 // layers cost nothing): column(xi, z) is yWords() words, bit y of the column = voxel (x0 + xi, y, z).
@@ -128,10 +84,7 @@ std::vector<std::string_view> splitWords(std::string_view line) {
 // The binvox encoder, streamed in chunks of about a megabyte (binvox has no checksum or counts to patch).
 Status encodeBinvoxTo(const VoxelGrid& grid, ByteSink& sink) {
   const int32_t d = std::max({grid.nx(), grid.ny(), grid.nz()});
-  const GridFrame& f = grid.frame();
-  std::string header = "#binvox 1\ndim " + std::to_string(d) + " " + std::to_string(d) + " " + std::to_string(d) +
-                       "\ntranslate " + shortestDouble(f.origin.x) + " " + shortestDouble(f.origin.y) + " " +
-                       shortestDouble(f.origin.z) + "\nscale " + shortestDouble(double(d) * f.voxel_size) + "\ndata\n";
+  const std::string header = binvoxHeader(grid.dims(), grid.frame());
   Writer out(&sink);
   out.bytes.assign(header.begin(), header.end());
   if (d == 0) return out.flush();
@@ -408,5 +361,36 @@ Result<VoxelGrid> loadBinvox(const std::filesystem::path& path) {
   if (!bytes.ok()) return bytes.error();
   return decodeBinvox(bytes.value(), path.string());
 }
+
+namespace binvox_detail {
+
+// Transposes a 64 x 64 bit matrix in place: afterwards bit c of a[r] is what bit r of a[c] was. The recursive
+// block swap of Hacker's Delight (H. S. Warren, 2nd ed., section 7-3), for 64-bit words, least significant bit
+// first: swap the off-diagonal 32 x 32 blocks, then the 16 x 16 blocks inside each, and so on.
+void transpose64(uint64_t* a) {
+  uint64_t m = 0x00000000FFFFFFFFull;
+  for (int j = 32; j != 0; j >>= 1, m ^= (m << j)) {
+    for (int k = 0; k < 64; k = ((k | j) + 1) & ~j) {
+      const uint64_t t = ((a[k] >> j) ^ a[k | j]) & m;
+      a[k] ^= t << j;
+      a[k | j] ^= t;
+    }
+  }
+}
+
+static std::string shortestDouble(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+std::string binvoxHeader(const Dims& dims, const GridFrame& f) {
+  const int32_t d = std::max({dims.nx, dims.ny, dims.nz});
+  return "#binvox 1\ndim " + std::to_string(d) + " " + std::to_string(d) + " " + std::to_string(d) + "\ntranslate " +
+         shortestDouble(f.origin.x) + " " + shortestDouble(f.origin.y) + " " + shortestDouble(f.origin.z) + "\nscale " +
+         shortestDouble(double(d) * f.voxel_size) + "\ndata\n";
+}
+
+}  // namespace binvox_detail
 
 }  // namespace vox::io

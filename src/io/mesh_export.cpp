@@ -92,7 +92,7 @@ std::string meshExportExtensions() { return "stl, ply, obj, 3mf"; }
 
 Status saveMesh(const IndexedMesh& mesh, const std::filesystem::path& path) {
   const std::string ext = lowerExtension(path);
-  if (ext == ".stl") return saveStlBinary(mesh.toTriangleMesh(), path);
+  if (ext == ".stl") return saveStlBinary(mesh, path);
   const char* id = exporterFor(ext);
   if (!id) {
     return makeError(ErrorCode::kInvalidArgument,

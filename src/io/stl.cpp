@@ -27,6 +27,7 @@
 #include <cstring>
 
 #include "io/mesh_findings.h"
+#include "vox/core/parallel.h"
 #include "io/mesh_sniff.h"
 #include "vox/io/file_util.h"
 
@@ -339,30 +340,63 @@ Result<StlLoad> loadStl(const std::filesystem::path& path) {
   return out;
 }
 
-Status saveStlBinary(const TriangleMesh& mesh, const std::filesystem::path& path) {
-  if (mesh.triangles.size() > UINT32_MAX) {
-    return makeError(ErrorCode::kLimit, path.string() + ": " + std::to_string(mesh.triangles.size()) +
+namespace {
+
+// One binary STL record: the facet normal from the vertex order (right-hand rule, zero for a degenerate triangle),
+// the three corners, zero attribute bytes.
+void encodeStlTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, uint8_t* p) {
+  const glm::vec3 e1 = b - a, e2 = c - a;
+  glm::vec3 n(e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x);
+  const float len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+  n = len > 0 && std::isfinite(len) ? n / len : glm::vec3(0);
+  const glm::vec3* v[4] = {&n, &a, &b, &c};
+  for (int k = 0; k < 4; ++k) {
+    for (int i = 0; i < 3; ++i) storeU32(p + 12 * k + 4 * i, std::bit_cast<uint32_t>((*v[k])[i]));
+  }
+  p[48] = p[49] = 0;
+}
+
+// Writes `count` triangles, corner(t, k) giving corner k of triangle t in float: the records are encoded in chunks,
+// each on all threads, and streamed into the atomic save (no whole-file buffer).
+template <class Corner>
+Status writeStl(const std::filesystem::path& path, size_t count, const std::string& name, Corner corner) {
+  if (count > UINT32_MAX) {
+    return makeError(ErrorCode::kLimit, path.string() + ": " + std::to_string(count) +
                                             " triangles do not fit a binary STL (at most 4294967295)");
   }
-  std::vector<uint8_t> bytes(kBinaryPrefixBytes + kBinaryTriangleBytes * mesh.triangles.size(), 0);
-  // The header must not start with "solid", or naive readers would take the file for ASCII.
-  const std::string header = "binary STL written by voxmod" + (mesh.name.empty() ? "" : ": " + mesh.name);
-  std::memcpy(bytes.data(), header.data(), std::min(header.size(), kBinaryHeaderBytes));
-  storeU32(bytes.data() + kBinaryHeaderBytes, uint32_t(mesh.triangles.size()));
-  uint8_t* p = bytes.data() + kBinaryPrefixBytes;
-  for (const Triangle& t : mesh.triangles) {
-    // The facet normal from the vertex order (right-hand rule), zero for a degenerate triangle.
-    const glm::vec3 e1 = t.v[1] - t.v[0], e2 = t.v[2] - t.v[0];
-    glm::vec3 n(e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x);
-    const float len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-    n = len > 0 && std::isfinite(len) ? n / len : glm::vec3(0);
-    for (int a = 0; a < 3; ++a) storeU32(p + 4 * a, std::bit_cast<uint32_t>(n[a]));
-    for (int c = 0; c < 3; ++c) {
-      for (int a = 0; a < 3; ++a) storeU32(p + 12 + 12 * c + 4 * a, std::bit_cast<uint32_t>(t.v[c][a]));
+  return writeFileAtomic(path, [&](ByteSink& sink) -> Status {
+    std::vector<uint8_t> prefix(kBinaryPrefixBytes, 0);
+    // The header must not start with "solid", or naive readers would take the file for ASCII.
+    const std::string header = "binary STL written by voxmod" + (name.empty() ? "" : ": " + name);
+    std::memcpy(prefix.data(), header.data(), std::min(header.size(), kBinaryHeaderBytes));
+    storeU32(prefix.data() + kBinaryHeaderBytes, uint32_t(count));
+    if (Status s = sink.append(prefix); !s) return s;
+    constexpr size_t kChunk = size_t(1) << 18;  // triangles: 13 MB
+    std::vector<uint8_t> bytes(kBinaryTriangleBytes * std::min(count, kChunk));
+    for (size_t t0 = 0; t0 < count; t0 += kChunk) {
+      const size_t n = std::min(kChunk, count - t0);
+      parallelChunks(0, int64_t(n), 4096, threadsFor(int64_t(n) * 16), [&](int, int64_t i0, int64_t i1) {
+        for (int64_t i = i0; i < i1; ++i) {
+          const size_t t = t0 + size_t(i);
+          encodeStlTriangle(corner(t, 0), corner(t, 1), corner(t, 2), bytes.data() + kBinaryTriangleBytes * size_t(i));
+        }
+      });
+      if (Status s = sink.append(std::span<const uint8_t>(bytes.data(), kBinaryTriangleBytes * n)); !s) return s;
     }
-    p += kBinaryTriangleBytes;  // the attribute bytes stay zero
-  }
-  return writeFileAtomic(path, bytes);
+    return Ok{};
+  });
+}
+
+}  // namespace
+
+Status saveStlBinary(const TriangleMesh& mesh, const std::filesystem::path& path) {
+  return writeStl(path, mesh.triangles.size(), mesh.name,
+                  [&](size_t t, int k) { return mesh.triangles[t].v[size_t(k)]; });
+}
+
+Status saveStlBinary(const IndexedMesh& mesh, const std::filesystem::path& path) {
+  return writeStl(path, mesh.triangles.size(), mesh.name,
+                  [&](size_t t, int k) { return glm::vec3(mesh.vertices[mesh.triangles[t][size_t(k)]]); });
 }
 
 }  // namespace vox::io

@@ -14,9 +14,11 @@
 #include <cstring>
 
 #include "io/voxel_file_common.h"
+#include "io/vxm_detail.h"
 #include "vox/core/text.h"
 #include "vox/io/file_util.h"
 #include "vox/io/voxel_file.h"
+#include "vox/io/vxm_stream.h"
 
 namespace vox::io {
 
@@ -27,6 +29,7 @@ using voxel_file_detail::crc32Of;
 using voxel_file_detail::emitRuns;
 using voxel_file_detail::encodeToMemory;
 using voxel_file_detail::Writer;
+using namespace vxm_detail;
 
 Status checkDims(const Dims& d, const std::string& name) {
   const int32_t k = VoxelGrid::kMaxDim;
@@ -37,215 +40,11 @@ Status checkDims(const Dims& d, const std::string& name) {
   return Ok{};
 }
 
-// Voxel bits of row (y, z) as unpadded words: bit b of word w is voxel x = 64 w + b. Bits past nx are zero.
-void unpaddedRow(const VoxelGrid& grid, int32_t y, int32_t z, std::vector<uint64_t>& out) {
-  const uint64_t* row = grid.rowWords(y, z);
-  const int64_t wpr = grid.wordsPerRow();
-  const int64_t n = (int64_t(grid.nx()) + 63) / 64;
-  for (int64_t w = 0; w < n; ++w) {
-    const uint64_t hi = w + 1 < wpr ? row[w + 1] : 0;
-    out[size_t(w)] = (row[w] >> 1) | (hi << 63);
-  }
-  const int tail = grid.nx() & 63;
-  if (tail) out[size_t(n - 1)] &= (uint64_t(1) << tail) - 1;
-}
-
-template <class T>
-T loadLE(const uint8_t* p) {
-  T v;
-  std::memcpy(&v, p, sizeof(T));
-  if constexpr (std::endian::native == std::endian::big) {
-    if constexpr (sizeof(T) == 2) v = T(__builtin_bswap16(v));
-    if constexpr (sizeof(T) == 4) v = T(__builtin_bswap32(v));
-    if constexpr (sizeof(T) == 8) v = T(__builtin_bswap64(v));
-  }
-  return v;
-}
-
-constexpr uint8_t kVxmMagic[8] = {0x89, 'V', 'X', 'M', '\r', '\n', 0x1A, '\n'};
-constexpr size_t kVxmFixedBytes = 84;                            // magic .. body size, before the two strings
-constexpr size_t kVxmMinBytes = kVxmFixedBytes + 2 + 2 + 4 + 4;  // empty strings, header CRC, file CRC
-
-// Emits alternating runs, starting with an empty one, as varints.
-class RunEncoder {
- public:
-  explicit RunEncoder(Writer& w) : w_(w) {}
-  void add(bool filled, uint64_t n) {
-    if (n == 0) return;
-    if (filled != state_) {
-      w_.varint(run_);
-      ++runs_;
-      run_ = 0;
-      state_ = filled;
-    }
-    run_ += n;
-    if (filled) filled_ += n;
-  }
-  void finish() {
-    w_.varint(run_);
-    ++runs_;
-  }
-  uint64_t runs() const { return runs_; }
-  uint64_t filled() const { return filled_; }
-
- private:
-  Writer& w_;
-  bool state_ = false;
-  uint64_t run_ = 0;
-  uint64_t runs_ = 0;
-  uint64_t filled_ = 0;
-};
-
-// Parsed .vxm header fields.
-struct VxmHeader {
-  Dims dims;
-  GridFrame frame;
-  uint64_t filled = 0, runs = 0, body_bytes = 0;
-  size_t header_bytes = 0;  // offset of the body
-};
-
-// Reads one LEB128 varint of at most 10 bytes; false when it is truncated or overlong.
-bool readVarint(const uint8_t*& p, const uint8_t* end, uint64_t& v) {
-  v = 0;
-  for (int shift = 0; shift < 64 && p < end; shift += 7) {
-    const uint8_t b = *p++;
-    if (shift == 63 && b > 1) return false;  // would overflow 64 bits
-    v |= uint64_t(b & 0x7F) << shift;
-    if (!(b & 0x80)) return true;
-  }
-  return false;
-}
-
-// The .vxm encoder, streamed: the header with placeholder counts, the body in chunks of about a megabyte, then the
-// completed header written over the placeholder and the file CRC (of the final header and the body, joined with
-// crc32_combine) appended. Memory: one chunk and one row, whatever the grid.
+// The .vxm encoder, streamed (VxmLayerWriter, vxm_stream.cpp): the whole grid as one slab.
 Status encodeVxmTo(const VoxelGrid& grid, ByteSink& sink) {
-  Writer w;
-  w.bytes.reserve(4096);
-  w.bytes.insert(w.bytes.end(), std::begin(kVxmMagic), std::end(kVxmMagic));
-  w.u32(kVxmVersion);
-  const size_t header_size_at = w.bytes.size();
-  w.u32(0);  // header size, patched below
-  w.u32(uint32_t(grid.nx()));
-  w.u32(uint32_t(grid.ny()));
-  w.u32(uint32_t(grid.nz()));
-  const GridFrame& f = grid.frame();
-  w.f64(f.origin.x);
-  w.f64(f.origin.y);
-  w.f64(f.origin.z);
-  w.f64(f.voxel_size);
-  const size_t counts_at = w.bytes.size();
-  w.u64(0);  // filled, runs and body size, patched below
-  w.u64(0);
-  w.u64(0);
-  w.text(f.units);
-  w.text(f.source);
-  const size_t header_crc_at = w.bytes.size();
-  w.u32(0);
-  w.patchU32(header_size_at, uint32_t(w.bytes.size()));
-  if (Status s = sink.append(w.bytes); !s.ok()) return s;
-
-  Writer body(&sink);
-  RunEncoder enc(body);
-  if (!grid.empty()) {
-    const uint64_t layer_voxels = uint64_t(grid.nx()) * uint64_t(grid.ny());
-    std::vector<uint64_t> words(size_t((int64_t(grid.nx()) + 63) / 64));
-    for (int32_t z = 0; z < grid.nz() && body.status().ok(); ++z) {
-      if (!grid.layerAllocated(z)) {
-        enc.add(false, layer_voxels);
-        continue;
-      }
-      for (int32_t y = 0; y < grid.ny(); ++y) {
-        unpaddedRow(grid, y, z, words);
-        emitRuns(words.data(), grid.nx(), enc);
-      }
-    }
-  }
-  enc.finish();
-  if (Status s = body.flush(); !s.ok()) return s;
-  w.patchU64(counts_at, enc.filled());
-  w.patchU64(counts_at + 8, enc.runs());
-  w.patchU64(counts_at + 16, body.streamed());
-  w.patchU32(header_crc_at, crc32Of(w.bytes.data(), header_crc_at));
-  if (Status s = sink.overwrite(0, w.bytes); !s.ok()) return s;
-  const uint32_t file_crc =
-      uint32_t(::crc32_combine(crc32Of(w.bytes.data(), w.bytes.size()), body.crc(), z_off_t(body.streamed())));
-  Writer tail;
-  tail.u32(file_crc);
-  return sink.append(tail.bytes);
-}
-
-// The header: magic and version, then the fields under their own CRC, so that a truncated body is told apart
-// from a damaged header.
-Result<VxmHeader> parseVxmHeader(std::span<const uint8_t> bytes, const std::string& name) {
-  const uint8_t* b = bytes.data();
-  const size_t size = bytes.size();
-  if (size < sizeof kVxmMagic || std::memcmp(b, kVxmMagic, sizeof kVxmMagic) != 0) {
-    if (size < sizeof kVxmMagic && std::memcmp(b, kVxmMagic, size) == 0 && size > 0) {
-      return makeError(ErrorCode::kParse, name + ": .vxm file truncated: " + std::to_string(size) + " bytes");
-    }
-    return makeError(ErrorCode::kParse, name + ": not a voxmod .vxm file (bad magic bytes)");
-  }
-  if (size < 12)
-    return makeError(ErrorCode::kParse, name + ": .vxm file truncated: " + std::to_string(size) + " bytes");
-  const uint32_t version = loadLE<uint32_t>(b + 8);
-  if (version > kVxmVersion) {
-    return makeError(ErrorCode::kUnsupported, name + ": written by a newer voxmod (format version " +
-                                                  std::to_string(version) + "; this build reads up to " +
-                                                  std::to_string(kVxmVersion) + ")");
-  }
-  if (version == 0) return makeError(ErrorCode::kCorrupt, name + ": invalid .vxm format version 0");
-  if (size < kVxmMinBytes) {
-    return makeError(ErrorCode::kParse,
-                     name + ": .vxm file truncated: " + std::to_string(size) + " bytes, shorter than any .vxm header");
-  }
-
-  VxmHeader h;
-  h.header_bytes = loadLE<uint32_t>(b + 12);
-  if (h.header_bytes < kVxmFixedBytes + 8 || h.header_bytes > kVxmFixedBytes + 8 + 2 * 0xFFFF) {
-    return makeError(ErrorCode::kCorrupt,
-                     name + ": .vxm header is corrupt (header size " + std::to_string(h.header_bytes) + ")");
-  }
-  if (size < h.header_bytes + 4) {
-    return makeError(ErrorCode::kParse, name + ": .vxm file truncated: the header needs " +
-                                            std::to_string(h.header_bytes) + " bytes but the file has " +
-                                            std::to_string(size));
-  }
-  const uint32_t header_crc = loadLE<uint32_t>(b + h.header_bytes - 4);
-  if (crc32Of(b, h.header_bytes - 4) != header_crc) {
-    return makeError(ErrorCode::kCorrupt, name + ": .vxm header is corrupt (CRC-32 mismatch)");
-  }
-  h.dims = {int32_t(loadLE<uint32_t>(b + 16)), int32_t(loadLE<uint32_t>(b + 20)), int32_t(loadLE<uint32_t>(b + 24))};
-  if (loadLE<uint32_t>(b + 16) > uint32_t(INT32_MAX) || loadLE<uint32_t>(b + 20) > uint32_t(INT32_MAX) ||
-      loadLE<uint32_t>(b + 24) > uint32_t(INT32_MAX)) {
-    h.dims = {-1, -1, -1};
-  }
-  h.frame.origin = {std::bit_cast<double>(loadLE<uint64_t>(b + 28)), std::bit_cast<double>(loadLE<uint64_t>(b + 36)),
-                    std::bit_cast<double>(loadLE<uint64_t>(b + 44))};
-  h.frame.voxel_size = std::bit_cast<double>(loadLE<uint64_t>(b + 52));
-  h.filled = loadLE<uint64_t>(b + 60);
-  h.runs = loadLE<uint64_t>(b + 68);
-  h.body_bytes = loadLE<uint64_t>(b + 76);
-  size_t at = kVxmFixedBytes;
-  for (std::string* s : {&h.frame.units, &h.frame.source}) {
-    const size_t n = loadLE<uint16_t>(b + at);
-    if (at + 2 + n + 4 > h.header_bytes) {
-      return makeError(ErrorCode::kCorrupt, name + ": .vxm header is corrupt (string lengths exceed the header)");
-    }
-    s->assign(reinterpret_cast<const char*>(b + at + 2), n);
-    at += 2 + n;
-  }
-  if (at + 4 != h.header_bytes) {
-    return makeError(ErrorCode::kCorrupt, name + ": .vxm header is corrupt (header size does not match its fields)");
-  }
-  if (Status s = checkDims(h.dims, name); !s.ok()) return s.error();
-  if (!std::isfinite(h.frame.origin.x) || !std::isfinite(h.frame.origin.y) || !std::isfinite(h.frame.origin.z) ||
-      !std::isfinite(h.frame.voxel_size) || !(h.frame.voxel_size > 0)) {
-    return makeError(ErrorCode::kCorrupt, name +
-                                              ": .vxm header has a non-finite origin or a voxel size that is not "
-                                              "positive");
-  }
-  return h;
+  VxmLayerWriter writer(sink, grid.dims(), grid.frame());
+  if (Status s = writer.append(grid, 0, grid.nz()); !s.ok()) return s;
+  return writer.finish();
 }
 
 // Whole-file size and CRC.
@@ -337,6 +136,96 @@ void fillVxmBody(VoxelGrid& grid, const VxmHeader& h, const uint8_t* body, const
 }
 
 }  // namespace
+
+namespace vxm_detail {
+
+// Voxel bits of row (y, z) as unpadded words: bit b of word w is voxel x = 64 w + b. Bits past nx are zero.
+void unpaddedRow(const VoxelGrid& grid, int32_t y, int32_t z, std::vector<uint64_t>& out) {
+  const uint64_t* row = grid.rowWords(y, z);
+  const int64_t wpr = grid.wordsPerRow();
+  const int64_t n = (int64_t(grid.nx()) + 63) / 64;
+  for (int64_t w = 0; w < n; ++w) {
+    const uint64_t hi = w + 1 < wpr ? row[w + 1] : 0;
+    out[size_t(w)] = (row[w] >> 1) | (hi << 63);
+  }
+  const int tail = grid.nx() & 63;
+  if (tail) out[size_t(n - 1)] &= (uint64_t(1) << tail) - 1;
+}
+
+// The header: magic and version, then the fields under their own CRC, so that a truncated body is told apart
+// from a damaged header.
+Result<VxmHeader> parseVxmHeader(std::span<const uint8_t> bytes, const std::string& name) {
+  const uint8_t* b = bytes.data();
+  const size_t size = bytes.size();
+  if (size < sizeof kVxmMagic || std::memcmp(b, kVxmMagic, sizeof kVxmMagic) != 0) {
+    if (size < sizeof kVxmMagic && std::memcmp(b, kVxmMagic, size) == 0 && size > 0) {
+      return makeError(ErrorCode::kParse, name + ": .vxm file truncated: " + std::to_string(size) + " bytes");
+    }
+    return makeError(ErrorCode::kParse, name + ": not a voxmod .vxm file (bad magic bytes)");
+  }
+  if (size < 12)
+    return makeError(ErrorCode::kParse, name + ": .vxm file truncated: " + std::to_string(size) + " bytes");
+  const uint32_t version = loadLE<uint32_t>(b + 8);
+  if (version > kVxmVersion) {
+    return makeError(ErrorCode::kUnsupported, name + ": written by a newer voxmod (format version " +
+                                                  std::to_string(version) + "; this build reads up to " +
+                                                  std::to_string(kVxmVersion) + ")");
+  }
+  if (version == 0) return makeError(ErrorCode::kCorrupt, name + ": invalid .vxm format version 0");
+  if (size < kVxmMinBytes) {
+    return makeError(ErrorCode::kParse,
+                     name + ": .vxm file truncated: " + std::to_string(size) + " bytes, shorter than any .vxm header");
+  }
+
+  VxmHeader h;
+  h.header_bytes = loadLE<uint32_t>(b + 12);
+  if (h.header_bytes < kVxmFixedBytes + 8 || h.header_bytes > kVxmFixedBytes + 8 + 2 * 0xFFFF) {
+    return makeError(ErrorCode::kCorrupt,
+                     name + ": .vxm header is corrupt (header size " + std::to_string(h.header_bytes) + ")");
+  }
+  if (size < h.header_bytes + 4) {
+    return makeError(ErrorCode::kParse, name + ": .vxm file truncated: the header needs " +
+                                            std::to_string(h.header_bytes) + " bytes but the file has " +
+                                            std::to_string(size));
+  }
+  const uint32_t header_crc = loadLE<uint32_t>(b + h.header_bytes - 4);
+  if (crc32Of(b, h.header_bytes - 4) != header_crc) {
+    return makeError(ErrorCode::kCorrupt, name + ": .vxm header is corrupt (CRC-32 mismatch)");
+  }
+  h.dims = {int32_t(loadLE<uint32_t>(b + 16)), int32_t(loadLE<uint32_t>(b + 20)), int32_t(loadLE<uint32_t>(b + 24))};
+  if (loadLE<uint32_t>(b + 16) > uint32_t(INT32_MAX) || loadLE<uint32_t>(b + 20) > uint32_t(INT32_MAX) ||
+      loadLE<uint32_t>(b + 24) > uint32_t(INT32_MAX)) {
+    h.dims = {-1, -1, -1};
+  }
+  h.frame.origin = {std::bit_cast<double>(loadLE<uint64_t>(b + 28)), std::bit_cast<double>(loadLE<uint64_t>(b + 36)),
+                    std::bit_cast<double>(loadLE<uint64_t>(b + 44))};
+  h.frame.voxel_size = std::bit_cast<double>(loadLE<uint64_t>(b + 52));
+  h.filled = loadLE<uint64_t>(b + 60);
+  h.runs = loadLE<uint64_t>(b + 68);
+  h.body_bytes = loadLE<uint64_t>(b + 76);
+  size_t at = kVxmFixedBytes;
+  for (std::string* s : {&h.frame.units, &h.frame.source}) {
+    const size_t n = loadLE<uint16_t>(b + at);
+    if (at + 2 + n + 4 > h.header_bytes) {
+      return makeError(ErrorCode::kCorrupt, name + ": .vxm header is corrupt (string lengths exceed the header)");
+    }
+    s->assign(reinterpret_cast<const char*>(b + at + 2), n);
+    at += 2 + n;
+  }
+  if (at + 4 != h.header_bytes) {
+    return makeError(ErrorCode::kCorrupt, name + ": .vxm header is corrupt (header size does not match its fields)");
+  }
+  if (Status s = checkDims(h.dims, name); !s.ok()) return s.error();
+  if (!std::isfinite(h.frame.origin.x) || !std::isfinite(h.frame.origin.y) || !std::isfinite(h.frame.origin.z) ||
+      !std::isfinite(h.frame.voxel_size) || !(h.frame.voxel_size > 0)) {
+    return makeError(ErrorCode::kCorrupt, name +
+                                              ": .vxm header has a non-finite origin or a voxel size that is not "
+                                              "positive");
+  }
+  return h;
+}
+
+}  // namespace vxm_detail
 
 std::vector<uint8_t> encodeVxm(const VoxelGrid& grid) { return encodeToMemory(encodeVxmTo, grid); }
 

@@ -170,37 +170,60 @@ void warnAboutRays(const PassStats& stats, Rule rule, std::vector<std::string>& 
 
 }  // namespace
 
-bool fillAlongX(const PassInput& in, FillMode mode, VoxelizeResult& result) {
-  const Dims dims = in.placement.dims;
-  const int threads = in.threads;
-  const Rule rule = mode == FillMode::kParity ? Rule::kParity : Rule::kNonzero;
-  VoxelGrid grid(dims, in.frame);
-  const RayCaster caster(in.mesh, in.placement, kRaysAlongX, threads);
-  std::vector<PassScratch> scratch(static_cast<size_t>(threads));
-  const int64_t wpr = grid.wordsPerRow();
+struct LayerFiller::State {
+  State(const PassInput& in, FillMode mode, int64_t wpr)
+      : rule(mode == FillMode::kParity ? Rule::kParity : Rule::kNonzero),
+        caster(in.mesh, in.placement, kRaysAlongX, in.threads),
+        scratch(static_cast<size_t>(in.threads)),
+        marked(static_cast<size_t>(in.threads)),
+        valid(validRowBits(wpr, in.placement.dims.nx)) {}
+  Rule rule;
+  RayCaster caster;
+  std::vector<PassScratch> scratch;
+  std::vector<std::vector<uint8_t>> marked;  // rows holding a toggle (by padded row), per thread
+  std::vector<uint64_t> valid;
+};
+
+LayerFiller::LayerFiller(const PassInput& in, FillMode mode)
+    : in_(in), state_(std::make_unique<State>(in, mode, VoxelGrid(Dims{in.placement.dims.nx, 1, 1}).wordsPerRow())) {}
+
+LayerFiller::~LayerFiller() = default;
+
+bool LayerFiller::fill(int32_t z0, int32_t z1, VoxelGrid& target, int32_t z_offset) {
+  const Dims dims = in_.placement.dims;
+  State& st = *state_;
+  const int64_t wpr = target.wordsPerRow();
   // Each ray's toggles go straight into the grid's layer (allocated for a row of rays with any crossing, given
   // back if no voxel ends up inside); then each marked row becomes its inside voxels by a prefix XOR in place. Only
   // rows with a toggle are touched, so a page no such row lies in is never faulted in (VoxelGrid's layers start as
   // untouched zero memory), and nothing is copied. (A toggle is a read-modify-write of the word: on
   // cycloidal_assembly at R = 1000 it takes as many page faults as storing finished rows did, so a fresh page is
   // not faulted twice.)
-  std::vector<std::vector<uint8_t>> marked(static_cast<size_t>(threads));  // rows holding a toggle (by padded row)
-  const std::vector<uint64_t> valid = validRowBits(wpr, dims.nx);
-  const bool ok = castRows(caster, threads, in.gate, in.out_of_memory, [&](int t, int32_t z, const auto& crossings) {
+  auto row = [&](int t, int32_t z, const auto& crossings) {
     if (crossings.empty()) return;
-    std::vector<uint8_t>& m = marked[size_t(t)];
+    std::vector<uint8_t>& m = st.marked[size_t(t)];
     if (m.empty()) m.assign(size_t(dims.ny) + 2, 0);
-    uint64_t* const layer = grid.mutableLayerWords(z);  // only this thread writes layer z
-    PassScratch& ps = scratch[size_t(t)];
-    markRowAlongX(dims.ny, dims.nx, crossings, rule, ps, layer, m.data(), wpr);
-    const FilledRows filled = fillToggledRows(layer, m.data(), dims.ny, wpr, valid);
+    uint64_t* const layer = target.mutableLayerWords(z - z_offset);  // only this thread writes layer z
+    PassScratch& ps = st.scratch[size_t(t)];
+    markRowAlongX(dims.ny, dims.nx, crossings, st.rule, ps, layer, m.data(), wpr);
+    const FilledRows filled = fillToggledRows(layer, m.data(), dims.ny, wpr, st.valid);
     // Crossings that leave no voxel inside (all past every centre, or a wall between two centres): the layer goes
     // back to the shared zero layer, as if never allocated.
-    if (!filled.any) grid.releaseLayer(z);
-    if (rule == Rule::kParity) ps.odd_rays += filled.odd;
-  });
-  if (!ok) return false;
-  warnAboutRays(sumStats(scratch, caster), rule, result.warnings);
+    if (!filled.any) target.releaseLayer(z - z_offset);
+    if (st.rule == Rule::kParity) ps.odd_rays += filled.odd;
+  };
+  return castRows(st.caster, in_.threads, in_.gate, in_.out_of_memory, row, z0, z1);
+}
+
+void LayerFiller::warn(std::vector<std::string>& warnings) const {
+  warnAboutRays(sumStats(state_->scratch, state_->caster), state_->rule, warnings);
+}
+
+bool fillAlongX(const PassInput& in, FillMode mode, VoxelizeResult& result) {
+  VoxelGrid grid(in.placement.dims, in.frame);
+  LayerFiller filler(in, mode);
+  if (!filler.fill(0, grid.nz(), grid, 0)) return false;
+  filler.warn(result.warnings);
   result.grid = std::move(grid);
   return true;
 }

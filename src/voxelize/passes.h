@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <new>
 #include <string>
@@ -42,6 +43,13 @@ void chooseMode(FillMode requested, const MeshTopology* topology, const std::str
 // Fails with kLimit, saying what the grid of `plan` would take in `mode` and what to do instead, when that is more
 // than the plan's memory limit.
 Status checkMemoryLimit(const VoxelizePlan& plan, const VoxelizeParams& params, FillMode mode);
+
+// --- Checks before voxelizing (voxelize.cpp)
+
+// Fails for a mesh that cannot be voxelized: no triangles, or more than the ray casters can index.
+Status checkMesh(const TriangleMesh& mesh, const std::string& name);
+// Warns about the degenerate triangles of `mesh` (counted by `topology` when given).
+void warnAboutDegenerate(const TriangleMesh& mesh, const MeshTopology* topology, std::vector<std::string>& warnings);
 
 // --- Progress and parallel rows (shared by the passes)
 
@@ -124,10 +132,14 @@ bool runSlabs(int32_t rows, int threads, ProgressGate& progress, bool& out_of_me
   return !out_of_memory && !progress.cancelled();
 }
 
-// Runs row_fn(thread, row, crossings) for every row of the caster, in parallel (runSlabs).
+// Runs row_fn(thread, row, crossings) for rows [row_begin, row_end) of the caster (all when row_end < 0), in
+// parallel (runSlabs).
 template <class RowFn>
-bool castRows(const RayCaster& caster, int threads, ProgressGate& progress, bool& out_of_memory, RowFn&& row_fn) {
-  return runSlabs(caster.rows(), threads, progress, out_of_memory, [&](int t, int32_t r0, int32_t r1) {
+bool castRows(const RayCaster& caster, int threads, ProgressGate& progress, bool& out_of_memory, RowFn&& row_fn,
+              int32_t row_begin = 0, int32_t row_end = -1) {
+  if (row_end < 0) row_end = caster.rows();
+  return runSlabs(row_end - row_begin, threads, progress, out_of_memory, [&](int t, int32_t s0, int32_t s1) {
+    const int32_t r0 = row_begin + s0, r1 = row_begin + s1;
     CrossingList crossings;
     RayCaster::RowSweep sweep(caster, r0, r1);
     for (int32_t r = r0; r < r1 && !progress.cancelled(); ++r) {
@@ -190,6 +202,27 @@ struct PassInput {
 // with an odd number of crossings (and, nonzero, a nonzero total winding). Progress: one unit per layer. False when
 // cancelled or out of memory.
 bool fillAlongX(const PassInput& in, FillMode mode, VoxelizeResult& result);
+
+// The pass of fillAlongX a range of Z layers at a time, so that a grid too large for memory can be made in slabs
+// (stream.cpp): every layer gets exactly the voxels fillAlongX gives it, whatever the ranges. The ray caster is made
+// once for the whole grid; the counts behind the warnings add up over the ranges filled.
+class LayerFiller {
+ public:
+  LayerFiller(const PassInput& in, FillMode mode);
+  ~LayerFiller();
+  LayerFiller(const LayerFiller&) = delete;
+  LayerFiller& operator=(const LayerFiller&) = delete;
+  // Fills layers [z0, z1) of the grid into `target` (dims nx, ny and any nz), layer z into target layer
+  // z - z_offset. False when cancelled or out of memory.
+  bool fill(int32_t z0, int32_t z1, VoxelGrid& target, int32_t z_offset);
+  // The warnings about the rays of every layer filled so far.
+  void warn(std::vector<std::string>& warnings) const;
+
+ private:
+  struct State;
+  const PassInput& in_;
+  std::unique_ptr<State> state_;
+};
 
 // Vote mode (vote.cpp): the parity along X, Y and Z and the majority per voxel; sets result.grid, result.disputed
 // and result.disputed_count, and warns about odd rays and disputed voxels. Progress: 2 nz + ny units. False when

@@ -126,8 +126,9 @@ Result<VoxelizePlan> planVoxelization(const Box3d& bounds, const VoxelizeParams&
     return makeError(ErrorCode::kInvalidArgument,
                      "threads must be 0 (all hardware threads) or positive, not " + std::to_string(params.threads));
   }
-  auto placement = params.voxel_size > 0.0 ? placeGridByVoxelSize(bounds, params.voxel_size)
-                                           : placeGridByResolution(bounds, params.resolution);
+  auto placement = params.placement          ? Result<GridPlacement>(*params.placement)
+                   : params.voxel_size > 0.0 ? placeGridByVoxelSize(bounds, params.voxel_size)
+                                             : placeGridByResolution(bounds, params.resolution);
   if (!placement) return placement.error();
   VoxelizePlan plan;
   plan.placement = std::move(placement).value();

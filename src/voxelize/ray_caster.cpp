@@ -67,9 +67,11 @@ std::vector<double> centresAlong(const GridPlacement& placement, int axis) {
   const int32_t n = axis == 0 ? placement.dims.nx : axis == 1 ? placement.dims.ny : placement.dims.nz;
   const double origin = placement.frame.origin[axis];
   const double h = placement.frame.voxel_size;
+  const double first = placement.first[axis];
   std::vector<double> c(static_cast<size_t>(n));
-  // docs/conventions.md, "Grid placement": min + (i + 0.5) * h, in double, exactly so.
-  for (int32_t i = 0; i < n; ++i) c[size_t(i)] = origin + (double(i) + 0.5) * h;
+  // docs/conventions.md, "Grid placement": min + (i + 0.5) * h, in double, exactly so, with i counted on the lattice
+  // (first + i), so that a grid over part of the lattice has exactly the lattice's centres.
+  for (int32_t i = 0; i < n; ++i) c[size_t(i)] = origin + (double(i) + first + 0.5) * h;
   return c;
 }
 
@@ -78,9 +80,10 @@ std::vector<double> centresAlong(const GridPlacement& placement, int axis) {
 // fl((i + 0.5) h)) lies within 2.01 u (|origin| + n h) of its exact value, so c[i] - (c[0] + i h) within twice that;
 // t computed as fl(fl(value - c[0]) * fl(1 / h)) is within 3.01 u |t| of (value - c[0]) / h, and the callers accept
 // only 0 < t < n - 1, so within 3.01 u n. Doubled: the roundings of the slack itself are far inside that.
-double gridSlack(const std::vector<double>& c, double origin, double h, double inv_h) {
+double gridSlack(const std::vector<double>& c, double origin, int32_t first, double h, double inv_h) {
   const double n = double(c.size());
-  const double centre_error = 4.02 * kUnitRoundoff * (std::abs(origin) + n * h);
+  // Centres of a grid over part of a lattice (placement.first) are as far from the lattice origin as first + n.
+  const double centre_error = 4.02 * kUnitRoundoff * (std::abs(origin) + (n + std::abs(double(first))) * h);
   return 2.0 * (centre_error * inv_h + 3.01 * kUnitRoundoff * n);
 }
 
@@ -107,14 +110,17 @@ RayCaster::RayCaster(const TriangleMesh& mesh, const GridPlacement& placement, R
     : mesh_(mesh),
       axes_(axes),
       inv_h_(1.0 / placement.frame.voxel_size),
-      origin_u_(placement.frame.origin[axes.u]),
-      origin_v_(placement.frame.origin[axes.v]),
-      origin_w_(placement.frame.origin[axes.w]) {
+      // The corner of the grid's voxel (0, 0, 0): only estimates use these, the stored centres settle them.
+      origin_u_(placement.frame.origin[axes.u] + placement.first[axes.u] * placement.frame.voxel_size),
+      origin_v_(placement.frame.origin[axes.v] + placement.first[axes.v] * placement.frame.voxel_size),
+      origin_w_(placement.frame.origin[axes.w] + placement.first[axes.w] * placement.frame.voxel_size) {
   cu_ = centresAlong(placement, axes.u);
   cv_ = centresAlong(placement, axes.v);
   cw_ = centresAlong(placement, axes.w);
-  slack_u_ = gridSlack(cu_, origin_u_, placement.frame.voxel_size, inv_h_);
-  slack_v_ = gridSlack(cv_, origin_v_, placement.frame.voxel_size, inv_h_);
+  slack_u_ =
+      gridSlack(cu_, placement.frame.origin[axes.u], placement.first[axes.u], placement.frame.voxel_size, inv_h_);
+  slack_v_ =
+      gridSlack(cv_, placement.frame.origin[axes.v], placement.first[axes.v], placement.frame.voxel_size, inv_h_);
   static_assert(kMaxResolution < Crossing::kMaxRays && kMaxResolution < Crossing::kMaxLength);
   assert(cv_.size() < size_t(Crossing::kMaxRays) && cu_.size() < size_t(Crossing::kMaxLength));
   // Counting sort by first row, so a sweep activates triangles in order. Chunks of the input are contiguous and

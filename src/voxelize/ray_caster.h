@@ -27,7 +27,7 @@ inline constexpr RayAxes kRaysAlongZ{2, 0, 1};  // rows are Y rows, rays within 
 
 // One crossing of one ray with one triangle, packed into 32 bits (ray, then first voxel, then sign, from the high
 // bits down) so that a row's crossings move and sort cheaply: comparing packed values orders them by ray, then along
-// the ray. Needs rays < 2^15 per row and ray lengths <= 65535 (voxmod's grids are at most kMaxResolution = 4096).
+// the ray. Needs rays < 2^15 per row and ray lengths <= 65535 (voxmod's grids are at most kMaxResolution = 16384).
 class Crossing {
  public:
   static constexpr int32_t kMaxRays = int32_t(1) << 15;

@@ -35,10 +35,7 @@
 
 namespace vox {
 
-namespace {
-
-using voxelize_detail::PassInput;
-using voxelize_detail::ProgressGate;
+namespace voxelize_detail {
 
 // Fails for a mesh that cannot be voxelized: no triangles, or more than the ray casters can index.
 Status checkMesh(const TriangleMesh& mesh, const std::string& name) {
@@ -64,6 +61,13 @@ void warnAboutDegenerate(const TriangleMesh& mesh, const MeshTopology* topology,
   }
 }
 
+}  // namespace voxelize_detail
+
+namespace {
+
+using voxelize_detail::PassInput;
+using voxelize_detail::ProgressGate;
+
 // Why a pass stopped: memory ran out (kLimit), or progress asked to stop (kCancelled).
 Error passFailure(bool out_of_memory, const std::string& name, const Dims& dims) {
   if (out_of_memory) {
@@ -78,7 +82,7 @@ Error passFailure(bool out_of_memory, const std::string& name, const Dims& dims)
 Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizeParams& params, const ProgressFn& progress,
                                      const MeshTopology* topology) {
   const std::string name = mesh.name.empty() ? std::string("the mesh") : mesh.name;
-  if (Status usable = checkMesh(mesh, name); !usable) return usable.error();
+  if (Status usable = voxelize_detail::checkMesh(mesh, name); !usable) return usable.error();
   auto plan_or = planVoxelization(mesh.bounds(), params);
   if (!plan_or) return plan_or.error();
   VoxelizePlan plan = std::move(plan_or).value();
@@ -96,10 +100,11 @@ Result<VoxelizeResult> voxelizeSolid(const TriangleMesh& mesh, const VoxelizePar
 
   // Refuse before allocating anything large.
   if (Status fits = voxelize_detail::checkMemoryLimit(plan, params, result.mode_used); !fits) return fits.error();
-  warnAboutDegenerate(mesh, topology, result.warnings);
+  voxelize_detail::warnAboutDegenerate(mesh, topology, result.warnings);
 
   const int threads = params.threads > 0 ? params.threads : std::max(1, int(std::thread::hardware_concurrency()));
   GridFrame frame = plan.placement.frame;
+  frame.origin += glm::dvec3(plan.placement.first) * frame.voxel_size;  // the corner of voxel (0, 0, 0)
   frame.units = params.units;
   frame.source = mesh.name;
 

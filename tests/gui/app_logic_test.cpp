@@ -22,6 +22,7 @@
 #include "vox/io/cad.h"
 #include "vox/io/stl.h"
 #include "vox/io/voxel_file.h"
+#include "vox/io/vxm_stream.h"
 
 namespace vox::app {
 namespace {
@@ -253,6 +254,39 @@ void openBlockPeeledOnce(AppState& state, const test::TempDir& dir) {
   state.panel = Panel::kSkin;
   peelTo(state, 1);
   ASSERT_TRUE(pump(state, [&] { return state.doc.model->peeled == 1; }));
+}
+
+TEST(AppDocument, aVxmFileTooLargeForMemoryOpensAsACoarseViewThatSaysSo) {
+  // 16384 x 16384 x 4096 voxels (138 GB as a grid; a few hundred bytes as a file): three voxels in it.
+  test::TempDir dir;
+  const Dims dims{16384, 16384, 4096};
+  GridFrame frame;
+  frame.voxel_size = 0.5;
+  const std::vector<glm::ivec3> voxels = {{0, 0, 0}, {16383, 9, 5}, {77, 16383, 4095}};
+  auto saved = io::saveVxmInSlabs(dir / "huge.vxm", dims, frame, [&](io::VxmLayerWriter& w) {
+    const VoxelGrid empty(Dims{dims.nx, dims.ny, 1}, frame);
+    for (int32_t z = 0; z < dims.nz; ++z) {
+      VoxelGrid layer = empty;
+      for (const glm::ivec3& v : voxels) {
+        if (v.z == z) layer.set(v.x, v.y, 0);
+      }
+      if (Status s = w.append(layer, 0, 1); !s) return s;
+    }
+    return Status(Ok{});
+  });
+  ASSERT_TRUE(saved.ok()) << saved.error().message;
+  AppState state;
+  startOpen(state, dir / "huge.vxm");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  const int32_t level = state.doc.coarse_level;
+  ASSERT_GT(level, 1);
+  EXPECT_EQ(state.model.dims(), (Dims{16384 / level, 16384 / level, 4096 / level}));
+  EXPECT_DOUBLE_EQ(state.model.voxelSize(), 0.5 * level);
+  EXPECT_EQ(state.model.filledCount(), 3);
+  for (const glm::ivec3& v : voxels) EXPECT_TRUE(state.model.get(v.x / level, v.y / level, v.z / level));
+  EXPECT_NE(state.doc.model->origin->what.find("coarse view of huge.vxm"), std::string::npos);
+  EXPECT_TRUE(state.doc.save_path.empty());  // Save never writes the coarse grid over the file
+  EXPECT_FALSE(hasUnsavedChanges(state));
 }
 
 TEST(AppDocument, openPeelUndoRedoAndTheUnsavedState) {

@@ -4,6 +4,7 @@
 // Images follow vox/core/image.h (row 0 at the top). Counts are in voxels; *_mm values in model units.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -136,6 +137,23 @@ struct XrayResult {
   double mean = 0.0;
 };
 Result<XrayResult> computeXray(const VoxelGrid& grid, const XrayParams& params);
+// The X-ray of a model that arrives a window of Z layers at a time, lowest first (a .vxm file read in windows): the
+// same result as computeXray. Memory along Z: two ints per ray (the run in progress and the value so far).
+class XrayAccumulator {
+ public:
+  XrayAccumulator(const Dims& dims, const GridFrame& frame, const XrayParams& params);
+  // Adds layers [z0, z1) of `window`, whose layer 0 is the model's layer z_offset, after every layer below them.
+  // Along Z the window must also hold the model's layer z0 - 1 (when there is one).
+  void add(const VoxelGrid& window, int32_t z0, int32_t z1, int32_t z_offset);
+  // Once every layer was added.
+  XrayResult result();
+
+ private:
+  Dims dims_;
+  XrayResult r_;
+  std::vector<int32_t> start_, value_;  // along Z: by padded position of each row
+};
+
 // What the X-ray's legend says: title, the image axes, values in voxels and model units, the statistics. Drawn by
 // io::drawScalarMapFigure for PNG export and by the window as its own text.
 ScalarMapLegend xrayLegend(const XrayResult& xray);
@@ -155,6 +173,26 @@ struct MassProperties {
   double volume_error_bound = 0.0;
 };
 MassProperties computeMassProperties(const VoxelGrid& grid);
+
+// Mass properties of a model that arrives a window of Z layers at a time (a .vxm file read in windows): the same
+// exact integer sums computeMassProperties makes, so the same result, bit for bit.
+class MassAccumulator {
+ public:
+  MassAccumulator();
+  ~MassAccumulator();
+  MassAccumulator(const MassAccumulator&) = delete;
+  MassAccumulator& operator=(const MassAccumulator&) = delete;
+  // Adds layers [z0, z1) of `window`, whose layer 0 is the model's layer z_offset. The window must also hold the
+  // model's layers just below z0 and above z1 - 1 where the model has them (the surface voxels, for the bound).
+  void add(const VoxelGrid& window, int32_t z0, int32_t z1, int32_t z_offset);
+  // Of everything added, placed by `frame`.
+  MassProperties result(const GridFrame& frame) const;
+
+  struct Sums;  // the exact sums (mass.cpp)
+
+ private:
+  std::unique_ptr<Sums> sums_;
+};
 
 // Principal moments of inertia (ascending) and their axes (unit vectors, right-handed: axes[2] = axes[0] x axes[1])
 // of a symmetric inertia tensor, by Jacobi rotations.
@@ -179,8 +217,9 @@ std::optional<double> materialDensity(const std::string& name);  // by name, cas
 std::optional<glm::ivec3> pickVoxel(const VoxelGrid& grid, const glm::dvec3& from, const glm::dvec3& to);
 
 // ---- Booleans (thesis 7.2) ----
-enum class BoolOp { kUnion, kIntersection, kDifference };
-// Both grids must have the same dims and frame (same lattice); otherwise an error says what differs.
+enum class BoolOp { kUnion, kIntersection, kDifference, kXor };  // kXor: symmetric difference
+// Both grids must have the same dims and frame (same lattice); otherwise an error says what differs. Grids with
+// different boxes on one lattice: booleanParts (vox/analysis/assembly.h).
 Result<VoxelGrid> booleanOp(const VoxelGrid& a, const VoxelGrid& b, BoolOp op);
 
 }  // namespace vox

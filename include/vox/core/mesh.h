@@ -54,6 +54,9 @@ struct MeshTopology {
 // std::length_error beyond UINT32_MAX / 3 triangles (corners are numbered in 32 bits; the STL reader refuses such
 // files first).
 MeshTopology analyzeTopology(const TriangleMesh& mesh);
+// Vertex ids of the 3 T corners (corner c = triangle c / 3, vertex c % 3) after welding exactly equal positions
+// (-0 == +0), numbered from 0 in order of first appearance; `vertices` gets how many there are. Expected O(T).
+std::vector<uint32_t> weldExactVertices(const TriangleMesh& mesh, int64_t& vertices);
 // One pass, welding by rounding coordinates to multiples of weld_tolerance (model units; 0 = exact equality).
 MeshTopology analyzeTopologyWelded(const TriangleMesh& mesh, double weld_tolerance);
 

@@ -56,5 +56,7 @@ void forEachSurfaceVoxel(const VoxelGrid& grid, F&& f, int32_t z0 = 0, int32_t z
 
 // Number of surface voxels (filled with at least one empty face neighbour).
 int64_t countSurfaceVoxels(const VoxelGrid& grid);
+// Of layers [z0, z1) only (their neighbours in layers z0 - 1 and z1 count as the grid holds them).
+int64_t countSurfaceVoxels(const VoxelGrid& grid, int32_t z0, int32_t z1);
 
 }  // namespace vox

@@ -125,9 +125,14 @@ class VoxelGrid {
   // Whole layer z (-1..nz) as wordsPerLayer() words, row yp = y + 1 at offset yp * wordsPerRow().
   const uint64_t* layerWords(int32_t z) const { return layers_[size_t(z + 1)]->data(); }
   uint64_t* mutableLayerWords(int32_t z);
+  // Layer z (0 <= z < nz) replaced by a new all-zero layer of its own, nothing copied (for writers that set every
+  // word: a copy on write would be wasted).
+  uint64_t* freshLayerWords(int32_t z);
   bool layerAllocated(int32_t z) const { return layers_[size_t(z + 1)] != zero_layer_; }
   // True when layer z shares storage with `other`'s layer z (both snapshots of the same data).
   bool sharesLayerWith(const VoxelGrid& other, int32_t z) const;
+  // Makes layer z (0 <= z < nz) share `other`'s layer z (copy on write, O(1)); the grids must have the same dims.
+  void shareLayerFrom(const VoxelGrid& other, int32_t z);
 
  private:
   // Layer storage comes from calloc and is not written when allocated: memory fresh from the system is already

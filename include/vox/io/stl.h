@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "vox/core/indexed_mesh.h"
 #include "vox/core/mesh.h"
 #include "vox/core/result.h"
 
@@ -32,5 +33,7 @@ Result<StlLoad> parseStl(std::span<const uint8_t> bytes, const std::string& name
 
 // Writes a binary STL atomically (used by tests and tools to generate meshes).
 Status saveStlBinary(const TriangleMesh& mesh, const std::filesystem::path& path);
+// The same from shared vertices (doubles, written as float), without a TriangleMesh copy.
+Status saveStlBinary(const IndexedMesh& mesh, const std::filesystem::path& path);
 
 }  // namespace vox::io

@@ -51,6 +51,10 @@ struct VoxelizeParams {
   bool remove_strays = false;
   uint64_t memory_limit_bytes = 0;  // 0: 80% of physical memory
   std::string units = "model";
+  // Set: voxelize on exactly this grid instead of the one fitted to the mesh (resolution and voxel_size are then
+  // ignored), e.g. a body of an assembly over its own box of the assembly's lattice (placeGridOnLattice). The result's
+  // frame origin is the corner of its voxel (0, 0, 0); its voxels equal the lattice grid's voxels there.
+  std::optional<GridPlacement> placement = std::nullopt;
 };
 
 struct VoxelizeResult {

@@ -36,8 +36,10 @@ void drawStatusBar(AppState& state) {
   } else if (!state.model.empty()) {
     const VoxelGrid& g = state.model;
     const SurfaceStats* stats = state.surface_stats.get(state.model_version);
-    ImGui::Text("%s   %d x %d x %d voxels   voxel %s   %s filled", state.doc.path.filename().string().c_str(), g.nx(),
-                g.ny(), g.nz(), formatLength(g.voxelSize(), g.frame().units).c_str(),
+    std::string name = state.doc.path.filename().string();
+    if (state.doc.coarse_level > 1) name += " (coarse view, level " + std::to_string(state.doc.coarse_level) + ")";
+    ImGui::Text("%s   %d x %d x %d voxels   voxel %s   %s filled", name.c_str(), g.nx(), g.ny(), g.nz(),
+                formatLength(g.voxelSize(), g.frame().units).c_str(),
                 stats ? groupDigits(stats->filled).c_str() : "...");
   } else if (state.doc.mesh) {
     ImGui::Text("%s   %s triangles, not voxelized yet (Model > Voxelize...)",

@@ -212,8 +212,8 @@ TEST(GridPlacement, rejectsAbsurdRequestsWithReasons) {
   b.expand({1, 2, 3});
   auto zero = placeGridByResolution(b, 0);
   ASSERT_FALSE(zero.ok());
-  EXPECT_EQ(zero.error().message, "resolution 0 is out of range (1 to 4096)");
-  EXPECT_FALSE(placeGridByResolution(b, 5000).ok());
+  EXPECT_EQ(zero.error().message, "resolution 0 is out of range (1 to 16384)");
+  EXPECT_FALSE(placeGridByResolution(b, 16385).ok());
   EXPECT_FALSE(placeGridByVoxelSize(b, -1.0).ok());
   auto tiny = placeGridByVoxelSize(b, 1e-9);
   ASSERT_FALSE(tiny.ok());

@@ -10,6 +10,7 @@
 #include "support/test_support.h"
 #include "vox/io/file_util.h"
 #include "vox/io/voxel_file.h"
+#include "vox/io/vxm_stream.h"
 
 namespace vox {
 namespace {
@@ -82,6 +83,29 @@ TEST_F(SmallDisk, streamedSaveThatRunsOutOfSpaceMidwayKeepsTheOldFile) {
   }
   EXPECT_EQ(test::readFile(target), before);
   EXPECT_EQ(entries(), 1) << "a temporary file was not removed";
+}
+
+TEST_F(SmallDisk, saveInSlabsThatRunsOutOfSpaceKeepsTheOldFile) {
+  // The streamed voxelizer's save (io::saveVxmInSlabs): slabs of a noisy grid, the disk full after a few of them.
+  const auto target = dir_ / "part.vxm";
+  const std::string before = saveSmallFile("part.vxm");
+  VoxelGrid slab(Dims{256, 256, 4});
+  uint32_t state = 54321;
+  for (int z = 0; z < 4; ++z)
+    for (int y = 0; y < 256; ++y)
+      for (int x = 0; x < 256; ++x)
+        if (((state = state * 1664525u + 1013904223u) >> 31) != 0) slab.set(x, y, z);
+  const auto s = io::saveVxmInSlabs(target, Dims{256, 256, 64}, slab.frame(), [&](io::VxmLayerWriter& w) {
+    for (int i = 0; i < 16; ++i) {
+      if (Status st = w.append(slab, 0, 4); !st) return st;
+    }
+    return Status(Ok{});
+  });
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.error().code, ErrorCode::kIo);
+  EXPECT_NE(s.error().message.find("No space left on device"), std::string::npos) << s.error().message;
+  EXPECT_EQ(test::readFile(target), before);
+  EXPECT_EQ(entries(), 1) << "the temporary file was not removed";
 }
 
 }  // namespace

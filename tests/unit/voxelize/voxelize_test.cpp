@@ -475,15 +475,15 @@ TEST(VoxelizeControl, badParametersAreRejectedWithReasons) {
   VoxelizeParams p;
   p.resolution = 0;
   fails(p, ErrorCode::kInvalidArgument, "resolution 0");
-  p.resolution = 4097;
-  fails(p, ErrorCode::kInvalidArgument, "resolution 4097");
+  p.resolution = 16385;
+  fails(p, ErrorCode::kInvalidArgument, "resolution 16385");
   p.resolution = 64;
   p.voxel_size = -1.0;
   fails(p, ErrorCode::kInvalidArgument, "voxel size");
   p.voxel_size = std::nan("");
   fails(p, ErrorCode::kInvalidArgument, "voxel size");
   p.voxel_size = 1e-6;  // 2e6 voxels along the longest axis
-  fails(p, ErrorCode::kLimit, "at most 4096");
+  fails(p, ErrorCode::kLimit, "at most 16384");
   p.voxel_size = 0.0;
   p.threads = -1;
   fails(p, ErrorCode::kInvalidArgument, "threads");

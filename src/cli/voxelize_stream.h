@@ -1,0 +1,23 @@
+#pragma once
+// voxmod voxelize for grids that do not fit under the memory limit: Z slabs voxelized one after another and
+// appended to the .vxm file (vox/voxelize/stream.h, vox/io/vxm_stream.h). The JSON object has voxelize's keys and
+// also streamed, slabs and slab_layers.
+#include <string>
+
+#include "cli/output.h"
+#include "vox/io/mesh_file.h"
+#include "vox/voxelize/voxelize.h"
+
+namespace vox::cli {
+
+struct StreamedVoxelizeJob {
+  std::string mesh_path, out_path;
+  int32_t slab_layers = 1;
+  double t0 = 0.0, t_loaded = 0.0;  // nowSeconds() at the start and once the mesh was read
+};
+
+// Voxelizes `mesh` into job.out_path (a .vxm file: anything else is refused) and reports it through `out`.
+int runStreamedVoxelize(const StreamedVoxelizeJob& job, io::MeshFileLoad& mesh, const VoxelizeParams& params,
+                        Output& out);
+
+}  // namespace vox::cli

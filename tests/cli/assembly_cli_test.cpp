@@ -1,0 +1,190 @@
+// The assembly subcommands as scripts use them (docs/conventions.md, "Assemblies"; SPEC section 7): boolean, bodies,
+// interfere and clearance on boxes whose overlaps and gaps are known, and their errors.
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "support/test_support.h"
+#include "vox/core/mesh.h"
+#include "vox/io/stl.h"
+#include "vox/io/voxel_file.h"
+
+namespace vox {
+namespace {
+
+using test::runVoxmod;
+using test::TempDir;
+using json = nlohmann::json;
+
+// The box [lo, hi] as 12 outward-facing triangles.
+TriangleMesh boxMesh(glm::vec3 lo, glm::vec3 hi) {
+  TriangleMesh m = test::unitCubeMesh();
+  for (Triangle& t : m.triangles)
+    for (glm::vec3& v : t.v) v = lo + v * (hi - lo);
+  return m;
+}
+
+// a.stl = [0, 10]^3 and b.stl = [6, 16] x [5, 15] x [4, 14]: on the pair's grid at R = 16 (h = 1, origin 0) they
+// overlap in the block x 6..9, y 5..9, z 4..9 = 120 voxels, centred at (8, 7.5, 7).
+class AssemblyCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(io::saveStlBinary(boxMesh({0, 0, 0}, {10, 10, 10}), path("a.stl")).ok());
+    ASSERT_TRUE(io::saveStlBinary(boxMesh({6, 5, 4}, {16, 15, 14}), path("b.stl")).ok());
+    TriangleMesh both = boxMesh({0, 0, 0}, {10, 10, 10});
+    const TriangleMesh b = boxMesh({6, 5, 4}, {16, 15, 14});
+    both.triangles.insert(both.triangles.end(), b.triangles.begin(), b.triangles.end());
+    ASSERT_TRUE(io::saveStlBinary(both, path("ab.stl")).ok());
+  }
+  std::string path(const std::string& name) const { return (tmp_ / name).string(); }
+  TempDir tmp_;
+};
+
+json parse(const test::RunResult& r) {
+  EXPECT_FALSE(r.out.empty()) << r.err;
+  return json::parse(r.out);
+}
+
+TEST_F(AssemblyCli, booleanOfTwoMeshesOnThePairsGrid) {
+  const std::pair<const char*, int> cases[] = {
+      {"union", 1880}, {"intersection", 120}, {"difference", 880}, {"xor", 1760}};
+  for (const auto& [op, filled] : cases) {
+    auto r = runVoxmod(
+        {"boolean", path("a.stl"), path("b.stl"), "--op", op, "--res", "16", "-o", path("out.vxm"), "--json"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const json j = parse(r);
+    for (const char* key : {"filled", "filled_a", "filled_b", "dims", "origin", "voxel_size"})
+      EXPECT_TRUE(j.contains(key)) << key;
+    EXPECT_EQ(j["filled"], filled) << op;
+    EXPECT_EQ(j["filled_a"], 1000);
+    EXPECT_EQ(j["filled_b"], 1000);
+    EXPECT_EQ(j["dims"], json::array({16, 15, 14}));
+    EXPECT_DOUBLE_EQ(j["voxel_size"].get<double>(), 1.0);
+    auto g = io::loadVoxelFile(path("out.vxm"));
+    ASSERT_TRUE(g.ok());
+    EXPECT_EQ(g->filledCount(), filled) << op;
+  }
+}
+
+TEST_F(AssemblyCli, interfereReportsTheKnownBlock) {
+  for (bool bodies : {false, true}) {
+    auto r = bodies ? runVoxmod({"interfere", path("ab.stl"), "--bodies", "--res", "16", "--json"})
+                    : runVoxmod({"interfere", path("a.stl"), path("b.stl"), "--res", "16", "--json"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const json j = parse(r);
+    EXPECT_EQ(j["parts"], bodies ? json::array({"body 0", "body 1"}) : json::array({"a.stl", "b.stl"}));
+    ASSERT_EQ(j["pairs"].size(), 1u);
+    const json& p = j["pairs"][0];
+    EXPECT_EQ(p["a"], 0);
+    EXPECT_EQ(p["b"], 1);
+    EXPECT_EQ(p["voxels"], 120);
+    EXPECT_DOUBLE_EQ(p["volume"].get<double>(), 120.0);
+    EXPECT_EQ(p["bbox"]["min"], json::array({6.0, 5.0, 4.0}));
+    EXPECT_EQ(p["bbox"]["max"], json::array({10.0, 10.0, 10.0}));
+    EXPECT_EQ(p["centre"], json::array({8.0, 7.5, 7.0}));
+    EXPECT_EQ(j["overlap_voxels"], 120);
+  }
+}
+
+TEST_F(AssemblyCli, bodiesWritesEveryBodyOnOneLattice) {
+  auto r = runVoxmod({"bodies", path("ab.stl"), "--res", "16", "-o", path("bodies"), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = parse(r);
+  ASSERT_EQ(j["bodies"].size(), 2u);
+  for (int i = 0; i < 2; ++i) {
+    const json& b = j["bodies"][size_t(i)];
+    EXPECT_EQ(b["index"], i);
+    EXPECT_EQ(b["triangles"], 12);
+    EXPECT_EQ(b["filled"], 1000);
+    EXPECT_DOUBLE_EQ(b["volume"].get<double>(), 1000.0);
+  }
+  EXPECT_EQ(j["bodies"][1]["bbox"]["min"], json::array({6.0, 5.0, 4.0}));
+  EXPECT_TRUE(std::filesystem::exists(path("bodies/body_000.vxm")));
+  // The body files share the lattice: their intersection is the block.
+  auto i = runVoxmod({"boolean", path("bodies/body_000.vxm"), path("bodies/body_001.vxm"), "--op", "intersection", "-o",
+                      path("i.binvox"), "--json"});
+  ASSERT_EQ(i.exit_code, 0) << i.err;
+  EXPECT_EQ(parse(i)["filled"], 120);
+}
+
+TEST_F(AssemblyCli, clearanceBetweenSeparateBoxes) {
+  ASSERT_TRUE(io::saveStlBinary(boxMesh({13, 0, 0}, {20, 10, 10}), path("d.stl")).ok());
+  // h = 1: a fills x 0..9, d fills x 13..19; closest centres 4 apart, a gap of 3 (the faces at 10 and 13).
+  auto r = runVoxmod({"clearance", path("a.stl"), path("d.stl"), "--voxel-size", "1", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = parse(r);
+  EXPECT_EQ(j["touching"], false);
+  EXPECT_DOUBLE_EQ(j["distance"].get<double>(), 4.0);
+  EXPECT_DOUBLE_EQ(j["gap"].get<double>(), 3.0);
+  EXPECT_DOUBLE_EQ(j["point_a"][0].get<double>(), 9.5);
+  EXPECT_DOUBLE_EQ(j["point_b"][0].get<double>(), 13.5);
+  auto t = runVoxmod({"clearance", path("a.stl"), path("b.stl"), "--res", "16", "--json"});
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  EXPECT_EQ(parse(t)["touching"], true);
+}
+
+TEST_F(AssemblyCli, voxelFilesOnDifferentLatticesAreRefused) {
+  ASSERT_EQ(runVoxmod({"voxelize", path("a.stl"), "--res", "10", "-o", path("a10.vxm")}).exit_code, 0);
+  ASSERT_EQ(runVoxmod({"voxelize", path("b.stl"), "--res", "20", "-o", path("b20.vxm")}).exit_code, 0);
+  auto r = runVoxmod({"boolean", path("a10.vxm"), path("b20.vxm"), "--op", "union", "-o", path("u.vxm"), "--json"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("b20.vxm is not on the lattice of a10.vxm: voxel sizes differ"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(path("u.vxm")));
+  // Same voxel size, origins half a voxel apart.
+  ASSERT_TRUE(io::saveStlBinary(boxMesh({0.5f, 0, 0}, {10.5f, 10, 10}), path("c.stl")).ok());
+  ASSERT_EQ(runVoxmod({"voxelize", path("c.stl"), "--res", "10", "-o", path("c10.vxm")}).exit_code, 0);
+  r = runVoxmod({"interfere", path("a10.vxm"), path("c10.vxm")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("not a whole number of voxels"), std::string::npos) << r.err;
+}
+
+TEST_F(AssemblyCli, badInputAndOutputAreClearErrors) {
+  test::writeFile(path("bad.stl"), "garbage");
+  auto r = runVoxmod({"interfere", path("a.stl"), path("bad.stl"), "--json"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("bad.stl"), std::string::npos) << r.err;
+  EXPECT_TRUE(parse(r).contains("error"));
+  r = runVoxmod({"boolean", path("a.stl"), path("b.stl"), "--op", "union", "-o", path("u.png")});
+  EXPECT_EQ(r.exit_code, 1);
+  r = runVoxmod({"boolean", path("a.stl"), path("b.stl"), "--op", "nand", "-o", path("u.vxm")});
+  EXPECT_EQ(r.exit_code, 1);
+  // A directory that cannot be made (a file is in the way): exit 2, nothing written.
+  test::writeFile(path("file"), "x");
+  r = runVoxmod({"bodies", path("ab.stl"), "--res", "16", "-o", path("file/sub")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("file/sub"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace vox
+
+namespace vox {
+namespace {
+
+TEST_F(AssemblyCli, voxelFileBodiesAreComponentsAndMeshesJoinItsLattice) {
+  // ab.stl voxelized as one grid: the two boxes overlap, so the grid is one 6-connected component.
+  ASSERT_EQ(runVoxmod({"voxelize", path("ab.stl"), "--res", "16", "-o", path("ab.vxm")}).exit_code, 0);
+  auto r = runVoxmod({"bodies", path("ab.vxm"), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  json j = parse(r);
+  ASSERT_EQ(j["bodies"].size(), 1u);
+  EXPECT_EQ(j["bodies"][0]["filled"], 1880);
+  EXPECT_TRUE(j["bodies"][0]["triangles"].is_null());
+  // a.stl voxelized alone on its own grid (h = 1, origin 0): b.stl joins that lattice and overlaps it in the block.
+  ASSERT_EQ(runVoxmod({"voxelize", path("a.stl"), "--res", "10", "-o", path("a10.vxm")}).exit_code, 0);
+  r = runVoxmod({"interfere", path("a10.vxm"), path("b.stl"), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  j = parse(r);
+  ASSERT_EQ(j["pairs"].size(), 1u);
+  EXPECT_EQ(j["pairs"][0]["voxels"], 120);
+  // Two cubes touching only along an edge: two components through faces, one through edges.
+  VoxelGrid g(Dims{4, 4, 1}, GridFrame{});
+  g.set(0, 0, 0);
+  g.set(1, 1, 0);
+  ASSERT_TRUE(io::saveVoxelFile(g, path("diag.vxm")).ok());
+  EXPECT_EQ(parse(runVoxmod({"bodies", path("diag.vxm"), "--json"}))["bodies"].size(), 2u);
+  EXPECT_EQ(parse(runVoxmod({"bodies", path("diag.vxm"), "--connectivity", "26", "--json"}))["bodies"].size(), 1u);
+}
+
+}  // namespace
+}  // namespace vox
