@@ -87,8 +87,8 @@ Status appendJournal(const std::filesystem::path& outdir, const Json& entry);
 Status appendReportLine(const std::filesystem::path& report, const Json& line);
 // Rewrites the journal atomically with the last entry of each output.
 Status compactJournal(const std::filesystem::path& outdir);
-// Removes temporary files an interrupted batch left beside `item`'s output (".NAME.tmp-*", io/file_util.h).
-void removeStaleTemporaries(const BatchItem& item);
+// Removes the temporary files an interrupted batch left beside the items' outputs (".NAME.tmp-*", io/file_util.h).
+void removeStaleTemporaries(const std::vector<BatchItem>& items);
 // Creates OUTDIR and proves it writable (a file created and removed); the error says why not.
 Status prepareOutdir(const std::filesystem::path& outdir);
 

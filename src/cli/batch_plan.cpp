@@ -10,6 +10,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <set>
 
 #include "cli/batch.h"
 #include "vox/io/file_util.h"
@@ -235,14 +236,24 @@ Status compactJournal(const fs::path& outdir) {
   return io::writeFileAtomic(journalPath(outdir), text);
 }
 
-void removeStaleTemporaries(const BatchItem& item) {
-  const fs::path dir = item.output.parent_path().empty() ? fs::path(".") : item.output.parent_path();
-  // io::writeFileAtomic's temporary name: '.', the target's name cut to 150 characters, ".tmp-".
-  std::string prefix(1, '.');
-  prefix.append(item.output.filename().string(), 0, 150).append(".tmp-");
-  std::error_code ec;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    if (it->path().filename().string().starts_with(prefix)) fs::remove(it->path(), ec);
+void removeStaleTemporaries(const std::vector<BatchItem>& items) {
+  // io::writeFileAtomic's temporary name: '.', the target's name cut to 150 characters, ".tmp-", a suffix. Each
+  // output directory is listed once (a dataset may put thousands of outputs in one).
+  std::map<fs::path, std::set<std::string>> names_by_dir;
+  for (const BatchItem& item : items) {
+    const fs::path dir = item.output.parent_path().empty() ? fs::path(".") : item.output.parent_path();
+    names_by_dir[dir].insert(item.output.filename().string().substr(0, 150));
+  }
+  for (const auto& [dir, names] : names_by_dir) {
+    std::error_code ec;
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+      const std::string name = it->path().filename().string();
+      const size_t tmp = name.rfind(".tmp-");
+      if (name.starts_with('.') && tmp != std::string::npos && names.contains(name.substr(1, tmp - 1))) {
+        std::error_code ignored;
+        fs::remove(it->path(), ignored);
+      }
+    }
   }
 }
 

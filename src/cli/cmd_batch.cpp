@@ -180,13 +180,13 @@ class BatchRecord {
 std::vector<size_t> itemsToDo(const std::vector<BatchItem>& items, const BatchSettings& settings, bool resume,
                               const fs::path& outdir, BatchRecord& record) {
   const Journal journal = resume ? readJournal(outdir) : Journal{};
+  removeStaleTemporaries(items);
   std::vector<size_t> todo;
   for (const BatchItem& item : items) {
     if (!item.problem.empty()) {
       record.record(item.index, errorLine(item, item.problem));
       continue;
     }
-    removeStaleTemporaries(item);
     if (resume) {
       if (auto done = checkDone(item, journal, settings)) {
         record.record(item.index, std::move(*done));

@@ -117,6 +117,25 @@ test::RunResult runProgram(const std::vector<std::string>& args, const std::map<
   return r;
 }
 
+std::vector<std::string> mpirunArgs(int ranks) {
+  std::vector<std::string> args = {"mpirun", "--oversubscribe", "-np", std::to_string(ranks)};
+  if (geteuid() == 0) args.push_back("--allow-run-as-root");
+  args.push_back(test::voxmodExecutable());
+  return args;
+}
+
+// Why MPI batches cannot be tested here (no mpirun, or a voxmod built without MPI), or empty.
+std::string mpiMissing() {
+  if (std::system("command -v mpirun >/dev/null 2>&1") != 0) return "mpirun not found (openmpi-bin)";
+  TempDir tmp;
+  std::vector<std::string> args = mpirunArgs(2);
+  for (const char* a : {"batch", "no-such-input.stl", "-o"}) args.push_back(a);
+  args.push_back((tmp / "out").string());
+  args.push_back("--format=vxm");
+  if (runProgram(args).err.find("built without MPI") != std::string::npos) return "voxmod is built without MPI";
+  return {};
+}
+
 std::vector<std::string> batchArgs(const std::vector<std::string>& inputs, const fs::path& outdir,
                                    const std::string& format, const std::vector<std::string>& more = {}) {
   std::vector<std::string> args = {"batch"};
@@ -268,7 +287,7 @@ TEST(CliBatch, killedInTheMiddleAndResumedDoesNothingTwice) {
 }
 
 // --resume checks the output, not its presence: a damaged output (same size, one byte changed) and an output made
-// with other settings are done again.
+// with other settings are done again; a temporary left by a killed batch is removed.
 TEST(CliBatch, resumeRedoesDamagedAndStaleOutputs) {
   TempDir tmp;
   const fs::path src = test::sourceDir();
@@ -280,12 +299,15 @@ TEST(CliBatch, resumeRedoesDamagedAndStaleOutputs) {
   std::string damaged = good;
   damaged[damaged.size() - 2] ^= 1;
   test::writeFile(out / "featuretype.binvox", damaged);
+  // What a batch killed while writing leaves: a temporary beside the output (io::writeFileAtomic's name).
+  test::writeFile(out / ".plate_holes.binvox.tmp-12345-0-678", "#binvox 1\ndim");
   auto r = runVoxmod(batchArgs(inputs, out, "binvox", {"--resume"}));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   auto report = readReport(out / "report.jsonl");
   EXPECT_EQ(report[0]["status"], "ok");  // damaged: done again
   EXPECT_EQ(report[1]["status"], "skipped");
   EXPECT_TRUE(test::readFile(out / "featuretype.binvox") == good);
+  EXPECT_FALSE(fs::exists(out / ".plate_holes.binvox.tmp-12345-0-678")) << "a killed batch's temporary left behind";
   // Another resolution: every output is stale.
   std::vector<std::string> args = batchArgs(inputs, out, "binvox", {"--resume"});
   *std::find(args.begin(), args.end(), std::string(kRes)) = "32";
@@ -371,9 +393,9 @@ TEST(CliBatch, fullDiskStopsTheBatchWithOnlyCompleteFiles) {
 
 // The same batch under `mpirun --oversubscribe -np 3`: byte for byte the outputs and report lines of one process.
 TEST(CliBatch, mpiRanksWriteWhatOneProcessWrites) {
-  if (std::system("command -v mpirun >/dev/null 2>&1") != 0) {
-    if (test::inCI()) FAIL() << "mpirun (openmpi-bin) is missing in CI";
-    GTEST_SKIP() << "mpirun not found (openmpi-bin); skipping";
+  if (const std::string why = mpiMissing(); !why.empty()) {
+    if (test::inCI()) FAIL() << why << " in CI";
+    GTEST_SKIP() << why << "; skipping";
   }
   TempDir tmp;
   const fs::path src = test::sourceDir();
@@ -384,9 +406,7 @@ TEST(CliBatch, mpiRanksWriteWhatOneProcessWrites) {
     inputs.push_back((src / m).string());
   auto one = runVoxmod(batchArgs(inputs, tmp / "one", "binvox"));
   EXPECT_EQ(one.exit_code, 2) << one.err;
-  std::vector<std::string> args = {"mpirun", "--oversubscribe", "-np", "3"};
-  if (geteuid() == 0) args.push_back("--allow-run-as-root");
-  args.push_back(test::voxmodExecutable());
+  std::vector<std::string> args = mpirunArgs(3);
   for (const std::string& a : batchArgs(inputs, tmp / "mpi", "binvox", {"--json"})) args.push_back(a);
   auto r = runProgram(args);
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
@@ -409,9 +429,9 @@ TEST(CliBatch, mpiRanksWriteWhatOneProcessWrites) {
 // finished before (each complete), no other file is there, and --resume converts the rest without redoing those.
 TEST(CliBatch, mpiRankKilledInTheMiddleThenResumed) {
   VOX_REQUIRE_SHARED(shared);
-  if (std::system("command -v mpirun >/dev/null 2>&1") != 0) {
-    if (test::inCI()) FAIL() << "mpirun (openmpi-bin) is missing in CI";
-    GTEST_SKIP() << "mpirun not found (openmpi-bin); skipping";
+  if (const std::string why = mpiMissing(); !why.empty()) {
+    if (test::inCI()) FAIL() << why << " in CI";
+    GTEST_SKIP() << why << "; skipping";
   }
   TempDir tmp;
   // The shared meshes three times over (links in three directories): enough work to kill a rank in the middle.
@@ -425,9 +445,7 @@ TEST(CliBatch, mpiRankKilledInTheMiddleThenResumed) {
     }
   }
   const fs::path out = tmp / "out";
-  std::vector<std::string> args = {"mpirun", "--oversubscribe", "-np", "3"};
-  if (geteuid() == 0) args.push_back("--allow-run-as-root");
-  args.push_back(test::voxmodExecutable());
+  std::vector<std::string> args = mpirunArgs(3);
   for (const std::string& a : batchArgs(inputs, out, "binvox", {"--threads", "1"})) args.push_back(a);
   std::fflush(nullptr);
   const pid_t mpirun = fork();
