@@ -5,6 +5,7 @@
 #include "app/document.h"
 #include "app/exports.h"
 #include "app/messages.h"
+#include "app/parts.h"
 #include "app/view_export.h"
 
 namespace vox::app {
@@ -12,6 +13,7 @@ namespace vox::app {
 std::vector<std::string> browserExtensions(BrowserPurpose purpose) {
   switch (purpose) {
     case BrowserPurpose::kOpen:
+    case BrowserPurpose::kAddPart:
       return {".stl", ".vxm", ".binvox"};
     case BrowserPurpose::kSaveModel:
       return {".vxm", ".binvox"};
@@ -50,6 +52,8 @@ const char* browserTitle(BrowserPurpose purpose) {
       return "Export the X-ray image as PNG";
     case BrowserPurpose::kExportXrayCsv:
       return "Export the X-ray thickness as CSV";
+    case BrowserPurpose::kAddPart:
+      return "Add a part from a mesh or voxel file (on the scene's lattice)";
   }
   return "";
 }
@@ -67,6 +71,7 @@ void openBrowser(AppState& state, BrowserPurpose purpose) {
   const std::string stem = state.doc.path.empty() ? std::string("model") : state.doc.path.stem().string();
   switch (purpose) {
     case BrowserPurpose::kOpen:
+    case BrowserPurpose::kAddPart:
       b.file_name.clear();
       break;
     case BrowserPurpose::kSaveModel:
@@ -114,6 +119,14 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
       requestOpen(state, path);
       ok = true;
       break;
+    case BrowserPurpose::kAddPart:
+      if (std::error_code ec; !std::filesystem::is_regular_file(path, ec)) {
+        reportError(state, path.string() + ": no such file");
+        return false;
+      }
+      startAddPart(state, path);
+      ok = true;
+      break;
     case BrowserPurpose::kSaveModel:
       ok = saveModel(state, path);
       break;
@@ -142,7 +155,7 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
   if (ok) {
     state.settings.last_directory = std::filesystem::absolute(path).parent_path().string();
     // Say where a file went (the name typed may have been relative, or the directory not the one in mind).
-    if (purpose != BrowserPurpose::kOpen) {
+    if (purpose != BrowserPurpose::kOpen && purpose != BrowserPurpose::kAddPart) {
       state.status_message = "Wrote " + std::filesystem::absolute(path).lexically_normal().string();
       state.status_since = nowSeconds();
     }

@@ -245,7 +245,7 @@ bool checkExpectedError(Harness& h, const Context& c, Step step) {
 
 bool settled(const AppState& s) {
   return !modelBusy(s) && !s.depth.busy() && !s.surface_stats.busy() && !s.mass.busy() && !s.xray_result.busy() &&
-         !s.thickness.busy() && !s.skin.pending_peel;
+         !s.thickness.busy() && !s.skin.pending_peel && !s.parts_job.active() && !s.interference_job.active();
 }
 
 void stepScript(Harness& h, AppState& state) {
