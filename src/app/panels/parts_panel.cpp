@@ -88,9 +88,9 @@ void drawPartRow(AppState& state, const Assembly& parts, size_t i, int64_t voxel
 
 void drawPartList(AppState& state, const Assembly& parts) {
   const std::vector<int64_t>& counts = partVoxelCounts(state);
-  ImGui::Text("%s on one lattice (voxel %s). Click to select; Ctrl+click adds.",
-              countOf(int64_t(parts.size()), "part").c_str(),
-              formatLength(parts.lattice().voxel_size, parts.lattice().units).c_str());
+  ImGui::TextWrapped("%s on one lattice (voxel %s). Click to select; Ctrl+click adds.",
+                     countOf(int64_t(parts.size()), "part").c_str(),
+                     formatLength(parts.lattice().voxel_size, parts.lattice().units).c_str());
   if (!beginList("parts", 3, int(parts.size()), 10)) return;
   ImGui::TableSetupColumn("Show", ImGuiTableColumnFlags_WidthFixed, 58.0f);
   ImGui::TableSetupColumn("Part");
@@ -130,9 +130,8 @@ void drawPartOperations(AppState& state, const Assembly& parts) {
     ImGui::SetTooltip("%s %s %s, as a new part", parts.part(ui.selected[0]).name.c_str(), ops[op],
                       parts.part(ui.selected[1]).name.c_str());
   }
-  ImGui::SameLine();
   ImGui::BeginDisabled(ui.selected.empty() || parts.size() < 2);
-  if (ImGui::Button("Remove")) dispatch(state, ActionId::kRemovePart);
+  if (ImGui::Button("Remove the selected part")) dispatch(state, ActionId::kRemovePart);
   ImGui::EndDisabled();
 }
 
