@@ -109,6 +109,27 @@ Status peelDistanceAt(AppState& s, const ActionArgs& a);
 // ---- X-ray ----
 Status xrayAlong(AppState& s, const ActionArgs& a);
 
+// ---- Parts (part_actions.cpp) ----
+bool hasParts(const AppState& s);
+bool canSplit(const AppState& s);
+bool canAddPart(const AppState& s);
+bool hasInterference(const AppState& s);
+void panelParts(AppState& s);
+bool onParts(const AppState& s);
+void splitBodies(AppState& s);
+Status splitBodiesWith(AppState& s, const ActionArgs& a);  // 6 | 26 (a voxel model's connectivity)
+void addPartDialog(AppState& s);
+Status addPartPath(AppState& s, const ActionArgs& a);
+void booleanSelected(AppState& s);
+Status booleanWith(AppState& s, const ActionArgs& a);  // OP [A B]: part numbers from 1; none: the selected two
+void removeSelected(AppState& s);
+Status removeAt(AppState& s, const ActionArgs& a);  // N, from 1
+void findInterferenceNow(AppState& s);
+Status showPairAt(AppState& s, const ActionArgs& a);     // N: the list's row from 1; 0 clears
+Status selectPartsAt(AppState& s, const ActionArgs& a);  // N...: part numbers from 1
+Status partVisibleAt(AppState& s, const ActionArgs& a);  // N on|off
+Status partsScopeAt(AppState& s, const ActionArgs& a);   // union | selected
+
 // ---- Help and dialogs ----
 void controls(AppState& s);
 void about(AppState& s);

@@ -68,6 +68,7 @@ const Action kActions[] = {
   {ActionId::kPanelXray,      "panel-xray",      "View",    "X-ray panel",                        {GLFW_KEY_4, kCtrl},         0, 0,  panelXray,     nullptr,           nullptr,     onXray},
   {ActionId::kPanelMass,      "panel-mass",      "View",    "Mass properties panel",              {GLFW_KEY_5, kCtrl},         0, 0,  panelMass,     nullptr,           nullptr,     onMass},
   {ActionId::kPanelThickness, "panel-thickness", "View",    "Thickness panel",                    {GLFW_KEY_6, kCtrl},         0, 0,  panelThickness, nullptr,          nullptr,     onThickness},
+  {ActionId::kPanelParts,     "panel-parts",     "View",    "Parts panel",                        {GLFW_KEY_7, kCtrl},         0, 0,  panelParts,    nullptr,           nullptr,     onParts},
   {ActionId::kMinWall,        "min-wall",        nullptr,   "Minimum wall (model units)",         kNone,                       1, 1,  nullptr,       minWallAt,         hasSection,  nullptr},
 
   {ActionId::kSectionPrev,    "section-prev",    "Section", "Previous section",                   {GLFW_KEY_PAGE_DOWN, 0},     0, 0,  sectionPrev,   nullptr,           hasSection,  nullptr},
@@ -83,6 +84,16 @@ const Action kActions[] = {
   {ActionId::kPeelDistance,   "peel-distance",   "Skin",    "Peel by distance (round)",           kNone,                       1, 1,  peelDistanceN, peelDistanceAt,    hasModel,    nullptr},
 
   {ActionId::kXray,           "xray",            nullptr,   "X-ray along an axis",                kNone,                       2, 2,  nullptr,       xrayAlong,         hasSection,  nullptr},
+
+  {ActionId::kSplitBodies,    "split-bodies",    "Parts",   "Split into bodies",                  kNone,                       1, 1,  splitBodies,   splitBodiesWith,   canSplit,    nullptr},
+  {ActionId::kAddPart,        "add-part",        "Parts",   "Add part from file...",              kNone,                       1, -1, addPartDialog, addPartPath,       canAddPart,  nullptr},
+  {ActionId::kPartBoolean,    "part-boolean",    "Parts",   "Boolean of the two selected parts",  kNone,                       1, 3,  booleanSelected, booleanWith,     hasParts,    nullptr},
+  {ActionId::kRemovePart,     "remove-part",     "Parts",   "Remove the selected part",           kNone,                       1, 1,  removeSelected, removeAt,         hasParts,    nullptr},
+  {ActionId::kInterference,   "interference",    "Parts",   "Find interference",                  kNone,                       0, 0,  findInterferenceNow, nullptr,     hasParts,    nullptr},
+  {ActionId::kInterferencePair, "interference-pair", nullptr, "Show an interference pair",        kNone,                       1, 1,  nullptr,       showPairAt,        hasInterference, nullptr},
+  {ActionId::kSelectPart,     "select-part",     nullptr,   "Select parts",                       kNone,                       1, -1, nullptr,       selectPartsAt,     hasParts,    nullptr},
+  {ActionId::kPartVisible,    "part-visible",    nullptr,   "Show or hide a part",                kNone,                       2, 2,  nullptr,       partVisibleAt,     hasParts,    nullptr},
+  {ActionId::kPartsScope,     "parts-scope",     nullptr,   "Section, X-ray and mass on",         kNone,                       1, 1,  nullptr,       partsScopeAt,      hasParts,    nullptr},
 
   {ActionId::kControls,       "controls",        "Help",    "Mouse and keyboard",                 {GLFW_KEY_F1, 0},            0, 0,  controls,      nullptr,           nullptr,     nullptr},
   {ActionId::kAbout,          "about",           "Help",    "About voxmod",                       kNone,                       0, 0,  about,         nullptr,           nullptr,     nullptr},

@@ -16,6 +16,8 @@ const char* panelName(Panel p) {
       return "mass";
     case Panel::kThickness:
       return "thickness";
+    case Panel::kParts:
+      return "parts";
   }
   return "model";
 }

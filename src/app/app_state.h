@@ -16,7 +16,9 @@
 #include "app/settings.h"
 #include "app/texture.h"
 #include "vox/analysis/analysis.h"
+#include "vox/analysis/assembly.h"
 #include "vox/analysis/thickness.h"
+#include "vox/core/assembly.h"
 #include "vox/core/mesh.h"
 #include "vox/core/voxel_grid.h"
 #include "vox/io/mesh_file.h"
@@ -81,6 +83,9 @@ struct ModelSnapshot {
   // The round peels (peel by distance) that made `base` from the part, e.g. "0.5 mm + 0.2 mm"; empty: none. Each
   // makes a new base, so layer peels continue from what it left.
   std::string round_peels;
+  // A scene of parts on one lattice (split into bodies, added from files, Booleans: app/parts.h); null for one model.
+  // `base` and `grid` then hold the union of the parts on the frame of the assembly's extent.
+  std::shared_ptr<const Assembly> parts;
 };
 
 struct Document {
@@ -99,8 +104,8 @@ struct Document {
 
 // ---- Params the widgets edit ----
 
-enum class Panel { kModel, kSection, kSkin, kXray, kMass, kThickness };
-inline constexpr int kPanelCount = 6;
+enum class Panel { kModel, kSection, kSkin, kXray, kMass, kThickness, kParts };
+inline constexpr int kPanelCount = 7;
 const char* panelName(Panel p);  // "model", "section", ...
 
 struct ViewParams {
@@ -167,6 +172,7 @@ enum class BrowserPurpose {
   kExportXrayCsv,
   kExportVolume,     // the model as .vti, .vdb, .nrrd or .vox (export_volume.h)
   kExportThickness,  // the thickness volume as .vti, .vdb or .nrrd
+  kAddPart,          // a mesh or voxel file added to the scene as a part (parts.h)
 };
 
 struct FileBrowser {
@@ -233,6 +239,23 @@ struct VoxelizeOutcome {
   std::shared_ptr<const MeshSource> mesh;  // null when the open mesh was used
 };
 
+// The Parts panel (app/parts.h): which parts are selected, what Section, X-ray and mass work on, and the
+// interference of the current parts.
+struct PartsUi {
+  std::vector<size_t> selected;  // part indices, in the order clicked (a Boolean takes the first two)
+  bool scope_selected = false;   // Section, X-ray and mass on the selected part (else on the union of the parts)
+  Connectivity connectivity = Connectivity::kFace;  // splitting a voxel model into components
+  PartOp op = PartOp::kUnion;
+  uint64_t interference_version = 0;  // the model version `interference` was found for (0: none)
+  std::optional<Interference> interference;
+  double interference_s = 0.0;
+  int32_t pair = -1;                  // the interference pair shown (index into interference->pairs); -1: none
+  VoxelGrid pair_overlap;             // its shared voxels on the model's frame
+  uint64_t pair_key = 0;              // changes with the pair shown (the overlay renderer's key)
+  std::vector<int64_t> voxel_counts;  // filled voxels of each part (partVoxelCounts)
+  uint64_t counts_version = 0;        // the model version they were counted for
+};
+
 struct LoadedFile {
   std::filesystem::path path;
   std::shared_ptr<const MeshSource> mesh;  // a mesh or CAD file
@@ -249,6 +272,11 @@ struct Viewport {
   std::unique_ptr<render::PointRenderer> renderer;  // the model
   std::unique_ptr<render::PointRenderer> overlay;   // disputed voxels or the core, drawn over the model
   std::unique_ptr<render::PointRenderer> ghost;     // the whole part, faint, around a peeled model
+
+  // One renderer per part of a scene (parts_view.h), on the model's frame; the model version they hold.
+  std::vector<std::unique_ptr<render::PointRenderer>> parts;
+  uint64_t parts_version = 0;
+
   render::Framebuffer framebuffer;
   uint64_t uploaded_version = 0;        // model_version the renderer holds
   uint64_t overlay_key = 0;             // what the overlay holds (see viewport.cpp)
@@ -293,12 +321,21 @@ struct AppState {
   MassUi mass_ui;
   ThicknessUi thickness_ui;
   MeasureUi measure;
+  PartsUi parts_ui;
   VoxelizeDialog voxelize;
   FileBrowser browser;
 
   // Background work.
   Job<LoadedFile> load_job;
   Job<VoxelizeOutcome> voxelize_job;
+
+  // The parts (parts.h): splitting into bodies or adding a part (with the undo label of what it makes), and the
+  // interference of the model version it runs for.
+  Job<std::shared_ptr<const Assembly>> parts_job;
+  std::string parts_job_label;
+  Job<Interference> interference_job;
+  uint64_t interference_job_version = 0;
+
   VoxelizeParams voxelize_job_params;  // the params of the running voxelization
   double job_started = 0.0;
   AsyncValue<uint64_t, std::shared_ptr<const DepthMap>> depth;  // keyed by base_id

@@ -6,6 +6,7 @@
 #include "app/export_volume.h"
 #include "app/exports.h"
 #include "app/messages.h"
+#include "app/parts.h"
 #include "app/view_export.h"
 #include "vox/io/mesh_file.h"
 
@@ -13,7 +14,8 @@ namespace vox::app {
 
 std::vector<std::string> browserExtensions(BrowserPurpose purpose) {
   switch (purpose) {
-    case BrowserPurpose::kOpen: {
+    case BrowserPurpose::kOpen:
+    case BrowserPurpose::kAddPart: {
       std::vector<std::string> all = io::meshFileExtensions();
       all.insert(all.end(), {".vxm", ".binvox"});
       return all;
@@ -64,6 +66,8 @@ const char* browserTitle(BrowserPurpose purpose) {
              "(MagicaVoxel)";
     case BrowserPurpose::kExportThickness:
       return "Export the thickness as a volume: .vti or .vdb (voxels, thickness, distance), .nrrd (thickness)";
+    case BrowserPurpose::kAddPart:
+      return "Add a part from a mesh or voxel file (on the scene's lattice)";
   }
   return "";
 }
@@ -81,6 +85,7 @@ void openBrowser(AppState& state, BrowserPurpose purpose) {
   const std::string stem = state.doc.path.empty() ? std::string("model") : state.doc.path.stem().string();
   switch (purpose) {
     case BrowserPurpose::kOpen:
+    case BrowserPurpose::kAddPart:
       b.file_name.clear();
       break;
     case BrowserPurpose::kSaveModel:
@@ -134,6 +139,14 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
       requestOpen(state, path);
       ok = true;
       break;
+    case BrowserPurpose::kAddPart:
+      if (std::error_code ec; !std::filesystem::is_regular_file(path, ec)) {
+        reportError(state, path.string() + ": no such file");
+        return false;
+      }
+      startAddPart(state, path);
+      ok = true;
+      break;
     case BrowserPurpose::kSaveModel:
       ok = saveModel(state, path);
       break;
@@ -169,7 +182,7 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
     state.settings.last_directory = std::filesystem::absolute(path).parent_path().string();
     // Say where a file went (the name typed may have been relative, or the directory not the one in mind).
     const bool in_background = purpose == BrowserPurpose::kExportVolume || purpose == BrowserPurpose::kExportThickness;
-    if (purpose != BrowserPurpose::kOpen && !in_background) {
+    if (purpose != BrowserPurpose::kOpen && purpose != BrowserPurpose::kAddPart && !in_background) {
       state.status_message = "Wrote " + std::filesystem::absolute(path).lexically_normal().string();
       const bool surface = purpose == BrowserPurpose::kExportSurface || purpose == BrowserPurpose::kExportSmoothSurface;
       if (surface && state.panel == Panel::kSection && state.view.cut_away) {

@@ -8,6 +8,7 @@
 #include "app/full_section.h"
 #include "app/messages.h"
 #include "app/model_jobs.h"
+#include "app/parts.h"
 #include "app/update.h"
 #include "vox/core/text.h"
 #include "vox/io/file_util.h"
@@ -64,6 +65,7 @@ void setModel(AppState& state, ModelSnapshot snapshot, bool undoable) {
   state.doc.model = std::move(snapshot);
   state.model = state.doc.model->grid;
   state.model_version = state.doc.model->version;
+  applyPartsScope(state);  // a scene of parts: the selected part, when the Parts panel says so
   state.viewport.dirty = true;
   keepTheView(state, before, had_model);
   keepTheSection(state, before, had_model);
@@ -87,6 +89,9 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
   Document& doc = state.doc;
   doc = Document{};
   state.voxelize_job.abandon();  // a voxelization of the previous document's mesh must not land in this one
+  state.parts_job.abandon();
+  state.interference_job.abandon();
+  state.parts_ui = PartsUi{};
   // Results derived from the previous document can never be asked for again: free them now.
   state.depth.clear();
   state.surface_stats.clear();

@@ -1,3 +1,4 @@
+#include "app/parts.h"
 #include "app/update.h"
 
 #include <algorithm>
@@ -49,6 +50,7 @@ void updateDocument(AppState& state) {
       reportError(state, result->error().message, state.doc.path);
     }
   }
+  updateParts(state);
   state.depth.poll();
   state.surface_stats.poll();
   state.mass.poll();

@@ -10,6 +10,8 @@
 #include "app/actions.h"
 #include "app/measure.h"
 #include "app/operations.h"
+#include "app/parts.h"
+#include "app/parts_view.h"
 #include "app/ui.h"
 #include "app/thickness_view.h"
 #include "app/view_export.h"
@@ -24,6 +26,7 @@ constexpr Rgba8 kBackground{46, 50, 58, 255};
 constexpr glm::vec3 kCoreColour{1.0f, 0.2f, 0.85f};
 constexpr float kGhostOpacity = 0.14f;  // the whole part around a peeled one: visible, never in the way
 constexpr glm::vec3 kDisputedColour{1.0f, 0.85f, 0.1f};
+constexpr glm::vec3 kOverlapColour{1.0f, 0.12f, 0.1f};
 constexpr double kOrbitDegreesPerPixel = 0.4;
 constexpr double kZoomPerWheelStep = 1.15;
 // Points a frame may draw: while the camera moves (llvmpipe draws about 8 million a second on 2 cores), and once it
@@ -51,6 +54,11 @@ uint64_t overlayKey(const AppState& state, const VoxelGrid** grid_out, VoxelGrid
   *grid_out = nullptr;
   if (!state.doc.model) return 0;
   const ModelSnapshot& m = *state.doc.model;
+  // The shared voxels of the interference pair the Parts panel shows (already a grid on the model's frame).
+  if (state.parts_ui.pair >= 0 && state.parts_ui.pair_overlap.dims() == state.model.dims()) {
+    *grid_out = &state.parts_ui.pair_overlap;
+    return state.parts_ui.pair_key * 4 + 3;
+  }
   if (state.panel == Panel::kSkin && state.view.show_core) {
     if (const DepthMap* d = currentDepthMap(state); d && d->layers() > 0) {
       const uint64_t key = m.base_id * 4 + 1;
@@ -104,6 +112,7 @@ void syncRenderers(AppState& state) {
     vp.ghost_key = ghost;
     vp.dirty = true;
   }
+  syncPartRenderers(state);
   VoxelGrid scratch;
   const VoxelGrid* overlay = nullptr;
   const uint64_t key = overlayKey(state, &overlay, scratch);
@@ -149,6 +158,13 @@ std::vector<double> signature(const AppState& state, int w, int h, bool coarse) 
           double(p.scalar_threshold)};
 }
 
+// The model's image, with its parts in their colours when it is a scene.
+std::vector<double> viewSignature(const AppState& state, int w, int h, bool coarse) {
+  std::vector<double> sig = signature(state, w, h, coarse);
+  appendPartsSignature(state, sig);
+  return sig;
+}
+
 void renderView(AppState& state, int w, int h, bool coarse) {
   Viewport& vp = state.viewport;
   const double t0 = nowSeconds();
@@ -160,7 +176,7 @@ void renderView(AppState& state, int w, int h, bool coarse) {
   vp.stats = {};
   if (!state.model.empty()) {
     const render::DrawParams params = drawParams(state, coarse);
-    vp.stats = vp.renderer->draw(state.view.camera, w, h, params);
+    vp.stats = drawsParts(state) ? drawParts(state, w, h, params) : vp.renderer->draw(state.view.camera, w, h, params);
     if (vp.ghost_key != 0) {
       render::DrawParams faint = params;
       faint.opacity = kGhostOpacity;
@@ -173,14 +189,15 @@ void renderView(AppState& state, int w, int h, bool coarse) {
       over.lut = render::Lut::kLit;
       // A core of a few voxels would be a few pixels: draw it at least 8 pixels wide so it can be found.
       const bool core = vp.overlay_key % 4 == 1;
-      if (core && over.point_size_px <= 0.0) {
+      const bool overlap = vp.overlay_key % 4 == 3;
+      if ((core || overlap) && over.point_size_px <= 0.0) {
         const render::Camera& cam = state.view.camera;
         const double ppv = render::pixelsPerVoxel(cam, double(h), cam.distance);
         over.point_size_px = std::max(
             6.0,
             render::closedPointSize(ppv, render::pointCoverageFactor(cam, over.round_points, double(w) / double(h))));
       }
-      over.colour = core ? kCoreColour : kDisputedColour;
+      over.colour = core ? kCoreColour : overlap ? kOverlapColour : kDisputedColour;
       over.cull_back_groups = true;
       vp.overlay->draw(state.view.camera, w, h, over);
     }
@@ -297,7 +314,7 @@ void drawViewport(AppState& state) {
   vp.interacting = vp.interacting || dragging;
   // Coarser points while something moves; at rest the view refines (drawParams: the point budget of each case).
   const bool coarse = state.view.lod;
-  const std::vector<double> sig = signature(state, w, h, coarse && vp.interacting);
+  const std::vector<double> sig = viewSignature(state, w, h, coarse && vp.interacting);
   if (vp.dirty || sig != vp.drawn_signature) {
     renderView(state, w, h, coarse);
     vp.drawn_signature = sig;
@@ -331,7 +348,9 @@ void drawViewport(AppState& state) {
     drawMeasureOverlay(state, dl, pos, w, h, aspect);
     drawThicknessOverlay(state, dl, pos, w, h, aspect);
     drawAxisTriad(state.view.camera, ImVec2(pos.x + 40.0f, pos.y + float(h) - 60.0f), 28.0f);
-    if (vp.overlay_key != 0) {
+    if (vp.overlay_key % 4 == 3) {
+      dl->AddText(ImVec2(pos.x + 8.0f, pos.y + 8.0f), IM_COL32(255, 70, 60, 255), interferencePairText(state).c_str());
+    } else if (vp.overlay_key != 0) {
       const bool core = vp.overlay_key % 4 == 1;
       dl->AddText(ImVec2(pos.x + 8.0f, pos.y + 8.0f), core ? IM_COL32(255, 60, 220, 255) : IM_COL32(255, 215, 30, 255),
                   core ? "Core (thickest region) shown through the model" : "Disputed voxels (vote mode)");

@@ -16,7 +16,7 @@ namespace {
 
 constexpr const char* kPopup = "File browser";
 
-bool isSave(BrowserPurpose p) { return p != BrowserPurpose::kOpen; }
+bool isSave(BrowserPurpose p) { return p != BrowserPurpose::kOpen && p != BrowserPurpose::kAddPart; }
 
 void accept(AppState& state) {
   FileBrowser& b = state.browser;

@@ -24,6 +24,7 @@ constexpr PanelEntry kPanels[] = {
     {Panel::kModel, "Model", drawModelPanel}, {Panel::kSection, "Section", drawSectionPanel},
     {Panel::kSkin, "Skin", drawSkinPanel},    {Panel::kXray, "X-ray", drawXrayPanel},
     {Panel::kMass, "Mass", drawMassPanel},    {Panel::kThickness, "Thickness", drawThicknessPanel},
+    {Panel::kParts, "Parts", drawPartsPanel},
 };
 
 void drawSidebar(AppState& state, ImVec2 pos, ImVec2 size) {
@@ -78,7 +79,7 @@ void drawFrame(AppState& state) {
     ImGui::SetNextWindowPos(ImVec2(main_x + layout.image_offset.x, top + layout.image_offset.y));
     ImGui::SetNextWindowSize(layout.image);
     ImGui::Begin("##image", nullptr, kFixedWindow | ImGuiWindowFlags_NoScrollWithMouse);
-    if (state.panel == Panel::kSection) {
+    if (state.panel == Panel::kSection || state.panel == Panel::kParts) {
       drawSectionImage(state);
     } else if (state.panel == Panel::kThickness) {
       drawThicknessImage(state);

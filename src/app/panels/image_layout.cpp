@@ -24,7 +24,11 @@ ImageLayout layoutImage(AppState& state, float w, float h) {
   ImageLayout l;
   l.view = ImVec2(w, h);
   const bool thickness = state.panel == Panel::kThickness;
-  if (state.model.empty() || (state.panel != Panel::kSection && state.panel != Panel::kXray && !thickness)) return l;
+  // The Parts panel shows the section through the interference pair it shows.
+  const bool parts = state.panel == Panel::kParts && state.parts_ui.pair >= 0;
+  if (state.model.empty() || (state.panel != Panel::kSection && state.panel != Panel::kXray && !thickness && !parts)) {
+    return l;
+  }
   const float text = 3.0f * ImGui::GetTextLineHeightWithSpacing();  // title and read-out lines around the image
   constexpr float kMost = 0.6f, kLeast = 0.35f;
   ImVec2 fixed(40.0f, text + 16.0f), scalable(1.0f, 1.0f);

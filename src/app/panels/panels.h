@@ -28,6 +28,7 @@ void drawSkinPanel(AppState& state);
 void drawXrayPanel(AppState& state);
 void drawMassPanel(AppState& state);
 void drawThicknessPanel(AppState& state);
+void drawPartsPanel(AppState& state);  // parts of a scene, Booleans, interference (parts_panel.cpp)
 
 // The 2D images beside the 3D view (Section and X-ray panels).
 void drawSectionImage(AppState& state);

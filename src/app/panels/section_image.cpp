@@ -10,6 +10,7 @@
 #include "app/measure.h"
 #include "app/operations.h"
 #include "app/panels/panels.h"
+#include "app/parts.h"
 #include "app/ui.h"
 #include "vox/io/figure.h"
 
@@ -33,7 +34,7 @@ void drawSectionImage(AppState& state) {
     ImGui::TextWrapped("%s", state.section_error.empty() ? "No section." : state.section_error.c_str());
     return;
   }
-  if (state.section_texture.empty()) state.section_texture.upload(io::sectionPicture(section->mask, 1));
+  if (state.section_texture.empty()) state.section_texture.upload(partsSectionPicture(state, *section));
   const std::string units = state.model.frame().units;
   ImGui::Text("Section %s = %s, index %d: %s voxels", axisName(section->axis),
               formatLength(section->position, units).c_str(), section->index, groupDigits(section->filled).c_str());

@@ -1,0 +1,224 @@
+// The Parts panel: the document as a scene of parts on one lattice (app/parts.h). The list (colour, visibility, name,
+// volume), selection (click; Ctrl+click adds), splitting into bodies, adding a part from a file, a Boolean of two
+// selected parts, removing one, what Section, X-ray and mass work on, and the interference list: clicking a pair
+// shows its overlap in red in the 3D view and in the section beside the panel. Widgets dispatch actions.
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include <imgui.h>
+
+#include "app/actions.h"
+#include "app/operations.h"
+#include "app/panels/panels.h"
+#include "app/parts.h"
+#include "app/ui.h"
+#include "vox/core/units.h"
+
+namespace vox::app {
+namespace {
+
+constexpr int kMostPairs = 500;  // more would not be read; the count above the list says how many there are
+
+std::string volumeText(int64_t voxels, double voxel_size, const std::string& units) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.4g", double(voxels) * voxel_size * voxel_size * voxel_size);
+  return std::string(buf) + (units == "model" ? "" : " " + units + "^3");
+}
+
+bool beginList(const char* id, int columns, int rows, int most_rows) {
+  const float row_h = ImGui::GetTextLineHeightWithSpacing() + 2.0f;
+  const float height = float(std::min(rows, most_rows) + 1) * row_h + 6.0f;
+  if (!ImGui::BeginTable(id, columns, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersOuter,
+                         ImVec2(0.0f, height)))
+    return false;
+  ImGui::TableSetupScrollFreeze(0, 1);
+  return true;
+}
+
+void drawSplit(AppState& state) {
+  const bool voxel_model = state.doc.mesh == nullptr;
+  if (voxel_model) {
+    int c = state.parts_ui.connectivity == Connectivity::kFace ? 6 : 26;
+    ImGui::RadioButton("6-connected", &c, 6);
+    ImGui::SameLine();
+    ImGui::RadioButton("26-connected", &c, 26);
+    state.parts_ui.connectivity = c == 6 ? Connectivity::kFace : Connectivity::kAll;
+  }
+  ImGui::BeginDisabled(!actionEnabled(state, action(ActionId::kSplitBodies)));
+  if (ImGui::Button(voxel_model ? "Split into connected components" : "Split into bodies")) {
+    dispatchValues(state, ActionId::kSplitBodies,
+                   {voxel_model && state.parts_ui.connectivity == Connectivity::kAll ? "26" : "6"});
+  }
+  markWidget("split_bodies");
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!actionEnabled(state, action(ActionId::kAddPart)));
+  if (ImGui::Button("Add part from file...")) dispatch(state, ActionId::kAddPart);
+  ImGui::EndDisabled();
+}
+
+void drawPartRow(AppState& state, const Assembly& parts, size_t i, int64_t voxels) {
+  const Part& p = parts.part(i);
+  const PartsUi& ui = state.parts_ui;
+  const bool selected = std::find(ui.selected.begin(), ui.selected.end(), i) != ui.selected.end();
+  ImGui::TableNextRow();
+  ImGui::PushID(int(i));
+  ImGui::TableSetColumnIndex(0);
+  ImGui::ColorButton("##colour", ImVec4(p.colour.x, p.colour.y, p.colour.z, 1.0f), ImGuiColorEditFlags_NoTooltip,
+                     ImVec2(ImGui::GetFrameHeight() * 0.8f, ImGui::GetFrameHeight() * 0.8f));
+  ImGui::SameLine();
+  bool visible = p.visible;
+  if (ImGui::Checkbox("##visible", &visible)) {
+    dispatchValues(state, ActionId::kPartVisible, {std::to_string(i + 1), visible ? "on" : "off"});
+  }
+  ImGui::TableSetColumnIndex(1);
+  const std::string label = std::to_string(i + 1) + "  " + p.name;
+  if (ImGui::Selectable(label.c_str(), selected, ImGuiSelectableFlags_SpanAllColumns)) {
+    if (ImGui::GetIO().KeyCtrl) {
+      selectPart(state, i, true);
+    } else {
+      dispatchValues(state, ActionId::kSelectPart, {std::to_string(i + 1)});
+    }
+  }
+  ImGui::TableSetColumnIndex(2);
+  ImGui::TextUnformatted(volumeText(voxels, parts.lattice().voxel_size, parts.lattice().units).c_str());
+  ImGui::PopID();
+}
+
+void drawPartList(AppState& state, const Assembly& parts) {
+  const std::vector<int64_t>& counts = partVoxelCounts(state);
+  ImGui::TextWrapped("%s on one lattice (voxel %s). Click to select; Ctrl+click adds.",
+                     countOf(int64_t(parts.size()), "part").c_str(),
+                     formatLength(parts.lattice().voxel_size, parts.lattice().units).c_str());
+  if (!beginList("parts", 3, int(parts.size()), 10)) return;
+  ImGui::TableSetupColumn("Show", ImGuiTableColumnFlags_WidthFixed, 58.0f);
+  ImGui::TableSetupColumn("Part");
+  ImGui::TableSetupColumn(("Volume, " + unitsLabel(parts.lattice().units) + "^3").c_str(),
+                          ImGuiTableColumnFlags_WidthFixed, 110.0f);
+  ImGui::TableHeadersRow();
+  ImGuiListClipper clipper;
+  clipper.Begin(int(parts.size()));
+  while (clipper.Step()) {
+    for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+      drawPartRow(state, parts, size_t(i), size_t(i) < counts.size() ? counts[size_t(i)] : 0);
+    }
+  }
+  ImGui::EndTable();
+  markWidget("part_list");
+}
+
+void drawPartOperations(AppState& state, const Assembly& parts) {
+  PartsUi& ui = state.parts_ui;
+  int scope = ui.scope_selected ? 1 : 0;
+  ImGui::TextUnformatted("Section, X-ray, mass on:");
+  ImGui::SameLine();
+  if (ImGui::RadioButton("all parts", &scope, 0)) dispatchValues(state, ActionId::kPartsScope, {"union"});
+  ImGui::SameLine();
+  if (ImGui::RadioButton("selected part", &scope, 1)) dispatchValues(state, ActionId::kPartsScope, {"selected"});
+
+  const char* ops[] = {"union", "intersection", "difference", "xor"};
+  int op = int(ui.op);
+  ImGui::SetNextItemWidth(120.0f);
+  if (ImGui::Combo("##op", &op, ops, 4)) ui.op = PartOp(op);
+  ImGui::SameLine();
+  ImGui::BeginDisabled(ui.selected.size() < 2);
+  if (ImGui::Button("Boolean of the two selected")) dispatchValues(state, ActionId::kPartBoolean, {ops[op]});
+  markWidget("part_boolean");
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && ui.selected.size() >= 2) {
+    ImGui::SetTooltip("%s %s %s, as a new part", parts.part(ui.selected[0]).name.c_str(), ops[op],
+                      parts.part(ui.selected[1]).name.c_str());
+  }
+  ImGui::BeginDisabled(ui.selected.empty() || parts.size() < 2);
+  if (ImGui::Button("Remove the selected part")) dispatch(state, ActionId::kRemovePart);
+  ImGui::EndDisabled();
+}
+
+void drawPairList(AppState& state, const Assembly& parts, const Interference& inter) {
+  const std::string units = parts.lattice().units;
+  const double h = parts.lattice().voxel_size;
+  if (inter.pairs.empty()) {
+    ImGui::TextWrapped("No two parts share a voxel (%s compared voxel by voxel).",
+                       countOf(inter.candidate_pairs, "pair").c_str());
+    return;
+  }
+  ImGui::TextWrapped(
+      "%s share voxels (%s voxels in two or more parts, %s in three or more), found in %s. "
+      "Click one to see its overlap.",
+      countOf(int64_t(inter.pairs.size()), "pair").c_str(), groupDigits(inter.overlap_voxels).c_str(),
+      groupDigits(inter.multiple_overlap_voxels).c_str(), formatSeconds(state.parts_ui.interference_s).c_str());
+  const int rows = std::min(int(inter.pairs.size()), kMostPairs);
+  if (!beginList("pairs", 4, rows, 12)) return;
+  ImGui::TableSetupColumn("A");
+  ImGui::TableSetupColumn("B");
+  ImGui::TableSetupColumn("Voxels", ImGuiTableColumnFlags_WidthFixed, 64.0f);
+  ImGui::TableSetupColumn("Volume", ImGuiTableColumnFlags_WidthFixed, 70.0f);
+  ImGui::TableHeadersRow();
+  for (int i = 0; i < rows; ++i) {
+    const InterferencePair& p = inter.pairs[size_t(i)];
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::PushID(i);
+    const bool shown = state.parts_ui.pair == i;
+    if (ImGui::Selectable(parts.part(size_t(p.a)).name.c_str(), shown, ImGuiSelectableFlags_SpanAllColumns)) {
+      dispatchValues(state, ActionId::kInterferencePair, {std::to_string(shown ? 0 : i + 1)});
+    }
+    if (i == 0) markWidget("interference_first_pair");
+    ImGui::TableSetColumnIndex(1);
+    ImGui::TextUnformatted(parts.part(size_t(p.b)).name.c_str());
+    ImGui::TableSetColumnIndex(2);
+    ImGui::TextUnformatted(groupDigits(p.voxels).c_str());
+    ImGui::TableSetColumnIndex(3);
+    ImGui::TextUnformatted(volumeText(p.voxels, h, units).c_str());
+    ImGui::PopID();
+  }
+  ImGui::EndTable();
+}
+
+void drawInterference(AppState& state, const Assembly& parts) {
+  heading("Interference");
+  if (const Interference* inter = currentInterference(state)) {
+    drawPairList(state, parts, *inter);
+  } else if (state.interference_job.active()) {
+    ImGui::Text("Finding interference... %.1f s", nowSeconds() - state.job_started);
+  } else {
+    ImGui::TextWrapped("Which parts share voxels, how many, and where.");
+    if (ImGui::Button("Find interference")) dispatch(state, ActionId::kInterference);
+    markWidget("find_interference");
+  }
+}
+
+void drawProgress(AppState& state) {
+  ImGui::TextUnformatted(state.parts_job.label().c_str());
+  char overlay[48];
+  std::snprintf(overlay, sizeof overlay, "%.0f%%   %.1f s", state.parts_job.progress() * 100.0,
+                nowSeconds() - state.job_started);
+  ImGui::ProgressBar(float(state.parts_job.progress()), ImVec2(-1.0f, 0.0f), overlay);
+  if (ImGui::Button("Cancel##parts")) state.parts_job.cancel();
+}
+
+}  // namespace
+
+void drawPartsPanel(AppState& state) {
+  if (!state.doc.model) {
+    ImGui::TextWrapped("Open a mesh or voxel file, then split it into bodies or add parts from other files.");
+    return;
+  }
+  if (partsBusy(state)) drawProgress(state);
+  const Assembly* parts = currentParts(state);
+  if (!parts) {
+    ImGui::TextWrapped(state.doc.mesh ? "The model is one part. Split the mesh into its bodies (shells), each "
+                                        "voxelized on this lattice, or add a part from another file."
+                                      : "The model is one part. Split it into its connected components, or add a "
+                                        "part from another file on the same lattice.");
+    drawSplit(state);
+    return;
+  }
+  drawSplit(state);
+  drawPartList(state, *parts);
+  drawPartOperations(state, *parts);
+  drawInterference(state, *parts);
+}
+
+}  // namespace vox::app

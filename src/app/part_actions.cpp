@@ -1,0 +1,147 @@
+// The Parts entries of the action table (actions.cpp): splitting into bodies, adding a part, Booleans, removing,
+// selecting and showing parts, and the interference list. Part numbers in scripts count from 1, as the panel shows.
+#include <algorithm>
+#include <utility>
+
+#include "app/action_functions.h"
+#include "app/operations.h"
+#include "app/parts.h"
+#include "vox/core/text.h"
+
+namespace vox::app::actions {
+namespace {
+
+Error badValues(std::string message) { return makeError(ErrorCode::kInvalidArgument, std::move(message)); }
+
+// A part number from 1 (as the panel lists them) to an index.
+Result<size_t> partIndex(const AppState& s, const std::string& word) {
+  const Assembly* parts = currentParts(s);
+  int64_t n = 0;
+  if (!parts || !parseNumber(word, n) || n < 1 || n > int64_t(parts->size())) {
+    return badValues("part numbers go from 1 to " + std::to_string(parts ? parts->size() : 0) + ", not '" + word + "'");
+  }
+  return size_t(n - 1);
+}
+
+void showParts(AppState& s) {
+  s.panel = Panel::kParts;
+  s.panel_change_requested = true;
+}
+
+}  // namespace
+
+bool hasParts(const AppState& s) { return currentParts(s) != nullptr && !partsBusy(s) && !modelBusy(s); }
+bool canSplit(const AppState& s) {
+  return s.doc.model.has_value() && !currentParts(s) && !partsBusy(s) && !modelBusy(s);
+}
+bool canAddPart(const AppState& s) { return !partsBusy(s) && !modelBusy(s); }
+bool hasInterference(const AppState& s) { return currentInterference(s) != nullptr; }
+
+void panelParts(AppState& s) { showParts(s); }
+bool onParts(const AppState& s) { return s.panel == Panel::kParts; }
+
+void splitBodies(AppState& s) {
+  startSplitBodies(s);
+  showParts(s);
+}
+
+Status splitBodiesWith(AppState& s, const ActionArgs& a) {
+  if (a.words[0] == "6") {
+    s.parts_ui.connectivity = Connectivity::kFace;
+  } else if (a.words[0] == "26") {
+    s.parts_ui.connectivity = Connectivity::kAll;
+  } else {
+    return badValues("split-bodies takes 6 or 26 (face or full connectivity), not '" + a.words[0] + "'");
+  }
+  splitBodies(s);
+  return Ok{};
+}
+
+void addPartDialog(AppState& s) { openBrowser(s, BrowserPurpose::kAddPart); }
+Status addPartPath(AppState& s, const ActionArgs& a) {
+  acceptBrowserPath(s, BrowserPurpose::kAddPart, a.rest);
+  showParts(s);
+  return Ok{};
+}
+
+void booleanSelected(AppState& s) {
+  if (s.parts_ui.selected.size() < 2) {
+    reportError(s, "select two parts for a Boolean (Ctrl+click the second)");
+    return;
+  }
+  if (Status r = partBoolean(s, s.parts_ui.op, s.parts_ui.selected[0], s.parts_ui.selected[1]); !r) {
+    reportError(s, r.error().message);
+  }
+}
+
+Status booleanWith(AppState& s, const ActionArgs& a) {
+  const auto op = parsePartOp(a.words[0]);
+  if (!op) return badValues("unknown Boolean '" + a.words[0] + "' (union, intersection, difference or xor)");
+  s.parts_ui.op = *op;
+  if (a.words.size() == 1) {
+    booleanSelected(s);
+    return Ok{};
+  }
+  if (a.words.size() != 3) return badValues("part-boolean takes OP, or OP A B");
+  auto i = partIndex(s, a.words[1]);
+  if (!i) return i.error();
+  auto j = partIndex(s, a.words[2]);
+  if (!j) return j.error();
+  return partBoolean(s, *op, *i, *j);
+}
+
+void removeSelected(AppState& s) {
+  if (s.parts_ui.selected.empty()) return;
+  if (Status r = removePart(s, s.parts_ui.selected.front()); !r) reportError(s, r.error().message);
+}
+
+Status removeAt(AppState& s, const ActionArgs& a) {
+  auto i = partIndex(s, a.words[0]);
+  if (!i) return i.error();
+  return removePart(s, *i);
+}
+
+void findInterferenceNow(AppState& s) {
+  startInterference(s);
+  showParts(s);
+}
+
+Status showPairAt(AppState& s, const ActionArgs& a) {
+  const Interference* inter = currentInterference(s);
+  int64_t n = 0;
+  if (!parseNumber(a.words[0], n) || n < 0 || n > int64_t(inter->pairs.size())) {
+    return badValues("interference pairs go from 1 to " + std::to_string(inter->pairs.size()) + " (0: none)");
+  }
+  showInterferencePair(s, int32_t(n) - 1);
+  showParts(s);
+  return Ok{};
+}
+
+Status selectPartsAt(AppState& s, const ActionArgs& a) {
+  std::vector<size_t> chosen;
+  for (const std::string& w : a.words) {
+    auto i = partIndex(s, w);
+    if (!i) return i.error();
+    chosen.push_back(*i);
+  }
+  for (size_t k = 0; k < chosen.size(); ++k) selectPart(s, chosen[k], k > 0);
+  return Ok{};
+}
+
+Status partVisibleAt(AppState& s, const ActionArgs& a) {
+  auto i = partIndex(s, a.words[0]);
+  if (!i) return i.error();
+  if (a.words[1] != "on" && a.words[1] != "off") return badValues("part-visible takes N on|off");
+  setPartVisible(s, *i, a.words[1] == "on");
+  return Ok{};
+}
+
+Status partsScopeAt(AppState& s, const ActionArgs& a) {
+  if (a.words[0] != "union" && a.words[0] != "selected") {
+    return badValues("parts-scope takes union or selected, not '" + a.words[0] + "'");
+  }
+  setPartsScope(s, a.words[0] == "selected");
+  return Ok{};
+}
+
+}  // namespace vox::app::actions

@@ -1,0 +1,302 @@
+#include "app/parts.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "app/document.h"
+#include "app/messages.h"
+#include "app/model_jobs.h"
+#include "app/update.h"
+#include "vox/core/grid_placement.h"
+#include "vox/io/mesh_file.h"
+#include "vox/io/stl.h"
+#include "vox/io/voxel_file.h"
+#include "vox/voxelize/bodies.h"
+
+namespace vox::app {
+namespace {
+
+using PartsResult = Result<std::shared_ptr<const Assembly>>;
+
+// A voxel model with more components than this keeps the largest ones as parts and gathers the rest (loose islands,
+// stray voxels) into one part, so a noisy scan does not become thousands of parts.
+constexpr size_t kMaxComponentParts = 200;
+
+Error partsError(std::string message) { return makeError(ErrorCode::kInvalidArgument, std::move(message)); }
+
+// A new model state holding `parts`: the union as the model, a new base (the skin layers of the union).
+void commitParts(AppState& state, std::shared_ptr<const Assembly> parts, const std::string& label) {
+  auto origin = std::make_shared<ModelOrigin>();
+  const ModelOrigin* prev = state.doc.model ? state.doc.model->origin.get() : nullptr;
+  origin->what = std::to_string(parts->size()) + (parts->size() == 1 ? " part" : " parts") + " on one lattice";
+  origin->resolution = prev ? prev->resolution : 0;
+  ModelSnapshot snap = newBase(state, partsUnion(*parts), std::move(origin), label);
+  snap.parts = std::move(parts);
+  state.parts_ui.selected.clear();
+  setModel(state, std::move(snap), true);
+}
+
+// The current model as an assembly of one part (a document that is not a scene yet), or the current parts.
+Assembly sceneOfModel(const AppState& state) {
+  if (const Assembly* a = currentParts(state)) return *a;
+  Assembly scene;
+  if (!state.doc.model) return scene;
+  const VoxelGrid& g = state.doc.model->grid;
+  std::string name = state.doc.path.empty() ? "model" : state.doc.path.filename().string();
+  (void)scene.addGrid(g, name);  // the first grid sets the lattice: cannot fail
+  return scene;
+}
+
+// The bodies of a mesh, each voxelized on the lattice of `model` (the mesh's own grid, as shown).
+PartsResult splitMesh(const TriangleMesh& mesh, VoxelizeParams params, const VoxelGrid& model,
+                      const ProgressFn& progress) {
+  params.placement = placeGridOnLattice(model.frame(), glm::ivec3(0), model.dims());
+  params.units = model.frame().units;
+  auto bodies = voxelizeBodies(mesh, params, progress);
+  if (!bodies) return bodies.error();
+  auto scene = std::make_shared<Assembly>(bodies->lattice);
+  for (size_t i = 0; i < bodies->bodies.size(); ++i) {
+    BodyVoxels& b = bodies->bodies[i];
+    if (b.filled == 0) continue;  // a body too thin for this lattice has no voxels to show
+    const size_t k = scene->addPart(std::move(b.voxels), "body " + std::to_string(i));
+    scene->part(k).colour = partColour(k);
+  }
+  if (scene->size() == 0) return partsError("no body of the mesh has a voxel at this resolution");
+  return std::shared_ptr<const Assembly>(std::move(scene));
+}
+
+// The connected components of a voxel model, largest first.
+PartsResult splitComponents(const VoxelGrid& model, Connectivity connectivity) {
+  const Components comps = findComponents(model, connectivity);
+  if (comps.components.empty()) return partsError("the model has no voxels to split");
+  const Lattice lattice = latticeOf(model.frame());
+  auto scene = std::make_shared<Assembly>(lattice);
+  const size_t kept = std::min(comps.components.size(), kMaxComponentParts);
+  LatticeGrid taken{VoxelGrid(model.dims(), model.frame()), glm::ivec3(0)};
+  for (size_t i = 0; i < kept; ++i) {
+    const Component& c = comps.components[i];
+    LatticeGrid whole{componentGrid(model, comps, i), glm::ivec3(0)};
+    if (kept < comps.components.size()) taken = booleanParts(taken, whole, PartOp::kUnion, lattice);
+    LatticeGrid part = reframe(whole, Box3i{c.box_min, c.box_max + 1}, lattice);
+    const size_t k = scene->addPart(std::move(part), "component " + std::to_string(i + 1));
+    scene->part(k).colour = partColour(k);
+  }
+  if (kept < comps.components.size()) {
+    LatticeGrid rest = booleanParts(LatticeGrid{model, glm::ivec3(0)}, taken, PartOp::kDifference, lattice);
+    const Box3i box = filledBox(rest);
+    const size_t k = scene->addPart(reframe(rest, box, lattice),
+                                    std::to_string(comps.components.size() - kept) + " smaller components");
+    scene->part(k).colour = partColour(k);
+  }
+  return std::shared_ptr<const Assembly>(std::move(scene));
+}
+
+// A file added to `scene` as a part: a voxel file on the scene's lattice, a mesh voxelized on it.
+PartsResult addFile(Assembly scene, const std::filesystem::path& path, VoxelizeParams params,
+                    const ProgressFn& progress) {
+  const std::string name = path.filename().string();
+  if (io::isVoxelFile(path)) {
+    auto grid = io::loadVoxelFile(path);
+    if (!grid) return grid.error();
+    auto added = scene.addGrid(std::move(grid).value(), name);
+    if (!added) return added.error();
+    scene.part(*added).colour = partColour(*added);
+    return std::shared_ptr<const Assembly>(std::make_shared<Assembly>(std::move(scene)));
+  }
+  // Any mesh or CAD file (io::loadMeshFile); a CAD file is tessellated for the scene's voxel size.
+  io::MeshFileOptions options;
+  options.resolution = params.resolution;
+  options.voxel_size = scene.hasLattice() ? scene.lattice().voxel_size : params.voxel_size;
+  options.progress = progress;
+  auto stl = io::loadMeshFile(path, options);
+  if (!stl) return stl.error();
+  if (scene.hasLattice()) {
+    auto placement = placeBoundsOnLattice(scene.lattice().frameAt(glm::ivec3(0)), stl->mesh.bounds());
+    if (!placement) return makeError(placement.error().code, name + ": " + placement.error().message);
+    params.placement = *placement;
+    params.units = scene.lattice().units;
+  }
+  auto r = voxelizeSolid(stl->mesh, params, progress);
+  if (!r) return makeError(r.error().code, name + ": " + r.error().message);
+  if (!scene.hasLattice()) {
+    auto added = scene.addGrid(std::move(r->grid), name);
+    if (!added) return added.error();
+  } else {
+    scene.addPart(LatticeGrid{std::move(r->grid), params.placement->first}, name);
+  }
+  scene.part(scene.size() - 1).colour = partColour(scene.size() - 1);
+  return std::shared_ptr<const Assembly>(std::make_shared<Assembly>(std::move(scene)));
+}
+
+void startPartsJob(AppState& state, const std::string& label, std::string undo_label,
+                   Job<std::shared_ptr<const Assembly>>::Work work) {
+  state.parts_job_label = std::move(undo_label);
+  state.job_started = nowSeconds();
+  state.parts_job.start(label, std::move(work));
+}
+
+}  // namespace
+
+const Assembly* currentParts(const AppState& state) {
+  return state.doc.model && state.doc.model->parts ? state.doc.model->parts.get() : nullptr;
+}
+
+bool partsBusy(const AppState& state) { return state.parts_job.active(); }
+
+void startSplitBodies(AppState& state) {
+  if (!state.doc.model || currentParts(state)) return;
+  const VoxelGrid model = state.doc.model->base;
+  if (state.doc.mesh) {
+    auto mesh = state.doc.mesh;
+    VoxelizeParams params = state.voxelize_job_params;
+    startPartsJob(
+        state, "Splitting into bodies", "split into bodies",
+        [mesh, params, model](const ProgressFn& progress) { return splitMesh(mesh->mesh, params, model, progress); });
+  } else {
+    const Connectivity c = state.parts_ui.connectivity;
+    startPartsJob(state, "Finding connected components", "split into components",
+                  [model, c](const ProgressFn&) { return splitComponents(model, c); });
+  }
+}
+
+void startAddPart(AppState& state, const std::filesystem::path& path) {
+  Assembly scene = sceneOfModel(state);
+  VoxelizeParams params = state.voxelize_job_params;
+  startPartsJob(state, "Adding " + path.filename().string(), "add part " + path.filename().string(),
+                [scene = std::move(scene), path, params](const ProgressFn& progress) {
+                  return addFile(scene, path, params, progress);
+                });
+}
+
+Status partBoolean(AppState& state, PartOp op, size_t a, size_t b) {
+  const Assembly* parts = currentParts(state);
+  if (!parts) return partsError("there are no parts: split the model into bodies or add a part first");
+  if (a >= parts->size() || b >= parts->size()) {
+    return partsError("part numbers go from 1 to " + std::to_string(parts->size()));
+  }
+  if (a == b) return partsError("a Boolean needs two different parts");
+  auto scene = std::make_shared<Assembly>(*parts);
+  LatticeGrid r = booleanParts(scene->placedVoxels(a), scene->placedVoxels(b), op, scene->lattice());
+  const Box3i box = filledBox(r);
+  if (!box.empty()) r = reframe(r, box, scene->lattice());
+  const std::string name = scene->part(a).name + " " + partOpName(op) + " " + scene->part(b).name;
+  const size_t k = scene->addPart(std::move(r), name);
+  scene->part(k).colour = partColour(k);
+  commitParts(state, std::move(scene), partOpName(op) + std::string(" of two parts"));
+  state.parts_ui.selected = {k};
+  return Ok{};
+}
+
+Status removePart(AppState& state, size_t i) {
+  const Assembly* parts = currentParts(state);
+  if (!parts) return partsError("there are no parts to remove");
+  if (i >= parts->size()) return partsError("part numbers go from 1 to " + std::to_string(parts->size()));
+  if (parts->size() == 1) return partsError("the last part stays (close the document instead)");
+  auto scene = std::make_shared<Assembly>(*parts);
+  const std::string name = scene->part(i).name;
+  scene->removePart(i);
+  commitParts(state, std::move(scene), "remove " + name);
+  return Ok{};
+}
+
+void setPartVisible(AppState& state, size_t i, bool visible) {
+  const Assembly* parts = currentParts(state);
+  if (!parts || i >= parts->size() || parts->part(i).visible == visible) return;
+  // Visibility is how the scene is shown, not the model: the same state, edited in place (undo keeps it).
+  auto scene = std::make_shared<Assembly>(*parts);
+  scene->part(i).visible = visible;
+  state.doc.model->parts = std::move(scene);
+  state.viewport.dirty = true;
+}
+
+void selectPart(AppState& state, size_t i, bool additive) {
+  std::vector<size_t>& sel = state.parts_ui.selected;
+  if (!additive) {
+    sel = {i};
+  } else if (auto it = std::find(sel.begin(), sel.end(), i); it != sel.end()) {
+    sel.erase(it);
+  } else {
+    sel.push_back(i);
+  }
+  state.viewport.dirty = true;
+  if (state.parts_ui.scope_selected) applyPartsScope(state);
+}
+
+void setPartsScope(AppState& state, bool selected) {
+  state.parts_ui.scope_selected = selected;
+  applyPartsScope(state);
+}
+
+void applyPartsScope(AppState& state) {
+  if (!state.doc.model) return;
+  const Assembly* parts = currentParts(state);
+  PartsUi& ui = state.parts_ui;
+  if (parts) std::erase_if(ui.selected, [&](size_t i) { return i >= parts->size(); });
+  if (ui.interference_version != state.doc.model->version) {
+    ui.pair = -1;
+    ui.pair_key = 0;
+    ui.pair_overlap = VoxelGrid{};
+  }
+  if (parts && ui.scope_selected && !ui.selected.empty()) {
+    state.model = partOnExtent(*parts, ui.selected.front());
+    state.model_version = takeId(state);
+  } else {
+    state.model = state.doc.model->grid;
+    state.model_version = state.doc.model->version;
+  }
+  state.viewport.dirty = true;
+}
+
+void updateParts(AppState& state) {
+  if (auto r = state.parts_job.take()) {
+    if (r->ok()) {
+      commitParts(state, std::move(*r).value(), state.parts_job_label);
+      state.panel = Panel::kParts;
+      state.panel_change_requested = true;
+    } else if (r->error().code != ErrorCode::kCancelled) {
+      reportError(state, r->error().message, state.doc.path);
+    }
+  }
+  if (auto r = state.interference_job.take()) {
+    if (!r->ok()) {
+      if (r->error().code != ErrorCode::kCancelled) reportError(state, r->error().message);
+    } else if (state.doc.model && state.interference_job_version == state.doc.model->version) {
+      state.parts_ui.interference = std::move(*r).value();
+      state.parts_ui.interference_version = state.interference_job_version;
+      state.parts_ui.interference_s = nowSeconds() - state.job_started;
+      state.parts_ui.pair = -1;
+    }
+  }
+}
+
+const std::vector<int64_t>& partVoxelCounts(AppState& state) {
+  PartsUi& ui = state.parts_ui;
+  const Assembly* parts = currentParts(state);
+  const uint64_t version = parts ? state.doc.model->version : 0;
+  if (ui.counts_version != version) {
+    ui.voxel_counts.clear();
+    if (parts) {
+      for (const Part& p : parts->parts()) ui.voxel_counts.push_back(p.voxels.grid.filledCount());
+    }
+    ui.counts_version = version;
+  }
+  return ui.voxel_counts;
+}
+
+VoxelGrid partsUnion(const Assembly& parts) {
+  const Box3i ext = parts.extent();
+  const glm::ivec3 size = ext.size();
+  const Lattice& lattice = parts.lattice();
+  LatticeGrid acc{VoxelGrid(Dims{size.x, size.y, size.z}), ext.min};
+  for (size_t i = 0; i < parts.size(); ++i) acc = booleanParts(acc, parts.placedVoxels(i), PartOp::kUnion, lattice);
+  acc.grid.frame() = lattice.frameAt(ext.min);
+  return std::move(acc.grid);
+}
+
+VoxelGrid partOnExtent(const Assembly& parts, size_t i) {
+  LatticeGrid g = reframe(parts.placedVoxels(i), parts.extent(), parts.lattice());
+  g.grid.frame() = parts.lattice().frameAt(parts.extent().min);
+  return std::move(g.grid);
+}
+
+}  // namespace vox::app

@@ -1,0 +1,94 @@
+// The interference of the parts (vox/analysis/assembly.h, findInterference) for the Parts panel: found on a worker,
+// one pair shown at a time: its shared voxels become a grid on the model's frame (drawn in red over the parts and
+// in the section), the section moves through the overlap's centre and the camera turns to it.
+#include <algorithm>
+#include <utility>
+
+#include "app/document.h"
+#include "app/parts.h"
+#include "app/update.h"
+#include "vox/io/figure.h"
+
+namespace vox::app {
+
+void startInterference(AppState& state) {
+  const Assembly* parts = currentParts(state);
+  if (!parts) return;
+  const uint64_t version = state.doc.model->version;
+  if (state.parts_ui.interference_version == version && state.parts_ui.interference) return;
+  if (state.interference_job.active() && state.interference_job_version == version) return;
+  std::vector<LatticeGrid> placed = parts->placedParts();
+  const Lattice lattice = parts->lattice();
+  state.interference_job_version = version;
+  state.interference_job.start("Finding interference", [placed = std::move(placed), lattice](const ProgressFn&) {
+    return Result<Interference>(findInterference(placed, lattice));
+  });
+  state.job_started = nowSeconds();
+}
+
+const Interference* currentInterference(const AppState& state) {
+  const PartsUi& ui = state.parts_ui;
+  if (!state.doc.model || !ui.interference || ui.interference_version != state.doc.model->version) return nullptr;
+  return &*ui.interference;
+}
+
+void showInterferencePair(AppState& state, int32_t i) {
+  PartsUi& ui = state.parts_ui;
+  const Assembly* parts = currentParts(state);
+  const Interference* inter = currentInterference(state);
+  state.section_texture.reset();  // the section picture shows the overlap in red: drawn again
+  state.viewport.dirty = true;
+  if (!parts || !inter || i < 0 || i >= int32_t(inter->pairs.size())) {
+    ui.pair = -1;
+    ui.pair_key = 0;
+    ui.pair_overlap = VoxelGrid{};
+    return;
+  }
+  const InterferencePair& p = inter->pairs[size_t(i)];
+  const Lattice& lattice = parts->lattice();
+  const Box3i ext = parts->extent();
+  LatticeGrid shared = sharedVoxels(parts->placedVoxels(size_t(p.a)), parts->placedVoxels(size_t(p.b)), lattice);
+  LatticeGrid on_model = reframe(shared, ext, lattice);
+  on_model.grid.frame() = lattice.frameAt(ext.min);
+  ui.pair = i;
+  ui.pair_overlap = std::move(on_model.grid);
+  ui.pair_key = takeId(state);
+  ui.selected = {size_t(p.a), size_t(p.b)};
+  if (ui.scope_selected) applyPartsScope(state);
+  // The section through the overlap's middle voxel along the section's axis, and the camera on the overlap.
+  const glm::ivec3 middle = (p.box.min + p.box.max - 1) / 2 - ext.min;
+  const int a = int(state.section.axis);
+  state.section.index = std::clamp(middle[a], 0, std::max(axisLength(state, state.section.axis) - 1, 0));
+  const glm::ivec3 size = p.box.size();
+  const double extent = double(std::max({size.x, size.y, size.z}));
+  state.view.camera.target = glm::dvec3(middle) + 0.5;
+  state.view.camera.distance = std::min(state.view.camera.distance, std::max(40.0, 6.0 * extent));
+  state.view.fit_pending = false;
+}
+
+std::string interferencePairText(const AppState& state) {
+  const Assembly* parts = currentParts(state);
+  const Interference* inter = currentInterference(state);
+  const int32_t i = state.parts_ui.pair;
+  if (!parts || !inter || i < 0 || i >= int32_t(inter->pairs.size())) return {};
+  const InterferencePair& p = inter->pairs[size_t(i)];
+  return "Overlap of " + parts->part(size_t(p.a)).name + " and " + parts->part(size_t(p.b)).name + ": " +
+         std::to_string(p.voxels) + " voxels, in red through the parts";
+}
+
+ImageRgb partsSectionPicture(const AppState& state, const Section& section) {
+  ImageRgb picture = io::sectionPicture(section.mask, 1);
+  const PartsUi& ui = state.parts_ui;
+  if (ui.pair < 0 || ui.pair_overlap.empty() || ui.pair_overlap.dims() != state.model.dims()) return picture;
+  auto overlap = computeSection(ui.pair_overlap, SectionParams{section.axis, section.index});
+  if (!overlap) return picture;
+  const Image2D<uint8_t>& m = overlap->mask;
+  for (int32_t y = 0; y < m.height; ++y) {
+    for (int32_t x = 0; x < m.width; ++x) {
+      if (m.at(x, y)) picture.at(x, y) = Rgb8{235, 40, 40};
+    }
+  }
+  return picture;
+}
+
+}  // namespace vox::app
