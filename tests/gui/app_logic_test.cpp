@@ -230,7 +230,9 @@ TEST(AppActions, everyActionIsInTheTableOnceAndShortcutsAreUnique) {
 // Pumps the per-frame update until `done` holds (the workers run in the background).
 template <class F>
 bool pump(AppState& state, F done) {
-  for (int i = 0; i < 4000; ++i) {
+  // A deadline, not a count of frames: under the thread sanitizer a large file takes many times longer to open.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (std::chrono::steady_clock::now() < deadline) {
     updateDocument(state);
     if (done()) return true;
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
