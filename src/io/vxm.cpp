@@ -51,15 +51,7 @@ Status encodeVxmTo(const VoxelGrid& grid, ByteSink& sink) {
 Status checkVxmFile(std::span<const uint8_t> bytes, const VxmHeader& h, const std::string& name) {
   const uint8_t* b = bytes.data();
   const size_t size = bytes.size();
-  const uint64_t expected = uint64_t(h.header_bytes) + h.body_bytes + 4;
-  if (h.body_bytes > size || size < expected) {
-    return makeError(ErrorCode::kParse, name + ": .vxm file truncated: expected " + std::to_string(expected) +
-                                            " bytes but the file has " + std::to_string(size));
-  }
-  if (size > expected) {
-    return makeError(ErrorCode::kCorrupt,
-                     name + ": .vxm file has " + std::to_string(size - expected) + " unexpected bytes after its end");
-  }
+  if (Status s = vxm_detail::checkVxmLength(size, h, name); !s) return s;
   const uint32_t stored = loadLE<uint32_t>(b + size - 4);
   const uint32_t computed = crc32Of(b, size - 4);
   if (stored != computed) {
@@ -154,6 +146,20 @@ void unpaddedRow(const VoxelGrid& grid, int32_t y, int32_t z, std::vector<uint64
 
 // The header: magic and version, then the fields under their own CRC, so that a truncated body is told apart
 // from a damaged header.
+// A file of `size` bytes holds exactly the header, the body and the CRC the header describes.
+Status checkVxmLength(uint64_t size, const VxmHeader& h, const std::string& name) {
+  const uint64_t expected = uint64_t(h.header_bytes) + h.body_bytes + 4;
+  if (h.body_bytes > size || size < expected) {
+    return makeError(ErrorCode::kParse, name + ": .vxm file truncated: expected " + std::to_string(expected) +
+                                            " bytes but the file has " + std::to_string(size));
+  }
+  if (size > expected) {
+    return makeError(ErrorCode::kCorrupt,
+                     name + ": .vxm file has " + std::to_string(size - expected) + " unexpected bytes after its end");
+  }
+  return Ok{};
+}
+
 Result<VxmHeader> parseVxmHeader(std::span<const uint8_t> bytes, const std::string& name) {
   const uint8_t* b = bytes.data();
   const size_t size = bytes.size();

@@ -86,6 +86,9 @@ inline bool readVarint(const uint8_t*& p, const uint8_t* end, uint64_t& v) {
 // from a damaged header. `bytes` is the file, or at least its first kVxmMaxHeaderBytes bytes (a longer file is
 // only checked for being long enough to hold the header).
 Result<VxmHeader> parseVxmHeader(std::span<const uint8_t> bytes, const std::string& name);
+// A file of `size` bytes holds exactly the header, the body and the CRC the header describes (truncated, or bytes
+// after its end, otherwise).
+Status checkVxmLength(uint64_t size, const VxmHeader& h, const std::string& name);
 inline constexpr size_t kVxmMaxHeaderBytes = kVxmFixedBytes + 8 + 2 * 0xFFFF;
 
 // Voxel bits of row (y, z) as unpadded words: bit b of word w is voxel x = 64 w + b. Bits past nx are zero.

@@ -191,15 +191,7 @@ Result<VxmHeader> readHeader(ChunkedFile& file, const std::string& name) {
 // loadVxm's checks of the file's length and CRC, over the file in chunks.
 Status checkLengthAndCrc(ChunkedFile& file, const VxmHeader& h, const std::string& name, bool check_crc) {
   const uint64_t size = file.size();
-  const uint64_t expected = uint64_t(h.header_bytes) + h.body_bytes + 4;
-  if (h.body_bytes > size || size < expected) {
-    return makeError(ErrorCode::kParse, name + ": .vxm file truncated: expected " + std::to_string(expected) +
-                                            " bytes but the file has " + std::to_string(size));
-  }
-  if (size > expected) {
-    return makeError(ErrorCode::kCorrupt,
-                     name + ": .vxm file has " + std::to_string(size - expected) + " unexpected bytes after its end");
-  }
+  if (Status s = checkVxmLength(size, h, name); !s) return s;
   if (!check_crc) return Ok{};
   uint32_t crc = 0;
   std::vector<uint8_t> chunk;
