@@ -5,7 +5,8 @@
 // (each solid carries its instance's location), so every placed part is its own solid.
 //
 // Open CASCADE reads a truncated STEP file only as far as it goes and may keep what it parsed, so voxmod checks the
-// end markers itself first: a STEP file must end with END-ISO-10303-21, an IGES file with its Terminate record. A file
+// end markers itself first: a STEP file must end with END-ISO-10303-21 (io/step_check.h, which also refuses an entity
+// name defined twice before Open CASCADE's quadratic search for it), an IGES file with its Terminate record. A file
 // whose load leaves errors in the reader's check list (a syntax error, a reference to an entity of the wrong type) is
 // refused too: the transfer would keep what it could, and on a dangling reference Open CASCADE 7.6 crashes (found by
 // tests/fuzz/fuzz_mesh_file.cpp). The real files of ../shared/meshes/cad load without one.
@@ -38,6 +39,7 @@
 
 #include "io/cad_model_impl.h"
 #include "io/occt_support.h"
+#include "io/step_check.h"
 #include "vox/core/text.h"
 #include "vox/core/units.h"
 #include "vox/io/file_util.h"
@@ -65,16 +67,6 @@ double metresPerFileUnit(const std::string& name) {
 }
 
 bool isBlank(uint8_t c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t' || c == '\0' || c == 0x1a; }
-
-// A STEP file ends with "END-ISO-10303-21;" (ISO 10303-21, section 5), perhaps followed by blank space.
-Status checkStepComplete(std::span<const uint8_t> bytes, const std::string& name) {
-  size_t end = bytes.size();
-  while (end > 0 && isBlank(bytes[end - 1])) --end;
-  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), end);
-  const std::string_view marker = "END-ISO-10303-21;";
-  if (text.size() >= marker.size() && text.substr(text.size() - marker.size()) == marker) return Ok{};
-  return makeError(ErrorCode::kParse, name + ": STEP file truncated: it does not end with 'END-ISO-10303-21;'");
-}
 
 // An IGES file ends with its Terminate record: 'T' in column 73 of the last line.
 Status checkIgesComplete(std::span<const uint8_t> bytes, const std::string& name) {
@@ -148,7 +140,7 @@ Status transfer(Reader& reader, const std::string& name, const char* format, con
 
 Status readStep(std::span<const uint8_t> bytes, const std::string& name, const ProgressFn& progress,
                 CadModel::Impl& out) {
-  if (Status s = checkStepComplete(bytes, name); !s.ok()) return s;
+  if (Status s = checkStep(bytes, name); !s.ok()) return s;
   occt::ReaderLock lock;
   Interface_Static::SetCVal("xstep.cascade.unit", "MM");
   STEPControl_Reader reader;

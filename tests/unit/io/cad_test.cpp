@@ -271,6 +271,66 @@ TEST(CadFile, truncatedAndBrokenFilesAreRefusedNamingTheFile) {
                                    ": IGES file truncated: its last line is not a Terminate record ('T' in column 73)");
 }
 
+// Line (1-based) of the first occurrence of what in text.
+size_t lineOf(const std::string& text, const std::string& what) {
+  const size_t at = text.find(what);
+  EXPECT_NE(at, std::string::npos) << what;
+  return size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(std::min(at, text.size())), '\n')) + 1;
+}
+
+TEST(CadFile, anEntityNameDefinedTwiceIsRefusedBeforeOpenCascadeSearchesForIt) {
+  test::TempDir tmp;
+  test::writeStep(tmp / "box.step", {{CadShape::kBox, {0, 0, 0}, {1, 1, 1}}});
+  const std::string step = test::readFile(tmp / "box.step");
+
+  // #1 defined again just before the end of the data section.
+  const size_t first = step.find("#1 =") != std::string::npos ? step.find("#1 =") : step.find("#1=");
+  ASSERT_NE(first, std::string::npos);
+  const std::string first_statement = step.substr(first, step.find(';', first) + 1 - first);
+  std::string twice = step;
+  twice.insert(twice.rfind("ENDSEC;"), first_statement + "\n");
+  test::writeFile(tmp / "twice.step", twice);
+  auto r = loadMeshFile(tmp / "twice.step");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().code, ErrorCode::kParse);
+  EXPECT_EQ(r.error().message, (tmp / "twice.step").string() + ":" +
+                                   std::to_string(lineOf(twice, "\n" + first_statement + "\nENDSEC;") + 1) +
+                                   ": malformed STEP file: entity #1 is defined a second time (first at line " +
+                                   std::to_string(lineOf(twice, first_statement)) + ")");
+
+  // The fuzzer's shape of it: one name twice and many references to names that do not exist. Open CASCADE alone
+  // searches the whole file for each of them (seconds per megabyte, growing with the square of the size).
+  std::string many =
+      "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((''),'2;1');\nFILE_NAME('','',(''),(''),'','','');\n"
+      "FILE_SCHEMA(('AUTOMOTIVE_DESIGN'));\nENDSEC;\nDATA;\n#1=A(#999999);\n";
+  for (int i = 1; i < 20000; ++i) {
+    many += "#" + std::to_string(i) + "=A(#" + std::to_string(900000 + i) + ");\n";
+  }
+  many += "ENDSEC;\nEND-ISO-10303-21;\n";
+  test::writeFile(tmp / "many.step", many);
+  r = loadMeshFile(tmp / "many.step");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().message, (tmp / "many.step").string() +
+                                   ":9: malformed STEP file: entity #1 is defined a second time (first at line 8)");
+}
+
+TEST(CadFile, namesInStringsAndCommentsAreNotDefinitions) {
+  test::TempDir tmp;
+  test::writeStep(tmp / "box.step", {{CadShape::kBox, {0, 0, 0}, {1, 1, 1}}});
+  std::string step = test::readFile(tmp / "box.step");
+  // A comment and a string that read like a second #1, and a string with an apostrophe and a ';' in it.
+  const size_t data = step.find("DATA;");
+  ASSERT_NE(data, std::string::npos);
+  step.insert(data + 5, "\n/* #1 = NOT_AN_ENTITY(); */\n");
+  const size_t description = step.find("FILE_DESCRIPTION(('");
+  ASSERT_NE(description, std::string::npos);
+  step.insert(description + 19, "it''s; #1 = not one either");
+  test::writeFile(tmp / "quoted.step", step);
+  const MeshFileLoad m = loadOk(tmp / "quoted.step");
+  EXPECT_EQ(m.bodies.size(), 1u);
+  EXPECT_FALSE(m.mesh.triangles.empty());
+}
+
 TEST(CadFile, bytesInMemoryReadAsTheFileDoes) {
   test::TempDir tmp;
   test::writeStep(tmp / "c.step", {{CadShape::kCylinder, {0, 0, 0}, {3, 0, 4}}});
