@@ -8,38 +8,16 @@ active in every filled voxel, with the minimum and maximum voxmod reports.
 usage: openvdb_volumes.py VOXMOD SOURCE_DIR WORK_DIR
 Exit 0: all agree; 1: a mismatch or a failure; 77: skipped (python3-openvdb absent outside CI).
 """
-import json
 import os
-import subprocess
 import sys
 
-from judge_support import skip_or_fail
+from judge_support import check, close, finish, skip_or_fail, use_voxmod, voxmod
 
 
 try:
     import pyopenvdb as vdb
 except ImportError:
     skip_or_fail("needs Debian's python3-openvdb (apt-get install python3-openvdb)")
-
-failed = False
-
-
-def check(ok, what):
-    global failed
-    failed |= not ok
-    print(("ok" if ok else "FAIL") + " - " + what)
-
-
-def voxmod(*args):
-    run = subprocess.run([VOXMOD, *args, "--json"], capture_output=True, text=True)
-    if run.returncode != 0:
-        raise RuntimeError(f"voxmod {' '.join(args)}: exit {run.returncode}: {run.stderr}")
-    return json.loads(run.stdout)
-
-
-def close(a, b, tol=1e-9):
-    return all(abs(x - y) <= tol * max(1.0, abs(y)) for x, y in zip(a, b))
-
 
 def grid_named(path, name):
     grids, _ = vdb.readAll(path)
@@ -76,8 +54,8 @@ def judge_thickness(path, t, info, name):
 
 
 def main():
-    global VOXMOD
-    VOXMOD, source, work = sys.argv[1:4]
+    exe, source, work = sys.argv[1:4]
+    use_voxmod(exe)
     os.makedirs(work, exist_ok=True)
     for model in ["featuretype.stl", "plate_holes.stl"]:
         for res in (60, 150):
@@ -91,7 +69,7 @@ def main():
             t_vdb = vxm[:-4] + "_t.vdb"
             t = voxmod("thickness", vxm, "-o", t_vdb)
             judge_thickness(t_vdb, t, info, f"{name} .vdb")
-    sys.exit(1 if failed else 0)
+    finish()
 
 
 main()

@@ -7,12 +7,10 @@ filled voxel, with the minimum and maximum voxmod reports.
 usage: vtk_volumes.py VOXMOD SOURCE_DIR WORK_DIR
 Exit 0: all agree; 1: a mismatch or a failure; 77: skipped (python3-vtk9 absent outside CI).
 """
-import json
 import os
-import subprocess
 import sys
 
-from judge_support import skip_or_fail
+from judge_support import check, close, finish, skip_or_fail, use_voxmod, voxmod
 
 
 try:
@@ -25,31 +23,11 @@ try:
 except ImportError:
     skip_or_fail("needs Debian's python3-vtk9 and python3-numpy (apt-get install python3-vtk9 python3-numpy)")
 
-failed = False
-
-
-def check(ok, what):
-    global failed
-    failed |= not ok
-    print(("ok" if ok else "FAIL") + " - " + what)
-
-
-def voxmod(*args):
-    run = subprocess.run([VOXMOD, *args, "--json"], capture_output=True, text=True)
-    if run.returncode != 0:
-        raise RuntimeError(f"voxmod {' '.join(args)}: exit {run.returncode}: {run.stderr}")
-    return json.loads(run.stdout)
-
-
 def read(path):
     reader = vtkXMLImageDataReader() if path.endswith(".vti") else vtkNrrdReader()
     reader.SetFileName(path)
     reader.Update()
     return reader.GetOutput()
-
-
-def close(a, b, tol=1e-9):
-    return all(abs(x - y) <= tol * max(1.0, abs(y)) for x, y in zip(a, b))
 
 
 def judge_grid(path, info, name):
@@ -79,8 +57,8 @@ def judge_field(path, array, stats, filled, name):
 
 
 def main():
-    global VOXMOD
-    VOXMOD, source, work = sys.argv[1:4]
+    exe, source, work = sys.argv[1:4]
+    use_voxmod(exe)
     os.makedirs(work, exist_ok=True)
     for model in ["featuretype.stl", "plate_holes.stl"]:
         for res in (60, 150):
@@ -97,7 +75,7 @@ def main():
             judge_field(t_vti, "thickness", (t["min"], t["max"]), info["filled"], f"{name} thickness .vti")
             judge_field(d_nrrd, "distance", (info["voxel_size"], t["distance_max"]), info["filled"],
                         f"{name} distance .nrrd")
-    sys.exit(1 if failed else 0)
+    finish()
 
 
 main()
