@@ -1,6 +1,5 @@
 #include "io/step_check.h"
 
-#include <algorithm>
 #include <string_view>
 #include <unordered_map>
 
@@ -19,100 +18,93 @@ Status checkComplete(std::string_view text, const std::string& name) {
   return makeError(ErrorCode::kParse, name + ": STEP file truncated: it does not end with 'END-ISO-10303-21;'");
 }
 
-// Walks the statements; at the start of each, an instance name "#digits" followed by '=' is a definition.
+// Finds the entity definitions the way Open CASCADE's lexer (StepFile/step.lex) does, so that every name its
+// reader would see defined twice is seen here first: "#digits" followed by '=' (perhaps after spaces or tabs) is a
+// definition wherever it stands; comments run from "/*" to "*/"; a string runs from an apostrophe to the next one
+// followed (after blanks, newlines or '"') by ')' or ','. Nothing else matters to the question.
 class NameWalk {
  public:
   explicit NameWalk(std::string_view text) : text_(text) {}
 
   Status run(const std::string& name) {
     std::unordered_map<uint32_t, uint64_t> first_line;
-    while (pos_ < text_.size()) {
-      skipSpaceAndComments();
-      if (pos_ >= text_.size()) break;
-      const uint64_t line = line_;
+    const size_t n = text_.size();
+    while (pos_ < n) {
       const char c = text_[pos_];
-      if (c == '&' || text_.substr(pos_, 8) == "ENDSCOPE") return Ok{};  // scopes: Open CASCADE resolves them
-      if (c == '#') {
-        uint32_t id = 0;
-        if (definition(id)) {
-          const auto [it, added] = first_line.emplace(id, line);
+      if (c == '\n') {
+        ++line_;
+        ++pos_;
+      } else if (c == '/' && pos_ + 1 < n && text_[pos_ + 1] == '*') {
+        skipComment();
+      } else if (c == '\'') {
+        skipString();
+      } else if (c == '#') {
+        const uint64_t line = line_;
+        uint64_t id = 0;
+        const Definition d = definition(id);
+        if (d == Definition::kTooLarge) {
+          return makeError(ErrorCode::kParse, name + ":" + std::to_string(line) +
+                                                  ": malformed STEP file: an entity name is larger than 2147483647, "
+                                                  "the largest Open CASCADE reads");
+        }
+        if (d == Definition::kYes) {
+          const auto [it, added] = first_line.emplace(uint32_t(id), line);
           if (!added) {
             return makeError(ErrorCode::kParse, name + ":" + std::to_string(line) + ": malformed STEP file: entity #" +
                                                     std::to_string(id) + " is defined a second time (first at line " +
                                                     std::to_string(it->second) + ")");
           }
         }
+      } else {
+        ++pos_;
       }
-      skipStatement();
     }
     return Ok{};
   }
 
  private:
-  void advance() {
-    if (text_[pos_] == '\n') ++line_;
-    ++pos_;
-  }
+  enum class Definition { kNo, kYes, kTooLarge };
 
-  void skipComment() {  // at "/*"
+  void skipComment() {  // at "/*", to just past the next "*/" (or the end)
     pos_ += 2;
-    while (pos_ < text_.size() && text_.substr(pos_, 2) != "*/") advance();
-    pos_ = std::min(text_.size(), pos_ + 2);
-  }
-
-  void skipSpaceAndComments() {
     while (pos_ < text_.size()) {
-      if (isBlank(uint8_t(text_[pos_]))) {
-        advance();
-      } else if (text_.substr(pos_, 2) == "/*") {
-        skipComment();
-      } else {
-        break;
-      }
-    }
-  }
-
-  // At '#': reads "#digits", blank space or comments, '='. The name must fit the int Open CASCADE keeps it in.
-  bool definition(uint32_t& id) {
-    ++pos_;
-    const size_t digits_at = pos_;
-    uint64_t value = 0;
-    while (pos_ < text_.size() && isDigit(uint8_t(text_[pos_])) && pos_ - digits_at < 10) {
-      value = value * 10 + uint64_t(text_[pos_] - '0');
-      ++pos_;
-    }
-    if (pos_ == digits_at || value > 0x7fffffffu || (pos_ < text_.size() && isDigit(uint8_t(text_[pos_])))) {
-      return false;
-    }
-    skipSpaceAndComments();
-    if (pos_ >= text_.size() || text_[pos_] != '=') return false;
-    id = uint32_t(value);
-    return true;
-  }
-
-  // To just past the next ';' outside strings and comments.
-  void skipStatement() {
-    while (pos_ < text_.size()) {
-      const char c = text_[pos_];
-      if (c == ';') {
-        ++pos_;
+      if (text_[pos_] == '\n') ++line_;
+      if (text_[pos_] == '*' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '/') {
+        pos_ += 2;
         return;
       }
-      if (c == '\'') {
-        advance();
-        while (pos_ < text_.size()) {  // '' inside a string is one apostrophe: the string goes on
-          if (text_[pos_] == '\'') {
-            ++pos_;
-            if (pos_ >= text_.size() || text_[pos_] != '\'') break;
-          }
-          advance();
-        }
-      } else if (text_.substr(pos_, 2) == "/*") {
-        skipComment();
-      } else {
-        advance();
-      }
+      ++pos_;
     }
+  }
+
+  void skipString() {  // at the opening apostrophe, to just past the closing one (or the end)
+    ++pos_;
+    while (pos_ < text_.size()) {
+      const char c = text_[pos_++];
+      if (c == '\n') ++line_;
+      if (c != '\'') continue;
+      size_t k = pos_;
+      while (k < text_.size() && (text_[k] == ' ' || text_[k] == '\n' || text_[k] == '\r' || text_[k] == '"')) ++k;
+      if (k < text_.size() && (text_[k] == ')' || text_[k] == ',')) return;
+    }
+  }
+
+  // At '#': "#digits" then '=' after spaces or tabs is a definition of the name the digits give (Open CASCADE keeps
+  // names in an int: a larger one is refused). Leaves pos_ after the digits.
+  Definition definition(uint64_t& id) {
+    ++pos_;
+    const size_t digits_at = pos_;
+    bool too_large = false;
+    while (pos_ < text_.size() && isDigit(uint8_t(text_[pos_]))) {
+      if (!too_large) id = id * 10 + uint64_t(text_[pos_] - '0');
+      too_large = too_large || id > 0x7fffffffu;
+      ++pos_;
+    }
+    if (pos_ == digits_at) return Definition::kNo;
+    size_t k = pos_;
+    while (k < text_.size() && (text_[k] == ' ' || text_[k] == '\t')) ++k;
+    if (k >= text_.size() || text_[k] != '=') return Definition::kNo;
+    return too_large ? Definition::kTooLarge : Definition::kYes;
   }
 
   std::string_view text_;

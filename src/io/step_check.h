@@ -2,11 +2,12 @@
 // A STEP file (ISO 10303-21) checked before Open CASCADE reads it, for what its reader handles badly:
 // - a file cut short: Open CASCADE keeps what it parsed, so a STEP file must end with "END-ISO-10303-21;";
 // - an entity instance name defined twice (#12 = ... twice). Open CASCADE 7.6 refuses such a file too, but only after
-//   a second resolution pass that searches the whole file for every reference it cannot resolve through its map:
-//   quadratic, 4 s for a 1 MB file and minutes for larger ones (found by tests/fuzz/fuzz_mesh_file.cpp).
-// The walk knows only what it needs: strings ('...' with '' inside), comments (/* ... */) and statements ending with
-// ';'. A file with scopes (&SCOPE ... ENDSCOPE, where the same name may be defined in different scopes) is left to
-// Open CASCADE.
+//   a second resolution pass (StepData_StepReaderData::SetEntityNumbers) that searches the whole file for every
+//   reference it cannot resolve through its map: quadratic in the file's size, and in a fuzzing session the same
+//   malformed file took from 30 ms to over 25 s there, depending on what the process had read before
+//   (found by tests/fuzz/fuzz_mesh_file.cpp). voxmod refuses a name defined twice even inside &SCOPE blocks, where
+//   Open CASCADE would accept it: no exporter of the CAD files voxmod reads writes scopes.
+// The walk finds definitions as Open CASCADE's lexer does (see step_check.cpp); it is not a parser.
 #include <cstdint>
 #include <span>
 #include <string>

@@ -298,6 +298,18 @@ TEST(CadFile, anEntityNameDefinedTwiceIsRefusedBeforeOpenCascadeSearchesForIt) {
                                    ": malformed STEP file: entity #1 is defined a second time (first at line " +
                                    std::to_string(lineOf(twice, first_statement)) + ")");
 
+  // An apostrophe inside a string ends it only before ')' or ',' (as Open CASCADE reads strings): the second
+  // definition after "O'Brien" is still seen.
+  std::string quoted = twice;
+  const size_t file_name = quoted.find("FILE_NAME('");
+  ASSERT_NE(file_name, std::string::npos);
+  quoted.insert(file_name + 11, "O'Brien ");
+  test::writeFile(tmp / "quoted.step", quoted);
+  r = loadMeshFile(tmp / "quoted.step");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().message.find(": malformed STEP file: entity #1 is defined a second time"), std::string::npos)
+      << r.error().message;
+
   // The fuzzer's shape of it: one name twice and many references to names that do not exist. Open CASCADE alone
   // searches the whole file for each of them (seconds per megabyte, growing with the square of the size).
   std::string many =
