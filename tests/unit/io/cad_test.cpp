@@ -326,6 +326,30 @@ TEST(CadFile, anEntityNameDefinedTwiceIsRefusedBeforeOpenCascadeSearchesForIt) {
                                    ":9: malformed STEP file: entity #1 is defined a second time (first at line 8)");
 }
 
+TEST(CadFile, aValueWithoutItsCommaIsRefusedBeforeOpenCascadeRecoversFromIt) {
+  test::TempDir tmp;
+  test::writeStep(tmp / "box.step", {{CadShape::kBox, {0, 0, 0}, {1, 1, 1}}});
+  const std::string step = test::readFile(tmp / "box.step");
+  // A list whose commas are missing (Open CASCADE's recovery costs the square of its length) and binary bytes after
+  // a number: both refused at the line they are on.
+  std::string spaced = step;
+  const size_t end = spaced.rfind("ENDSEC;");
+  spaced.insert(end, "#999999 = CARTESIAN_POINT('',(1.5\n2.5 3.5));\n");
+  test::writeFile(tmp / "spaced.step", spaced);
+  auto r = loadMeshFile(tmp / "spaced.step");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().message, (tmp / "spaced.step").string() + ":" + std::to_string(lineOf(spaced, "#999999") + 1) +
+                                   ": malformed STEP file: another value follows a value where ',' or ')' belongs");
+
+  std::string binary = step;
+  binary.insert(binary.rfind("ENDSEC;"), std::string("#999999 = CARTESIAN_POINT('',(1.5\xab\x00, 2.));\n", 43));
+  test::writeFile(tmp / "binary.step", binary);
+  r = loadMeshFile(tmp / "binary.step");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().message, (tmp / "binary.step").string() + ":" + std::to_string(lineOf(binary, "#999999")) +
+                                   ": malformed STEP file: byte 171 follows a value where ',' or ')' belongs");
+}
+
 TEST(CadFile, namesInStringsAndCommentsAreNotDefinitions) {
   test::TempDir tmp;
   test::writeStep(tmp / "box.step", {{CadShape::kBox, {0, 0, 0}, {1, 1, 1}}});
