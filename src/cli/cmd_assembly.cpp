@@ -88,22 +88,16 @@ struct BodiesOptions {
 // Every body as a voxel file DIR/body_NNN.EXT, all written or none.
 Status writeBodies(const PartsOnLattice& p, const std::string& dir, const std::string& format,
                    nlohmann::ordered_json& files) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) return makeError(ErrorCode::kIo, dir + ": cannot create the directory: " + ec.message());
-  std::vector<io::PendingFile> pending;
+  std::vector<io::VoxelFileToWrite> out;
   for (size_t i = 0; i < p.parts.size(); ++i) {
     char name[32];
     std::snprintf(name, sizeof name, "body_%03zu.%s", i, format.c_str());
-    io::PendingFile f;
-    f.path = std::filesystem::path(dir) / name;
-    VoxelGrid g = p.parts[i].grid;
-    g.frame() = p.lattice.frameAt(p.parts[i].first, p.names[i]);
-    f.bytes = format == "binvox" ? io::encodeBinvox(g) : io::encodeVxm(g);
+    io::VoxelFileToWrite f{std::filesystem::path(dir) / name, p.parts[i].grid};
+    f.grid.frame() = p.lattice.frameAt(p.parts[i].first, p.names[i]);
     files.push_back(f.path.string());
-    pending.push_back(std::move(f));
+    out.push_back(std::move(f));
   }
-  return io::writeFilesAtomic(pending);
+  return io::saveVoxelFiles(out);
 }
 
 int runBodies(const BodiesOptions& o) {
