@@ -21,8 +21,9 @@ bool isSave(BrowserPurpose p) { return p != BrowserPurpose::kOpen && p != Browse
 void accept(AppState& state) {
   FileBrowser& b = state.browser;
   std::filesystem::path name = b.file_name;
-  if (isSave(b.purpose) && !name.empty() && !matchesExtension(name.string(), browserExtensions(b.purpose))) {
-    name += browserExtensions(b.purpose).front();  // "part" -> "part.vxm"
+  const std::vector<std::string> extensions = browserExtensions(b.purpose);  // none: a folder's name
+  if (isSave(b.purpose) && !name.empty() && !extensions.empty() && !matchesExtension(name.string(), extensions)) {
+    name += extensions.front();  // "part" -> "part.vxm"
   }
   const std::filesystem::path path = name.is_absolute() ? name : b.directory / name;
   if (acceptBrowserPath(state, b.purpose, path)) ImGui::CloseCurrentPopup();
