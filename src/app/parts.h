@@ -60,9 +60,11 @@ std::string partFileName(const Assembly& parts, size_t i);
 void startClearance(AppState& state, size_t a, size_t b);
 // The clearance of the two parts it was found for in this model version (null before, or for other parts).
 const Clearance* currentClearance(const AppState& state);
-// "Gap between body 1 and body 2: 0.35 mm (centres 1.4 voxels apart)", "... touch", or why it failed; empty: none.
+// "Gap between body 1 and body 2: 0.35 mm (...)", "... touch", or why it failed, while the two parts it was found
+// for are the selection; empty otherwise.
 std::string clearanceText(const AppState& state);
-// The two voxels realising the clearance in the model's voxel coordinates (for the 3D view's marks); false: none.
+// The two voxels realising the clearance in the model's voxel coordinates (for the 3D view's marks), while the two
+// parts are the selection; false otherwise or when they touch.
 bool clearanceVoxels(const AppState& state, glm::ivec3& a, glm::ivec3& b);
 
 // Starts finding the interference of the current parts in the background (nothing when it is known or running).

@@ -3,6 +3,7 @@
 // realise it (view_overlays.cpp).
 #include <cstdio>
 #include <utility>
+#include <vector>
 
 #include "app/parts.h"
 #include "vox/core/text.h"
@@ -14,6 +15,14 @@ std::string lengthText(double value, const std::string& units) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.4g %s", value, units == "model" ? "model units" : units.c_str());
   return buf;
+}
+
+// The clearance is shown while its two parts are the selection (in either order).
+bool forSelection(const AppState& state) {
+  const PartsUi& ui = state.parts_ui;
+  const std::vector<size_t>& sel = ui.selected;
+  return sel.size() == 2 && ((sel[0] == ui.clearance_a && sel[1] == ui.clearance_b) ||
+                             (sel[0] == ui.clearance_b && sel[1] == ui.clearance_a));
 }
 
 }  // namespace
@@ -64,7 +73,7 @@ const Clearance* currentClearance(const AppState& state) {
 std::string clearanceText(const AppState& state) {
   const Assembly* parts = currentParts(state);
   const PartsUi& ui = state.parts_ui;
-  if (!parts || !state.doc.model || ui.clearance_version != state.doc.model->version) return {};
+  if (!parts || !state.doc.model || ui.clearance_version != state.doc.model->version || !forSelection(state)) return {};
   if (ui.clearance_a >= parts->size() || ui.clearance_b >= parts->size()) return {};
   const std::string pair = parts->part(ui.clearance_a).name + " and " + parts->part(ui.clearance_b).name;
   if (!ui.clearance) return "No clearance between " + pair + ": " + ui.clearance_error;
@@ -80,7 +89,7 @@ std::string clearanceText(const AppState& state) {
 bool clearanceVoxels(const AppState& state, glm::ivec3& a, glm::ivec3& b) {
   const Assembly* parts = currentParts(state);
   const Clearance* c = currentClearance(state);
-  if (!parts || !c || !c->found || c->touching) return false;
+  if (!parts || !c || !c->found || c->touching || !forSelection(state)) return false;
   const glm::ivec3 origin = parts->extent().min;
   a = c->voxel_a - origin;
   b = c->voxel_b - origin;

@@ -401,6 +401,12 @@ TEST(AppParts, theClearanceOfTwoPartsIsTheLibrarysAndMarksTwoVoxels) {
   EXPECT_EQ(vb, c.voxel_b - parts.extent().min);
   EXPECT_NE(clearanceText(state).find("Gap between a.vxm and b.vxm: 2 model units"), std::string::npos)
       << clearanceText(state);
+  // Shown while the two parts are the selection.
+  ASSERT_TRUE(run(state, "select-part 2").ok());
+  EXPECT_TRUE(clearanceText(state).empty());
+  EXPECT_FALSE(clearanceVoxels(state, va, vb));
+  ASSERT_TRUE(run(state, "select-part 2 1").ok());
+  EXPECT_TRUE(clearanceVoxels(state, va, vb));
   EXPECT_FALSE(run(state, "clearance 1 1").ok());
   EXPECT_FALSE(run(state, "clearance 1 3").ok());
 }

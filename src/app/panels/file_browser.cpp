@@ -81,8 +81,13 @@ void drawFileBrowser(AppState& state) {
     }
   }
   std::error_code ec;
-  if (isSave(b.purpose) && !b.file_name.empty() && std::filesystem::exists(b.directory / b.file_name, ec)) {
+  const bool folder = browserExtensions(b.purpose).empty();  // the name is a folder's (save each part)
+  if (folder && !b.file_name.empty() && std::filesystem::is_directory(b.directory / b.file_name, ec)) {
+    ImGui::TextDisabled("%s exists: files of the same names in it will be replaced.", b.file_name.c_str());
+  } else if (isSave(b.purpose) && !b.file_name.empty() && std::filesystem::exists(b.directory / b.file_name, ec)) {
     ImGui::TextDisabled("%s exists and will be replaced.", b.file_name.c_str());
+  } else if (folder) {
+    ImGui::TextDisabled("Showing folders; the folder named above is made when missing");
   } else {
     std::string exts;
     for (const std::string& e : browserExtensions(b.purpose)) exts += (exts.empty() ? "" : ", ") + e;
