@@ -43,7 +43,7 @@ const Action kActions[] = {
   {ActionId::kMeasure,        "measure",         nullptr,   "Pick a voxel to measure",            kNone,                       3, 3,  nullptr,       measureAt,         hasSection,  nullptr},
 
   {ActionId::kVoxelize,       "voxelize",        "Model",   "Voxelize...",                        {GLFW_KEY_R, kCtrl},         1, 2,  voxelizeDialog, voxelizeAt,       hasMesh,     nullptr},
-  {ActionId::kCancelJob,      "cancel",          "Model",   "Cancel voxelizing / loading / thickness / export", {GLFW_KEY_ESCAPE, 0}, 0, 0, cancelAll,   nullptr,           canCancel,   nullptr},
+  {ActionId::kCancelJob,      "cancel",          "Model",   "Cancel voxelizing / loading / thickness / parts / export", {GLFW_KEY_ESCAPE, 0}, 0, 0, cancelAll,   nullptr,           canCancel,   nullptr},
 
   {ActionId::kViewFit,        "fit",             "View",    "Fit model",                          {GLFW_KEY_F, 0},             0, 0,  fit,           nullptr,           nullptr,     nullptr},
   {ActionId::kViewIso,        "view-iso",        "View",    "Isometric",                          {GLFW_KEY_0, 0},             0, 0,  viewIso,       nullptr,           nullptr,     nullptr},
