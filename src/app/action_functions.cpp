@@ -59,7 +59,7 @@ bool hasDisputed(const AppState& s) {
 
 bool canCancel(const AppState& s) {
   return modelBusy(s) || s.thickness.computing(s.model_version) || volumeExportRunning(s) || s.parts_job.active() ||
-         s.interference_job.active();
+         s.interference_job.active() || s.clearance_job.active();
 }
 bool hasThickness(const AppState& s) { return currentThickness(s) != nullptr; }
 
@@ -142,6 +142,7 @@ void cancelAll(AppState& s) {
   cancelVolumeExport(s);
   s.parts_job.cancel();
   cancelInterference(s);
+  s.clearance_job.abandon();  // the distance transform has no progress to stop at: its result is dropped
 }
 
 // ---- View ----

@@ -409,6 +409,14 @@ TEST(AppParts, theClearanceOfTwoPartsIsTheLibrarysAndMarksTwoVoxels) {
   EXPECT_TRUE(clearanceVoxels(state, va, vb));
   EXPECT_FALSE(run(state, "clearance 1 1").ok());
   EXPECT_FALSE(run(state, "clearance 1 3").ok());
+  // Esc (Model > Cancel) drops a clearance under way: nothing arrives for it.
+  ASSERT_TRUE(run(state, "place-part 2 5 0 0").ok());
+  ASSERT_TRUE(run(state, "clearance 1 2").ok());
+  ASSERT_TRUE(actionEnabled(state, action(ActionId::kCancelJob)));
+  ASSERT_TRUE(run(state, "cancel").ok());
+  EXPECT_FALSE(state.clearance_job.active());
+  for (int i = 0; i < 20; ++i) updateDocument(state);
+  EXPECT_EQ(currentClearance(state), nullptr);
 }
 
 TEST(AppParts, theInterferenceSearchShowsProgressAndCancels) {

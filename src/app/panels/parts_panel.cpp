@@ -208,6 +208,8 @@ void drawClearance(AppState& state) {
   if (state.clearance_job.active()) {
     ImGui::SameLine();
     ImGui::Text("Finding the clearance... %.1f s", nowSeconds() - state.job_started);
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel##clearance")) dispatch(state, ActionId::kCancelJob);
   }
   const std::string text = clearanceText(state);
   if (!text.empty()) ImGui::TextWrapped("%s", text.c_str());
