@@ -5,18 +5,25 @@
 // parts, reading each part only over its own box.
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <numeric>
 
 #include <glm/common.hpp>
 #include <glm/vector_relational.hpp>
 
+#include "analysis/progress_gate.h"
 #include "vox/analysis/assembly.h"
 #include "vox/core/bits.h"
 #include "vox/core/parallel.h"
 
 namespace vox {
 namespace {
+
+using analysis_detail::ProgressGate;
+
+// The share of the work the pairs take (the rest: counting the voxels in two or more parts, layer by layer).
+constexpr double kPairShare = 0.7;
 
 // Bit j of a bit's index within a word: sum over j of 2^j popcount(m & kIndexBit[j]) is the sum of m's bit indices.
 constexpr std::array<uint64_t, 6> kIndexBit = {0xAAAAAAAAAAAAAAAAull, 0xCCCCCCCCCCCCCCCCull, 0xF0F0F0F0F0F0F0F0ull,
@@ -97,16 +104,20 @@ struct OverlapTally {
   glm::ivec3 lo{INT32_MAX}, hi{INT32_MIN};
 };
 
-OverlapTally tallyOverlaps(std::span<const LatticeGrid> parts, const std::vector<Box3i>& boxes, const Box3i& all) {
+OverlapTally tallyOverlaps(std::span<const LatticeGrid> parts, const std::vector<Box3i>& boxes, const Box3i& all,
+                           ProgressGate& gate) {
   const int64_t words = (int64_t(all.size().x) + 63) / 64;
   const int threads = threadsFor(all.count() / 64);
   std::vector<OverlapTally> per_thread(size_t(std::max(1, threads)));
+  std::atomic<int64_t> layers_done{0};
+  const double layers = double(std::max(1, all.size().z));
   parallelChunks(all.min.z, all.max.z, 1, threads, [&](int t, int64_t z0, int64_t z1) {
     const size_t n = static_cast<size_t>(words);
     std::vector<uint64_t> ones(n), twos(n), threes(n);
     std::vector<size_t> in_layer;
     OverlapTally& tally = per_thread[size_t(t)];
     for (int32_t Z = int32_t(z0); Z < int32_t(z1); ++Z) {
+      if (!gate.report(kPairShare + (1.0 - kPairShare) * double(layers_done.fetch_add(1)) / layers)) return;
       in_layer.clear();
       for (size_t p = 0; p < parts.size(); ++p) {
         if (!boxes[p].empty() && boxes[p].min.z <= Z && Z < boxes[p].max.z) in_layer.push_back(p);
@@ -158,6 +169,12 @@ OverlapTally tallyOverlaps(std::span<const LatticeGrid> parts, const std::vector
 }  // namespace
 
 Interference findInterference(std::span<const LatticeGrid> parts, const Lattice& lattice) {
+  return std::move(findInterference(parts, lattice, ProgressFn{})).value();  // no callback: never cancelled
+}
+
+Result<Interference> findInterference(std::span<const LatticeGrid> parts, const Lattice& lattice,
+                                      const ProgressFn& progress) {
+  ProgressGate gate(progress);
   Interference out;
   std::vector<Box3i> boxes(parts.size());
   parallelChunks(0, int64_t(parts.size()), 1, threadsFor(int64_t(parts.size()) << 16),
@@ -169,12 +186,17 @@ Interference findInterference(std::span<const LatticeGrid> parts, const Lattice&
   std::vector<PairTally> tallies(candidates.size());
   int64_t work = 0;
   for (const auto& [i, j] : candidates) work += intersect(boxes[size_t(i)], boxes[size_t(j)]).count() / 64;
+  std::atomic<int64_t> work_done{0};
   parallelChunks(0, int64_t(candidates.size()), 1, threadsFor(work), [&](int, int64_t k0, int64_t k1) {
     for (int64_t k = k0; k < k1; ++k) {
       const auto [i, j] = candidates[size_t(k)];
-      tallies[size_t(k)] = tallyPair(parts[size_t(i)], parts[size_t(j)], intersect(boxes[size_t(i)], boxes[size_t(j)]));
+      const Box3i common = intersect(boxes[size_t(i)], boxes[size_t(j)]);
+      if (!gate.report(kPairShare * double(work_done.load()) / double(std::max<int64_t>(work, 1)))) return;
+      tallies[size_t(k)] = tallyPair(parts[size_t(i)], parts[size_t(j)], common);
+      work_done.fetch_add(common.count() / 64);
     }
   });
+  if (gate.cancelled()) return makeError(ErrorCode::kCancelled, "finding interference: cancelled");
   for (size_t k = 0; k < candidates.size(); ++k) {
     const PairTally& t = tallies[k];
     if (t.voxels == 0) continue;
@@ -192,11 +214,13 @@ Interference findInterference(std::span<const LatticeGrid> parts, const Lattice&
   Box3i all;
   for (const Box3i& b : boxes) all = unite(all, b);
   if (!all.empty() && !out.pairs.empty()) {
-    const OverlapTally o = tallyOverlaps(parts, boxes, all);
+    const OverlapTally o = tallyOverlaps(parts, boxes, all, gate);
+    if (gate.cancelled()) return makeError(ErrorCode::kCancelled, "finding interference: cancelled");
     out.overlap_voxels = o.twos;
     out.multiple_overlap_voxels = o.threes;
     if (o.threes > 0) out.multiple_overlap_box = Box3i{o.lo, o.hi + glm::ivec3(1)};
   }
+  gate.report(1.0);
   return out;
 }
 

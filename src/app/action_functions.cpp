@@ -6,6 +6,7 @@
 
 #include "app/measure.h"
 #include "app/operations.h"
+#include "app/parts.h"
 #include "vox/core/text.h"
 
 namespace vox::app::actions {
@@ -57,7 +58,8 @@ bool hasDisputed(const AppState& s) {
 }
 
 bool canCancel(const AppState& s) {
-  return modelBusy(s) || s.thickness.computing(s.model_version) || volumeExportRunning(s);
+  return modelBusy(s) || s.thickness.computing(s.model_version) || volumeExportRunning(s) || s.parts_job.active() ||
+         s.interference_job.active() || s.clearance_job.active();
 }
 bool hasThickness(const AppState& s) { return currentThickness(s) != nullptr; }
 
@@ -138,6 +140,9 @@ void cancelAll(AppState& s) {
   cancelJobs(s);
   cancelThickness(s);
   cancelVolumeExport(s);
+  s.parts_job.cancel();
+  cancelInterference(s);
+  s.clearance_job.abandon();  // the distance transform has no progress to stop at: its result is dropped
 }
 
 // ---- View ----

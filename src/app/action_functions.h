@@ -129,6 +129,16 @@ Status showPairAt(AppState& s, const ActionArgs& a);     // N: the list's row fr
 Status selectPartsAt(AppState& s, const ActionArgs& a);  // N...: part numbers from 1
 Status partVisibleAt(AppState& s, const ActionArgs& a);  // N on|off
 Status partsScopeAt(AppState& s, const ActionArgs& a);   // union | selected
+Status placePartAt(AppState& s, const ActionArgs& a);    // N TX TY TZ [QX QY QZ]: model units, quarter turns
+Status turnPartAt(AppState& s, const ActionArgs& a);     // N x|y|z: one more quarter turn (+90 degrees)
+Status partColourAt(AppState& s, const ActionArgs& a);   // N R G B (0 to 1) or N #rrggbb
+bool hasPartsNow(const AppState& s);                     // a scene of parts (busy or not): save-parts
+void savePartsDialog(AppState& s);
+Status savePartsPath(AppState& s, const ActionArgs& a);  // DIR: each part as DIR/NN_name.vxm
+void clearanceSelected(AppState& s);                     // the two selected parts
+Status clearanceAt(AppState& s, const ActionArgs& a);    // A B: part numbers from 1
+bool interferenceRunning(const AppState& s);
+void cancelInterferenceNow(AppState& s);
 
 // ---- Help and dialogs ----
 void controls(AppState& s);

@@ -24,6 +24,7 @@ const Action kActions[] = {
   {ActionId::kOpen,           "open",            "File",    "Open...",                            {GLFW_KEY_O, kCtrl},         1, -1, open,          openPath,          nullptr,     nullptr},
   {ActionId::kSave,           "save",            "File",    "Save",                               {GLFW_KEY_S, kCtrl},         1, -1, save,          savePath,          hasModel,    nullptr},
   {ActionId::kSaveAs,         "save-as",         "File",    "Save As...",                         {GLFW_KEY_S, kCtrl | kShift}, 1, -1, saveAs,       savePath,          hasModel,    nullptr},
+  {ActionId::kSaveParts,      "save-parts",      "File",    "Save each part to a folder...",      kNone,                       1, -1, savePartsDialog, savePartsPath,   hasPartsNow, nullptr},
   {ActionId::kExportBinvox,   "export-binvox",   "File",    "Export binvox...",                   kNone,                       1, -1, exportBinvox,  exportBinvoxPath,  hasModel,    nullptr},
   {ActionId::kExportSurface,  "export-surface",  "File",    "Export surface mesh (STL, PLY, OBJ, 3MF)...", kNone,              1, -1, exportSurface, exportSurfacePath, hasModel,    nullptr},
   {ActionId::kExportSmoothSurface, "export-smooth-surface", "File", "Export smooth surface mesh...", kNone,            1, -1, exportSmoothSurface, exportSmoothSurfacePath, hasModel, nullptr},
@@ -42,7 +43,7 @@ const Action kActions[] = {
   {ActionId::kMeasure,        "measure",         nullptr,   "Pick a voxel to measure",            kNone,                       3, 3,  nullptr,       measureAt,         hasSection,  nullptr},
 
   {ActionId::kVoxelize,       "voxelize",        "Model",   "Voxelize...",                        {GLFW_KEY_R, kCtrl},         1, 2,  voxelizeDialog, voxelizeAt,       hasMesh,     nullptr},
-  {ActionId::kCancelJob,      "cancel",          "Model",   "Cancel voxelizing / loading / thickness / export", {GLFW_KEY_ESCAPE, 0}, 0, 0, cancelAll,   nullptr,           canCancel,   nullptr},
+  {ActionId::kCancelJob,      "cancel",          "Model",   "Cancel voxelizing / loading / thickness / parts / export", {GLFW_KEY_ESCAPE, 0}, 0, 0, cancelAll,   nullptr,           canCancel,   nullptr},
 
   {ActionId::kViewFit,        "fit",             "View",    "Fit model",                          {GLFW_KEY_F, 0},             0, 0,  fit,           nullptr,           nullptr,     nullptr},
   {ActionId::kViewIso,        "view-iso",        "View",    "Isometric",                          {GLFW_KEY_0, 0},             0, 0,  viewIso,       nullptr,           nullptr,     nullptr},
@@ -90,10 +91,15 @@ const Action kActions[] = {
   {ActionId::kPartBoolean,    "part-boolean",    "Parts",   "Boolean of the two selected parts",  kNone,                       1, 3,  booleanSelected, booleanWith,     hasParts,    nullptr},
   {ActionId::kRemovePart,     "remove-part",     "Parts",   "Remove the selected part",           kNone,                       1, 1,  removeSelected, removeAt,         hasParts,    nullptr},
   {ActionId::kInterference,   "interference",    "Parts",   "Find interference",                  kNone,                       0, 0,  findInterferenceNow, nullptr,     hasParts,    nullptr},
+  {ActionId::kCancelInterference, "cancel-interference", nullptr, "Cancel finding interference", kNone,                     0, 0,  cancelInterferenceNow, nullptr,   interferenceRunning, nullptr},
+  {ActionId::kClearance,      "clearance",       "Parts",   "Clearance of the two selected parts", kNone,                      2, 2,  clearanceSelected, clearanceAt,   hasParts,    nullptr},
   {ActionId::kInterferencePair, "interference-pair", nullptr, "Show an interference pair",        kNone,                       1, 1,  nullptr,       showPairAt,        hasInterference, nullptr},
   {ActionId::kSelectPart,     "select-part",     nullptr,   "Select parts",                       kNone,                       1, -1, nullptr,       selectPartsAt,     hasParts,    nullptr},
   {ActionId::kPartVisible,    "part-visible",    nullptr,   "Show or hide a part",                kNone,                       2, 2,  nullptr,       partVisibleAt,     hasParts,    nullptr},
   {ActionId::kPartsScope,     "parts-scope",     nullptr,   "Section, X-ray and mass on",         kNone,                       1, 1,  nullptr,       partsScopeAt,      hasParts,    nullptr},
+  {ActionId::kPlacePart,      "place-part",      nullptr,   "Move and turn a part",               kNone,                       4, 7,  nullptr,       placePartAt,       hasParts,    nullptr},
+  {ActionId::kTurnPart,       "turn-part",       nullptr,   "Turn a part by 90 degrees",          kNone,                       2, 2,  nullptr,       turnPartAt,        hasParts,    nullptr},
+  {ActionId::kPartColour,     "part-colour",     nullptr,   "Colour of a part",                   kNone,                       2, 4,  nullptr,       partColourAt,      hasParts,    nullptr},
 
   {ActionId::kControls,       "controls",        "Help",    "Mouse and keyboard",                 {GLFW_KEY_F1, 0},            0, 0,  controls,      nullptr,           nullptr,     nullptr},
   {ActionId::kAbout,          "about",           "Help",    "About voxmod",                       kNone,                       0, 0,  about,         nullptr,           nullptr,     nullptr},

@@ -173,6 +173,7 @@ enum class BrowserPurpose {
   kExportVolume,     // the model as .vti, .vdb, .nrrd or .vox (export_volume.h)
   kExportThickness,  // the thickness volume as .vti, .vdb or .nrrd
   kAddPart,          // a mesh or voxel file added to the scene as a part (parts.h)
+  kSaveParts,        // each part as a voxel file in a folder (parts.h, saveParts)
 };
 
 struct FileBrowser {
@@ -254,6 +255,16 @@ struct PartsUi {
   uint64_t pair_key = 0;              // changes with the pair shown (the overlay renderer's key)
   std::vector<int64_t> voxel_counts;  // filled voxels of each part (partVoxelCounts)
   uint64_t counts_version = 0;        // the model version they were counted for
+  uint64_t interference_cancelled_version = 0;  // the model version whose interference search was cancelled
+  // The clearance between two parts (parts_clearance.cpp): the parts and model version it was found for.
+  std::optional<Clearance> clearance;
+  size_t clearance_a = 0, clearance_b = 0;
+  uint64_t clearance_version = 0;
+  std::string clearance_error;  // why it could not be found (e.g. too large a box), for the same parts and version
+  // The placement fields while they are edited (model units; committed when an edit ends).
+  glm::dvec3 translation_edit{0.0};
+  size_t translation_edit_part = SIZE_MAX;
+  uint64_t translation_edit_version = 0;
 };
 
 struct LoadedFile {
@@ -335,6 +346,9 @@ struct AppState {
   std::string parts_job_label;
   Job<Interference> interference_job;
   uint64_t interference_job_version = 0;
+  Job<Clearance> clearance_job;  // the clearance of parts clearance_job_a and _b in model version _version
+  size_t clearance_job_a = 0, clearance_job_b = 0;
+  uint64_t clearance_job_version = 0;
 
   VoxelizeParams voxelize_job_params;  // the params of the running voxelization
   double job_started = 0.0;

@@ -37,6 +37,8 @@ std::vector<std::string> browserExtensions(BrowserPurpose purpose) {
       return {".vti", ".vdb", ".nrrd", ".vox"};
     case BrowserPurpose::kExportThickness:
       return {".vti", ".vdb", ".nrrd"};
+    case BrowserPurpose::kSaveParts:
+      return {};  // a folder: the browser lists folders only
   }
   return {};
 }
@@ -68,6 +70,8 @@ const char* browserTitle(BrowserPurpose purpose) {
       return "Export the thickness as a volume: .vti or .vdb (voxels, thickness, distance), .nrrd (thickness)";
     case BrowserPurpose::kAddPart:
       return "Add a part from a mesh or voxel file (on the scene's lattice)";
+    case BrowserPurpose::kSaveParts:
+      return "Save each part as a .vxm file into a folder (type its name; all files are written or none)";
   }
   return "";
 }
@@ -119,6 +123,9 @@ void openBrowser(AppState& state, BrowserPurpose purpose) {
       break;
     case BrowserPurpose::kExportThickness:
       b.file_name = stem + "_thickness.vti";
+      break;
+    case BrowserPurpose::kSaveParts:
+      b.file_name = stem + "_parts";
       break;
   }
 }
@@ -177,12 +184,20 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
     case BrowserPurpose::kExportThickness:
       ok = startThicknessExport(state, path);
       break;
+    case BrowserPurpose::kSaveParts:
+      if (Status s = saveParts(state, path); !s) {
+        reportError(state, s.error().message, path);
+      } else {
+        ok = true;
+      }
+      break;
   }
   if (ok) {
     state.settings.last_directory = std::filesystem::absolute(path).parent_path().string();
     // Say where a file went (the name typed may have been relative, or the directory not the one in mind).
     const bool in_background = purpose == BrowserPurpose::kExportVolume || purpose == BrowserPurpose::kExportThickness;
-    if (purpose != BrowserPurpose::kOpen && purpose != BrowserPurpose::kAddPart && !in_background) {
+    if (purpose != BrowserPurpose::kOpen && purpose != BrowserPurpose::kAddPart && !in_background &&
+        purpose != BrowserPurpose::kSaveParts) {  // saveParts says how many files it wrote
       state.status_message = "Wrote " + std::filesystem::absolute(path).lexically_normal().string();
       const bool surface = purpose == BrowserPurpose::kExportSurface || purpose == BrowserPurpose::kExportSmoothSurface;
       if (surface && state.panel == Panel::kSection && state.view.cut_away) {

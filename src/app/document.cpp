@@ -91,6 +91,7 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
   state.voxelize_job.abandon();  // a voxelization of the previous document's mesh must not land in this one
   state.parts_job.abandon();
   state.interference_job.abandon();
+  state.clearance_job.abandon();
   state.parts_ui = PartsUi{};
   // Results derived from the previous document can never be asked for again: free them now.
   state.depth.clear();

@@ -1,6 +1,7 @@
 // The Parts entries of the action table (actions.cpp): splitting into bodies, adding a part, Booleans, removing,
 // selecting and showing parts, and the interference list. Part numbers in scripts count from 1, as the panel shows.
 #include <algorithm>
+#include <charconv>
 #include <utility>
 
 #include "app/action_functions.h"
@@ -143,5 +144,92 @@ Status partsScopeAt(AppState& s, const ActionArgs& a) {
   setPartsScope(s, a.words[0] == "selected");
   return Ok{};
 }
+
+Status placePartAt(AppState& s, const ActionArgs& a) {
+  auto i = partIndex(s, a.words[0]);
+  if (!i) return i.error();
+  if (a.words.size() != 4 && a.words.size() != 7) return badValues("place-part takes N TX TY TZ [QX QY QZ]");
+  glm::dvec3 t(0.0);
+  for (int k = 0; k < 3; ++k) {
+    if (!parseNumber(a.words[size_t(1 + k)], t[k])) {
+      return badValues("place-part: '" + a.words[size_t(1 + k)] + "' is not a translation in model units");
+    }
+  }
+  PartPlacement p = placementWithTranslation(s, *i, t);
+  if (a.words.size() == 7) {
+    for (int k = 0; k < 3; ++k) {
+      int q = 0;
+      if (!parseNumber(a.words[size_t(4 + k)], q)) {
+        return badValues("place-part: '" + a.words[size_t(4 + k)] + "' is not a number of quarter turns");
+      }
+      p.quarter_turns[k] = ((q % 4) + 4) % 4;
+    }
+  }
+  return placePart(s, *i, p);
+}
+
+Status turnPartAt(AppState& s, const ActionArgs& a) {
+  auto i = partIndex(s, a.words[0]);
+  if (!i) return i.error();
+  const std::string& w = a.words[1];
+  const int axis = w == "x" ? 0 : w == "y" ? 1 : w == "z" ? 2 : -1;
+  if (axis < 0) return badValues("turn-part takes N x|y|z, not '" + w + "'");
+  return placePart(s, *i, placementTurned(s, *i, axis));
+}
+
+Status partColourAt(AppState& s, const ActionArgs& a) {
+  auto i = partIndex(s, a.words[0]);
+  if (!i) return i.error();
+  glm::vec3 c(0.0f);
+  if (a.words.size() == 2) {
+    const std::string& w = a.words[1];
+    unsigned v = 0;
+    if (w.size() != 7 || w[0] != '#' ||
+        std::from_chars(w.data() + 1, w.data() + w.size(), v, 16).ptr != w.data() + w.size()) {
+      return badValues("part-colour takes N #rrggbb or N R G B (0 to 1), not '" + w + "'");
+    }
+    c = glm::vec3(float((v >> 16) & 255u), float((v >> 8) & 255u), float(v & 255u)) / 255.0f;
+  } else if (a.words.size() == 4) {
+    for (int k = 0; k < 3; ++k) {
+      if (!parseNumber(a.words[size_t(1 + k)], c[k]) || c[k] < 0.0f || c[k] > 1.0f) {
+        return badValues("part-colour: '" + a.words[size_t(1 + k)] + "' is not a colour component from 0 to 1");
+      }
+    }
+  } else {
+    return badValues("part-colour takes N #rrggbb or N R G B (0 to 1)");
+  }
+  setPartColour(s, *i, c);
+  return Ok{};
+}
+
+bool hasPartsNow(const AppState& s) { return currentParts(s) != nullptr; }
+void savePartsDialog(AppState& s) { openBrowser(s, BrowserPurpose::kSaveParts); }
+Status savePartsPath(AppState& s, const ActionArgs& a) { return saveParts(s, a.rest); }
+
+void clearanceSelected(AppState& s) {
+  if (s.parts_ui.selected.size() < 2) {
+    reportError(s, "select two parts for their clearance (Ctrl+click the second)");
+    return;
+  }
+  startClearance(s, s.parts_ui.selected[0], s.parts_ui.selected[1]);
+  showParts(s);
+}
+
+Status clearanceAt(AppState& s, const ActionArgs& a) {
+  auto i = partIndex(s, a.words[0]);
+  if (!i) return i.error();
+  auto j = partIndex(s, a.words[1]);
+  if (!j) return j.error();
+  if (*i == *j) return badValues("the clearance needs two different parts");
+  s.parts_ui.selected = {*i, *j};
+  s.viewport.dirty = true;
+  if (s.parts_ui.scope_selected) applyPartsScope(s);
+  startClearance(s, *i, *j);
+  showParts(s);
+  return Ok{};
+}
+
+bool interferenceRunning(const AppState& s) { return s.interference_job.active(); }
+void cancelInterferenceNow(AppState& s) { cancelInterference(s); }
 
 }  // namespace vox::app::actions

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include <glm/common.hpp>
+
 #include "app/document.h"
 #include "app/messages.h"
 #include "app/model_jobs.h"
@@ -199,6 +201,47 @@ Status removePart(AppState& state, size_t i) {
   return Ok{};
 }
 
+Status placePart(AppState& state, size_t i, const PartPlacement& placement) {
+  const Assembly* parts = currentParts(state);
+  if (!parts) return partsError("there are no parts to move: split the model into bodies or add a part first");
+  if (i >= parts->size()) return partsError("part numbers go from 1 to " + std::to_string(parts->size()));
+  PartPlacement p = placement;
+  p.quarter_turns &= 3;  // turns are taken modulo 4: the same placement, one way of writing it
+  if (parts->part(i).placement == p) return Ok{};
+  const bool turned = p.quarter_turns != parts->part(i).placement.quarter_turns;
+  auto scene = std::make_shared<Assembly>(*parts);
+  scene->setPlacement(i, p);
+  const std::string label = (turned ? "turn " : "move ") + scene->part(i).name;
+  const std::vector<size_t> selected = state.parts_ui.selected;
+  commitParts(state, std::move(scene), label);
+  state.parts_ui.selected = selected;
+  applyPartsScope(state);
+  return Ok{};
+}
+
+PartPlacement placementWithTranslation(const AppState& state, size_t i, const glm::dvec3& model_units) {
+  const Assembly& parts = *currentParts(state);
+  PartPlacement p = parts.part(i).placement;
+  p.translation = parts.snapTranslation(model_units);
+  return p;
+}
+
+PartPlacement placementTurned(const AppState& state, size_t i, int axis) {
+  PartPlacement p = currentParts(state)->part(i).placement;
+  p.quarter_turns[axis] = (p.quarter_turns[axis] + 1) & 3;
+  return p;
+}
+
+void setPartColour(AppState& state, size_t i, const glm::vec3& colour) {
+  const Assembly* parts = currentParts(state);
+  if (!parts || i >= parts->size() || parts->part(i).colour == colour) return;
+  // Like visibility: how the scene is shown, edited in place in the current state.
+  auto scene = std::make_shared<Assembly>(*parts);
+  scene->part(i).colour = glm::clamp(colour, glm::vec3(0.0f), glm::vec3(1.0f));
+  state.doc.model->parts = std::move(scene);
+  state.viewport.dirty = true;
+}
+
 void setPartVisible(AppState& state, size_t i, bool visible) {
   const Assembly* parts = currentParts(state);
   if (!parts || i >= parts->size() || parts->part(i).visible == visible) return;
@@ -267,6 +310,7 @@ void updateParts(AppState& state) {
       state.parts_ui.pair = -1;
     }
   }
+  updateClearance(state);
 }
 
 const std::vector<int64_t>& partVoxelCounts(AppState& state) {

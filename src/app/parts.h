@@ -37,8 +37,40 @@ void setPartsScope(AppState& state, bool selected);
 // Makes state.model the union or the selected part, as the scope says (setModel calls it).
 void applyPartsScope(AppState& state);
 
+// Moves and turns part i (translation in whole lattice voxels, quarter turns about X, Y, Z; undoable). The model
+// grows or shrinks to the parts' new extent; the selection stays. Fails, saying why, for an index out of range.
+Status placePart(AppState& state, size_t i, const PartPlacement& placement);
+// The placement with part i's translation set from model units (snapped to the nearest whole voxel).
+PartPlacement placementWithTranslation(const AppState& state, size_t i, const glm::dvec3& model_units);
+// The placement with one more quarter turn (+90 degrees) of part i about `axis` (0 X, 1 Y, 2 Z).
+PartPlacement placementTurned(const AppState& state, size_t i, int axis);
+// Sets part i's colour (RGB in [0, 1]); how the scene is shown, like visibility, so not a new model state.
+void setPartColour(AppState& state, size_t i, const glm::vec3& colour);
+
+// Writes every part, placed, as a .vxm file into the folder `dir` (created when missing), named by partFileName
+// (numbered as the panel lists them), on the scene's lattice. All the files are written or none (io::saveVoxelFiles).
+// Says in the status bar how many files it wrote where.
+Status saveParts(AppState& state, const std::filesystem::path& dir);
+// The file name part i is saved under: its number from 1 (zero-padded to at least 2 digits), '_', its name without a
+// mesh or voxel file extension and with characters that are not letters, digits, ' ', '-', '_' or '.' replaced by
+// '_', then ".vxm": "03_body 2.vxm", "02_a.vxm" for a part added from a.stl.
+std::string partFileName(const Assembly& parts, size_t i);
+
+// Starts finding the clearance between parts a and b in the background (vox/analysis/assembly.h, findClearance).
+void startClearance(AppState& state, size_t a, size_t b);
+// The clearance of the two parts it was found for in this model version (null before, or for other parts).
+const Clearance* currentClearance(const AppState& state);
+// "Gap between body 1 and body 2: 0.35 mm (...)", "... touch", or why it failed, while the two parts it was found
+// for are the selection; empty otherwise.
+std::string clearanceText(const AppState& state);
+// The two voxels realising the clearance in the model's voxel coordinates (for the 3D view's marks), while the two
+// parts are the selection; false otherwise or when they touch.
+bool clearanceVoxels(const AppState& state, glm::ivec3& a, glm::ivec3& b);
+
 // Starts finding the interference of the current parts in the background (nothing when it is known or running).
 void startInterference(AppState& state);
+// Stops the interference search; the panel says it was cancelled and offers to start again.
+void cancelInterference(AppState& state);
 // The interference of the current parts once found (null before).
 const Interference* currentInterference(const AppState& state);
 // Shows pair i of the interference: both parts selected, their shared voxels drawn in red, the section through
@@ -50,8 +82,9 @@ std::string interferencePairText(const AppState& state);
 // The section picture (io::sectionPicture), with the shared voxels of the interference pair shown in red.
 ImageRgb partsSectionPicture(const AppState& state, const Section& section);
 
-// Each frame (updateDocument): finished parts and interference jobs in.
+// Each frame (updateDocument): finished parts, interference and clearance jobs in.
 void updateParts(AppState& state);
+void updateClearance(AppState& state);  // (updateParts calls it)
 
 // Filled voxels of each part, counted once per model version.
 const std::vector<int64_t>& partVoxelCounts(AppState& state);

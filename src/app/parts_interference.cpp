@@ -2,6 +2,7 @@
 // one pair shown at a time: its shared voxels become a grid on the model's frame (drawn in red over the parts and
 // in the section), the section moves through the overlap's centre and the camera turns to it.
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "app/document.h"
@@ -20,10 +21,18 @@ void startInterference(AppState& state) {
   std::vector<LatticeGrid> placed = parts->placedParts();
   const Lattice lattice = parts->lattice();
   state.interference_job_version = version;
-  state.interference_job.start("Finding interference", [placed = std::move(placed), lattice](const ProgressFn&) {
-    return Result<Interference>(findInterference(placed, lattice));
-  });
+  state.parts_ui.interference_cancelled_version = 0;
+  state.interference_job.start("Finding interference",
+                               [placed = std::move(placed), lattice](const ProgressFn& progress) {
+                                 return findInterference(placed, lattice, progress);
+                               });
   state.job_started = nowSeconds();
+}
+
+void cancelInterference(AppState& state) {
+  if (!state.interference_job.active()) return;
+  state.interference_job.cancel();
+  state.parts_ui.interference_cancelled_version = state.interference_job_version;
 }
 
 const Interference* currentInterference(const AppState& state) {
@@ -55,13 +64,15 @@ void showInterferencePair(AppState& state, int32_t i) {
   ui.pair_key = takeId(state);
   ui.selected = {size_t(p.a), size_t(p.b)};
   if (ui.scope_selected) applyPartsScope(state);
-  // The section through the overlap's middle voxel along the section's axis, and the camera on the overlap.
-  const glm::ivec3 middle = (p.box.min + p.box.max - 1) / 2 - ext.min;
+  // The section through the overlap's middle voxel along the section's axis, and the camera centred on the
+  // overlap's box (voxel coordinates of the model, whose voxel 0 is the extent's first).
+  const glm::dvec3 centre = glm::dvec3(p.box.min + p.box.max) * 0.5 - glm::dvec3(ext.min);
   const int a = int(state.section.axis);
-  state.section.index = std::clamp(middle[a], 0, std::max(axisLength(state, state.section.axis) - 1, 0));
+  state.section.index =
+      std::clamp(int(std::floor(centre[a])), 0, std::max(axisLength(state, state.section.axis) - 1, 0));
   const glm::ivec3 size = p.box.size();
   const double extent = double(std::max({size.x, size.y, size.z}));
-  state.view.camera.target = glm::dvec3(middle) + 0.5;
+  state.view.camera.target = centre;
   state.view.camera.distance = std::min(state.view.camera.distance, std::max(40.0, 6.0 * extent));
   state.view.fit_pending = false;
 }

@@ -85,7 +85,14 @@ void appendPartsSignature(const AppState& state, std::vector<double>& signature)
   signature.push_back(double(ui.scope_selected));
   signature.push_back(double(ui.selected.size()));
   for (size_t i : ui.selected) signature.push_back(double(i));
-  for (const Part& p : parts->parts()) signature.push_back(p.visible ? 1.0 : 0.0);
+  for (const Part& p : parts->parts()) {
+    signature.push_back(p.visible ? 1.0 : 0.0);
+    signature.insert(signature.end(), {double(p.colour.x), double(p.colour.y), double(p.colour.z)});
+  }
+  // The clearance's marks are drawn over the image; a new clearance redraws it.
+  signature.push_back(double(ui.clearance_version));
+  signature.push_back(double(ui.clearance_a));
+  signature.push_back(double(ui.clearance_b));
 }
 
 }  // namespace vox::app

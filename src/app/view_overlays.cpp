@@ -1,5 +1,6 @@
 #include "app/view_overlays.h"
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -7,6 +8,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "app/measure.h"
+#include "app/parts.h"
 
 namespace vox::app {
 
@@ -32,6 +34,32 @@ void drawMeasureOverlay(const AppState& state, ImDrawList* dl, ImVec2 pos, int w
     dl->AddText(ImVec2(pos.x + 8.0f, y), IM_COL32(255, 220, 60, 255), line.c_str());
     y += ImGui::GetTextLineHeightWithSpacing();
   }
+}
+
+void drawClearanceOverlay(const AppState& state, ImDrawList* dl, ImVec2 pos, int w, int h, double aspect) {
+  glm::ivec3 voxels[2];
+  if (!state.model_bounds || !clearanceVoxels(state, voxels[0], voxels[1])) return;
+  const Clearance& c = *currentClearance(state);
+  const glm::dmat4 vp = state.view.camera.viewProjection(aspect, *state.model_bounds);
+  ImVec2 screen[2];
+  for (int i = 0; i < 2; ++i) {
+    const glm::dvec4 p = vp * glm::dvec4(glm::dvec3(voxels[i]) + 0.5, 1.0);
+    if (p.w <= 0.0) return;
+    screen[i] = ImVec2(pos.x + float((p.x / p.w + 1.0) * 0.5 * w), pos.y + float((1.0 - p.y / p.w) * 0.5 * h));
+  }
+  const ImU32 cyan = IM_COL32(60, 230, 255, 255), black = IM_COL32(0, 0, 0, 255);
+  dl->AddLine(screen[0], screen[1], black, 4.0f);
+  dl->AddLine(screen[0], screen[1], cyan, 2.0f);
+  for (const ImVec2& p : screen) {
+    dl->AddCircle(p, 8.0f, black, 0, 4.0f);
+    dl->AddCircle(p, 8.0f, cyan, 0, 2.0f);
+  }
+  char text[64];
+  const std::string& units = currentParts(state)->lattice().units;
+  std::snprintf(text, sizeof text, "gap %.4g %s", c.gap, units == "model" ? "" : units.c_str());
+  const ImVec2 mid((screen[0].x + screen[1].x) * 0.5f + 10.0f, (screen[0].y + screen[1].y) * 0.5f - 8.0f);
+  dl->AddText(ImVec2(mid.x + 1.0f, mid.y + 1.0f), black, text);
+  dl->AddText(mid, cyan, text);
 }
 
 void drawAxisTriad(const render::Camera& camera, ImVec2 origin, float length) {

@@ -346,6 +346,7 @@ void drawViewport(AppState& state) {
     dl->AddText(ImVec2(pos.x + 8.0f, pos.y + float(h) - ImGui::GetFontSize() - 6.0f), IM_COL32(200, 200, 200, 255),
                 info);
     drawMeasureOverlay(state, dl, pos, w, h, aspect);
+    drawClearanceOverlay(state, dl, pos, w, h, aspect);
     drawThicknessOverlay(state, dl, pos, w, h, aspect);
     drawAxisTriad(state.view.camera, ImVec2(pos.x + 40.0f, pos.y + float(h) - 60.0f), 28.0f);
     if (vp.overlay_key % 4 == 3) {

@@ -3,6 +3,7 @@
 #include <new>
 
 #include "cli/batch.h"
+#include "cli/write_grid.h"
 #include "vox/analysis/surface_mesh.h"
 #include "vox/io/mesh_export.h"
 #include "vox/io/volume_export.h"
@@ -45,15 +46,7 @@ Status writeGrid(const BatchItem& item, const VoxelGrid& grid) {
   std::error_code ec;
   fs::create_directories(item.output.parent_path(), ec);
   if (ec) return makeError(ErrorCode::kIo, item.output.parent_path().string() + ": cannot create: " + ec.message());
-  if (io::isVoxelFile(item.output)) return io::saveVoxelFile(grid, item.output);
-  if (io::isVolumeFile(item.output)) return io::saveVolume(io::voxelsOnly(grid), item.output);
-  if (grid.filledCount() == 0) {
-    return makeError(ErrorCode::kInvalidArgument, item.input + ": the model has no filled voxels: no surface to write");
-  }
-  auto mesh = extractSurfaceMesh(grid, SurfaceMeshParams{});
-  if (!mesh) return mesh.error();
-  mesh->name = fs::path(item.input).stem().string();  // as convert names it
-  return io::saveMesh(*mesh, item.output);
+  return writeGridAs(grid, item.output, item.input);
 }
 
 Json baseLine(const BatchItem& item, const char* status) {

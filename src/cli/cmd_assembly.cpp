@@ -10,6 +10,7 @@
 #include "cli/assembly_input.h"
 #include "cli/cmd_list.h"
 #include "cli/commands.h"
+#include "cli/write_grid.h"
 #include "vox/analysis/assembly.h"
 #include "vox/io/file_util.h"
 #include "vox/io/voxel_file.h"
@@ -29,12 +30,6 @@ void frameJson(nlohmann::ordered_json& d, const Dims& dims, const Lattice& latti
   d["units"] = lattice.units;
 }
 
-// Refuses an output name no voxel writer takes, before any work (as convert does).
-std::string voxelOutputProblem(const std::string& path) {
-  if (io::isVoxelFile(path)) return {};
-  return path + ": unknown voxel file extension '" + io::lowerExtension(path) + "' (use .vxm or .binvox)";
-}
-
 // ---- boolean ----
 struct BooleanOptions {
   std::vector<std::string> files;
@@ -48,7 +43,7 @@ int runBoolean(const BooleanOptions& o) {
   const double t0 = nowSeconds();
   const auto op = parsePartOp(o.op_text);
   if (!op) return out.fail(kExitUsage, "unknown --op '" + o.op_text + "' (union, intersection, difference, xor)");
-  if (std::string p = voxelOutputProblem(o.out); !p.empty()) return out.fail(kExitUsage, p);
+  if (!isGridOutput(o.out)) return out.fail(kExitUsage, gridOutputFormats(o.out));  // before any work
   auto placed = placeInputs(o.files, o.mesh, false, out);
   if (!placed) return out.fail(placed.error());
   const PartsOnLattice& p = *placed;
@@ -65,7 +60,8 @@ int runBoolean(const BooleanOptions& o) {
   frameJson(d, result.grid.dims(), p.lattice, result.first);
   d["volume"] = volumeOf(d["filled"].get<int64_t>(), p.lattice);
   const double t2 = nowSeconds();
-  if (Status s = io::saveVoxelFile(result.grid, o.out); !s) return out.fail(s.error());
+  // Any failure here is the output's (exit 2), an empty result written as a surface too.
+  if (Status s = writeGridAs(result.grid, o.out, o.out); !s) return out.fail(kExitIo, s.error().message);
   d["output"] = o.out;
   d["load_s"] = p.load_s;
   d["voxelize_s"] = p.voxelize_s;
@@ -88,22 +84,16 @@ struct BodiesOptions {
 // Every body as a voxel file DIR/body_NNN.EXT, all written or none.
 Status writeBodies(const PartsOnLattice& p, const std::string& dir, const std::string& format,
                    nlohmann::ordered_json& files) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) return makeError(ErrorCode::kIo, dir + ": cannot create the directory: " + ec.message());
-  std::vector<io::PendingFile> pending;
+  std::vector<io::VoxelFileToWrite> out;
   for (size_t i = 0; i < p.parts.size(); ++i) {
     char name[32];
     std::snprintf(name, sizeof name, "body_%03zu.%s", i, format.c_str());
-    io::PendingFile f;
-    f.path = std::filesystem::path(dir) / name;
-    VoxelGrid g = p.parts[i].grid;
-    g.frame() = p.lattice.frameAt(p.parts[i].first, p.names[i]);
-    f.bytes = format == "binvox" ? io::encodeBinvox(g) : io::encodeVxm(g);
+    io::VoxelFileToWrite f{std::filesystem::path(dir) / name, p.parts[i].grid};
+    f.grid.frame() = p.lattice.frameAt(p.parts[i].first, p.names[i]);
     files.push_back(f.path.string());
-    pending.push_back(std::move(f));
+    out.push_back(std::move(f));
   }
-  return io::writeFilesAtomic(pending);
+  return io::saveVoxelFiles(out);
 }
 
 int runBodies(const BodiesOptions& o) {
@@ -247,7 +237,10 @@ void addBooleanCommand(CLI::App& sub, CommandContext& ctx) {
   sub.add_option("--op", o->op_text, "union, intersection, difference (A minus B) or xor")
       ->required()
       ->check(CLI::IsMember({"union", "intersection", "difference", "xor"}));
-  sub.add_option("-o,--output", o->out, "Output voxel file (.vxm or .binvox)")->required();
+  sub.add_option("-o,--output", o->out,
+                 "Output file, any format convert writes: voxels (.vxm, .binvox), a volume (.vti, .vdb, .nrrd, .vox) "
+                 "or the surface as a mesh (.stl, .ply, .obj, .3mf)")
+      ->required();
   sub.callback([o, &ctx] { ctx.exit_code = runBoolean(*o); });
 }
 

@@ -5,6 +5,7 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <system_error>
 
 #include "io/voxel_file_common.h"
 #include "vox/core/text.h"
@@ -95,6 +96,26 @@ Status saveVoxelFile(const VoxelGrid& grid, const std::filesystem::path& path) {
       break;
   }
   return unknownFormat(path);
+}
+
+Status saveVoxelFiles(std::span<const VoxelFileToWrite> files) {
+  for (const VoxelFileToWrite& f : files) {
+    if (formatOf(f.path) == VoxelFormat::kUnknown) return unknownFormat(f.path);
+  }
+  for (const VoxelFileToWrite& f : files) {
+    const std::filesystem::path dir = f.path.parent_path();
+    if (dir.empty()) continue;
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) return makeError(ErrorCode::kIo, dir.string() + ": cannot create the directory: " + ec.message());
+  }
+  std::vector<PendingFile> pending;
+  pending.reserve(files.size());
+  for (const VoxelFileToWrite& f : files) {
+    pending.push_back(
+        PendingFile{f.path, formatOf(f.path) == VoxelFormat::kVxm ? encodeVxm(f.grid) : encodeBinvox(f.grid)});
+  }
+  return writeFilesAtomic(pending);
 }
 
 }  // namespace vox::io

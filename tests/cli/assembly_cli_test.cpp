@@ -66,6 +66,31 @@ TEST_F(AssemblyCli, booleanOfTwoMeshesOnThePairsGrid) {
   }
 }
 
+TEST_F(AssemblyCli, booleanWritesAnyFormatConvertWritesAsConvertWritesIt) {
+  // The intersection as a voxel file, then as a surface and as a volume: each the bytes `convert` writes from it.
+  auto r =
+      runVoxmod({"boolean", path("a.stl"), path("b.stl"), "--op", "intersection", "--res", "16", "-o", path("x.vxm")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* ext : {".stl", ".nrrd", ".vti"}) {
+    const std::string direct = path(std::string("x") + ext);
+    r = runVoxmod({"boolean", path("a.stl"), path("b.stl"), "--op", "intersection", "--res", "16", "-o", direct});
+    ASSERT_EQ(r.exit_code, 0) << ext << ": " << r.err;
+    const std::string converted = path(std::string("converted/x") + ext);
+    std::filesystem::create_directories(path("converted"));
+    r = runVoxmod({"convert", path("x.vxm"), converted});
+    ASSERT_EQ(r.exit_code, 0) << ext << ": " << r.err;
+    EXPECT_EQ(test::readFile(direct), test::readFile(converted)) << ext;
+    EXPECT_GT(test::readFile(direct).size(), 100u) << ext;
+  }
+  // A Boolean with no voxels has no surface: a clear error, exit 2.
+  ASSERT_TRUE(io::saveStlBinary(boxMesh({20, 0, 0}, {30, 10, 10}), path("far.stl")).ok());
+  r = runVoxmod(
+      {"boolean", path("a.stl"), path("far.stl"), "--op", "intersection", "--res", "16", "-o", path("none.stl")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("no filled voxels"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(path("none.stl")));
+}
+
 TEST_F(AssemblyCli, interfereReportsTheKnownBlock) {
   for (bool bodies : {false, true}) {
     auto r = bodies ? runVoxmod({"interfere", path("ab.stl"), "--bodies", "--res", "16", "--json"})

@@ -230,5 +230,231 @@ TEST(AppParts, aVoxelModelSplitsIntoConnectedComponents) {
   }
 }
 
+// Two 6 x 4 x 4 blocks as voxel files on one lattice (voxel size 1): a at the origin, b 4 voxels along X, so they
+// share a 2 x 4 x 4 block. The document is a with b added as a part.
+void openTwoBlocks(AppState& state, const test::TempDir& dir) {
+  VoxelGrid a(Dims{6, 4, 4}), b(Dims{6, 4, 4});
+  for (int32_t z = 0; z < 4; ++z) {
+    for (int32_t y = 0; y < 4; ++y) {
+      a.fillRun(y, z, 0, 6);
+      b.fillRun(y, z, 0, 6);
+    }
+  }
+  b.frame().origin = glm::dvec3(4.0, 0.0, 0.0);
+  ASSERT_TRUE(io::saveVxm(a, dir / "a.vxm").ok());
+  ASSERT_TRUE(io::saveVxm(b, dir / "b.vxm").ok());
+  ASSERT_TRUE(run(state, "open " + (dir / "a.vxm").string()).ok());
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  ASSERT_TRUE(run(state, "add-part " + (dir / "b.vxm").string()).ok());
+  ASSERT_TRUE(pump(state, [&] { return currentParts(state) && currentParts(state)->size() == 2; }));
+  ASSERT_EQ(state.model.filledCount(), 10 * 4 * 4);
+}
+
+TEST(AppParts, aPartMovesAndTurnsOnTheLatticeUndoably) {
+  test::TempDir dir;
+  AppState state;
+  openTwoBlocks(state, dir);
+  ASSERT_TRUE(run(state, "select-part 2").ok());
+
+  // Moved 2 model units (2 voxels) along X: the blocks no longer overlap, the model grows to the new extent.
+  ASSERT_TRUE(run(state, "place-part 2 2 0 0").ok());
+  EXPECT_EQ(currentParts(state)->part(1).placement.translation, glm::ivec3(2, 0, 0));
+  EXPECT_EQ(state.model.dims(), (Dims{12, 4, 4}));
+  EXPECT_EQ(state.model.filledCount(), 2 * 6 * 4 * 4);
+  EXPECT_EQ(state.parts_ui.selected, (std::vector<size_t>{1}));  // the selection stays
+  // A translation snaps to the nearest whole voxel: 0.6 is one voxel (overlap 1 x 4 x 4).
+  ASSERT_TRUE(run(state, "place-part 2 0.6 0 0").ok());
+  EXPECT_EQ(currentParts(state)->part(1).placement.translation, glm::ivec3(1, 0, 0));
+  EXPECT_EQ(state.model.filledCount(), 11 * 4 * 4);
+  // Undo goes back one placement at a time.
+  undo(state);
+  EXPECT_EQ(currentParts(state)->part(1).placement.translation, glm::ivec3(2, 0, 0));
+  EXPECT_EQ(state.model.dims(), (Dims{12, 4, 4}));
+  undo(state);
+  EXPECT_TRUE(currentParts(state)->part(1).placement.identity());
+  EXPECT_EQ(state.model.dims(), (Dims{10, 4, 4}));
+  redo(state);
+  EXPECT_EQ(state.model.dims(), (Dims{12, 4, 4}));
+
+  // A quarter turn of a (6 x 4 x 4) about Z: 4 x 6 x 4 about its centre, so it covers X 1..4 and Y -1..4; with b at
+  // X 6..11 the model is the box X 1..11, Y -1..4 (11 x 6 x 4 voxels).
+  ASSERT_TRUE(run(state, "turn-part 1 z").ok());
+  const Assembly& turned = *currentParts(state);
+  EXPECT_EQ(turned.part(0).placement.quarter_turns, glm::ivec3(0, 0, 1));
+  const LatticeGrid a_placed = turned.placedVoxels(0);
+  EXPECT_EQ(a_placed.box(), (Box3i{{1, -1, 0}, {5, 5, 4}}));
+  EXPECT_EQ(a_placed.grid.filledCount(), 6 * 4 * 4);
+  EXPECT_EQ(state.model.dims(), (Dims{11, 6, 4}));
+  EXPECT_EQ(state.model.filledCount(), 2 * 6 * 4 * 4);
+  // Four quarter turns are none; the model is the moved pair again.
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(run(state, "turn-part 1 z").ok());
+  EXPECT_TRUE(currentParts(state)->part(0).placement.identity());
+  EXPECT_EQ(state.model.dims(), (Dims{12, 4, 4}));
+  // Both at once, and back to where they were added: the interference sees the placement.
+  ASSERT_TRUE(run(state, "place-part 1 0 0 0 1 0 0").ok());
+  EXPECT_EQ(currentParts(state)->part(0).placement.quarter_turns, glm::ivec3(1, 0, 0));
+  ASSERT_TRUE(run(state, "place-part 1 0 0 0 0 0 0").ok());
+  ASSERT_TRUE(run(state, "place-part 2 0 0 0").ok());
+  EXPECT_EQ(state.model.dims(), (Dims{10, 4, 4}));
+  ASSERT_TRUE(run(state, "interference").ok());
+  ASSERT_TRUE(pump(state, [&] { return currentInterference(state) != nullptr; }));
+  ASSERT_EQ(currentInterference(state)->pairs.size(), 1u);
+  EXPECT_EQ(currentInterference(state)->pairs[0].voxels, 2 * 4 * 4);
+
+  // Bad values say why.
+  EXPECT_FALSE(run(state, "place-part 3 0 0 0").ok());
+  EXPECT_FALSE(run(state, "place-part 1 a 0 0").ok());
+  EXPECT_FALSE(run(state, "place-part 1 0 0 0 1 0").ok());
+  EXPECT_FALSE(run(state, "turn-part 1 w").ok());
+}
+
+TEST(AppParts, aPartsColourIsSetAndDrawnWithoutANewModelState) {
+  test::TempDir dir;
+  AppState state;
+  openTwoBlocks(state, dir);
+  const uint64_t version = state.doc.model->version;
+  const size_t undo_depth = state.doc.undo_stack.size();
+  ASSERT_TRUE(run(state, "part-colour 1 #ff8000").ok());
+  EXPECT_EQ(currentParts(state)->part(0).colour, glm::vec3(1.0f, 128.0f / 255.0f, 0.0f));
+  ASSERT_TRUE(run(state, "part-colour 2 0 0.5 1").ok());
+  EXPECT_EQ(currentParts(state)->part(1).colour, glm::vec3(0.0f, 0.5f, 1.0f));
+  // How the parts are shown, like visibility: the same model state, nothing to undo.
+  EXPECT_EQ(state.doc.model->version, version);
+  EXPECT_EQ(state.doc.undo_stack.size(), undo_depth);
+  EXPECT_FALSE(run(state, "part-colour 1 1.5 0 0").ok());
+  EXPECT_FALSE(run(state, "part-colour 1 #12345").ok());
+  EXPECT_FALSE(run(state, "part-colour 1 red").ok());
+  EXPECT_EQ(currentParts(state)->part(0).colour, glm::vec3(1.0f, 128.0f / 255.0f, 0.0f));
+}
+
+TEST(AppParts, eachPartIsSavedToAFolderOnTheLattice) {
+  test::TempDir dir;
+  AppState state;
+  openTwoBlocks(state, dir);
+  ASSERT_TRUE(run(state, "place-part 2 2 0 0").ok());
+  ASSERT_TRUE(run(state, "save-parts " + (dir / "out").string()).ok());
+  auto a = io::loadVxm(dir / "out" / "01_a.vxm");
+  auto b = io::loadVxm(dir / "out" / "02_b.vxm");
+  ASSERT_TRUE(a.ok()) << a.error().message;
+  ASSERT_TRUE(b.ok()) << b.error().message;
+  EXPECT_EQ(a->filledCount(), 6 * 4 * 4);
+  EXPECT_EQ(b->filledCount(), 6 * 4 * 4);
+  EXPECT_EQ(a->frame().origin, glm::dvec3(0.0));
+  EXPECT_EQ(b->frame().origin, glm::dvec3(6.0, 0.0, 0.0));  // added at 4, moved by 2
+  EXPECT_NE(state.status_message.find("2 parts"), std::string::npos) << state.status_message;
+  // Read back as parts, they make the same scene (the union the model shows).
+  AppState again;
+  ASSERT_TRUE(run(again, "open " + (dir / "out" / "01_a.vxm").string()).ok());
+  ASSERT_TRUE(pump(again, [&] { return again.doc.model.has_value(); }));
+  ASSERT_TRUE(run(again, "add-part " + (dir / "out" / "02_b.vxm").string()).ok());
+  ASSERT_TRUE(pump(again, [&] { return currentParts(again) && currentParts(again)->size() == 2; }));
+  EXPECT_EQ(again.model.dims(), state.model.dims());
+  EXPECT_EQ(again.model.filledCount(), state.model.filledCount());
+  // Save (the union) is the other choice, as before.
+  ASSERT_TRUE(run(state, "save " + (dir / "union.vxm").string()).ok());
+  auto u = io::loadVxm(dir / "union.vxm");
+  ASSERT_TRUE(u.ok());
+  EXPECT_EQ(u->filledCount(), 12 * 4 * 4);
+  // A folder that cannot be made: an error naming it, no file written.
+  ASSERT_TRUE(io::saveVxm(VoxelGrid(Dims{1, 1, 1}), dir / "taken.vxm").ok());
+  const Status s = run(state, "save-parts " + (dir / "taken.vxm" / "sub").string());
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.error().message.find("taken.vxm"), std::string::npos) << s.error().message;
+  // Without parts there is nothing to save part by part.
+  AppState one;
+  ASSERT_TRUE(run(one, "open " + (dir / "a.vxm").string()).ok());
+  ASSERT_TRUE(pump(one, [&] { return one.doc.model.has_value(); }));
+  EXPECT_FALSE(actionEnabled(one, action(ActionId::kSaveParts)));
+}
+
+TEST(AppParts, theClearanceOfTwoPartsIsTheLibrarysAndMarksTwoVoxels) {
+  test::TempDir dir;
+  AppState state;
+  openTwoBlocks(state, dir);
+  // Touching (sharing voxels): no gap.
+  ASSERT_TRUE(run(state, "clearance 1 2").ok());
+  ASSERT_TRUE(pump(state, [&] { return currentClearance(state) != nullptr; }));
+  EXPECT_TRUE(currentClearance(state)->touching);
+  EXPECT_NE(clearanceText(state).find("touch"), std::string::npos) << clearanceText(state);
+  glm::ivec3 va, vb;
+  EXPECT_FALSE(clearanceVoxels(state, va, vb));
+
+  // b moved 4 voxels on: a covers X 0..5, b X 8..13; the closest voxels' centres are 3 voxels apart, a gap of 2.
+  ASSERT_TRUE(run(state, "place-part 2 4 0 0").ok());
+  EXPECT_EQ(currentClearance(state), nullptr);  // found for the previous state
+  ASSERT_TRUE(run(state, "select-part 1 2").ok());
+  ASSERT_TRUE(dispatch(state, ActionId::kClearance));  // the panel's button: the two selected
+  ASSERT_TRUE(pump(state, [&] { return currentClearance(state) != nullptr; }));
+  const Clearance& c = *currentClearance(state);
+  const Assembly& parts = *currentParts(state);
+  auto lib = findClearance(parts.placedVoxels(0), parts.placedVoxels(1), parts.lattice());
+  ASSERT_TRUE(lib.ok());
+  EXPECT_FALSE(c.touching);
+  EXPECT_DOUBLE_EQ(c.gap, 2.0);
+  EXPECT_DOUBLE_EQ(c.gap, lib->gap);
+  EXPECT_EQ(c.voxel_a, lib->voxel_a);
+  EXPECT_EQ(c.voxel_b, lib->voxel_b);
+  EXPECT_EQ(c.voxel_a.x, 5);
+  EXPECT_EQ(c.voxel_b.x, 8);
+  ASSERT_TRUE(clearanceVoxels(state, va, vb));
+  EXPECT_EQ(va, c.voxel_a - parts.extent().min);  // the model's voxel coordinates
+  EXPECT_EQ(vb, c.voxel_b - parts.extent().min);
+  EXPECT_NE(clearanceText(state).find("Gap between a.vxm and b.vxm: 2 model units"), std::string::npos)
+      << clearanceText(state);
+  // Shown while the two parts are the selection.
+  ASSERT_TRUE(run(state, "select-part 2").ok());
+  EXPECT_TRUE(clearanceText(state).empty());
+  EXPECT_FALSE(clearanceVoxels(state, va, vb));
+  ASSERT_TRUE(run(state, "select-part 2 1").ok());
+  EXPECT_TRUE(clearanceVoxels(state, va, vb));
+  EXPECT_FALSE(run(state, "clearance 1 1").ok());
+  EXPECT_FALSE(run(state, "clearance 1 3").ok());
+  // Esc (Model > Cancel) drops a clearance under way: nothing arrives for it.
+  ASSERT_TRUE(run(state, "place-part 2 5 0 0").ok());
+  ASSERT_TRUE(run(state, "clearance 1 2").ok());
+  ASSERT_TRUE(actionEnabled(state, action(ActionId::kCancelJob)));
+  ASSERT_TRUE(run(state, "cancel").ok());
+  EXPECT_FALSE(state.clearance_job.active());
+  for (int i = 0; i < 20; ++i) updateDocument(state);
+  EXPECT_EQ(currentClearance(state), nullptr);
+}
+
+TEST(AppParts, theInterferenceSearchShowsProgressAndCancels) {
+  test::TempDir dir;
+  AppState state;
+  openTwoBlocks(state, dir);
+  EXPECT_FALSE(actionEnabled(state, action(ActionId::kCancelInterference)));  // nothing running
+  // A scene whose interference takes a while: 30 blocks of 128^3 voxels, every pair overlapping (the parts are set
+  // in place, as visibility is, to skip 30 part jobs).
+  auto scene = std::make_shared<Assembly>(currentParts(state)->lattice());
+  for (int i = 0; i < 30; ++i) {
+    VoxelGrid g(Dims{128, 128, 128});
+    for (int32_t z = 0; z < 128; ++z) {
+      for (int32_t y = 0; y < 128; ++y) g.fillRun(y, z, 0, 128);
+    }
+    scene->addPart(LatticeGrid{std::move(g), glm::ivec3(i, 0, 0)}, "block " + std::to_string(i));
+  }
+  state.doc.model->parts = scene;
+  ASSERT_TRUE(run(state, "interference").ok());
+  ASSERT_TRUE(actionEnabled(state, action(ActionId::kCancelInterference)));
+  ASSERT_TRUE(run(state, "cancel-interference").ok());
+  ASSERT_TRUE(pump(state, [&] { return !state.interference_job.active(); }));
+  EXPECT_EQ(currentInterference(state), nullptr);
+  EXPECT_EQ(state.parts_ui.interference_cancelled_version, state.doc.model->version);
+  EXPECT_TRUE(state.errors.messages.empty());  // a cancel is not an error
+  // Esc (Model > Cancel) stops it too, as it stops the other background jobs.
+  ASSERT_TRUE(run(state, "interference").ok());
+  ASSERT_TRUE(actionEnabled(state, action(ActionId::kCancelJob)));
+  ASSERT_TRUE(run(state, "cancel").ok());
+  ASSERT_TRUE(pump(state, [&] { return !state.interference_job.active(); }));
+  EXPECT_EQ(currentInterference(state), nullptr);
+  EXPECT_EQ(state.parts_ui.interference_cancelled_version, state.doc.model->version);
+  // Asked again, it runs to the end: every pair of the 30 blocks.
+  ASSERT_TRUE(run(state, "interference").ok());
+  EXPECT_EQ(state.parts_ui.interference_cancelled_version, 0u);
+  ASSERT_TRUE(pump(state, [&] { return currentInterference(state) != nullptr; }));
+  EXPECT_EQ(currentInterference(state)->pairs.size(), 30u * 29u / 2u);
+}
+
 }  // namespace
 }  // namespace vox::app

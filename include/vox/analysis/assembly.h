@@ -68,6 +68,10 @@ struct Interference {
 // two or more (three or more) parts are counted by a bit-sliced counter over the union of the boxes, one layer at a
 // time. Cost: about one union of all parts plus the common boxes of the pairs that meet; parallel over layers.
 Interference findInterference(std::span<const LatticeGrid> parts, const Lattice& lattice);
+// As above, reporting progress (the pairs compared, then the layers counted) and stopping with ErrorCode::kCancelled
+// as soon as `progress` returns false.
+Result<Interference> findInterference(std::span<const LatticeGrid> parts, const Lattice& lattice,
+                                      const ProgressFn& progress);
 // The voxels a and b share (empty grid over their boxes' intersection, or a 1-voxel empty grid when they do not meet).
 LatticeGrid sharedVoxels(const LatticeGrid& a, const LatticeGrid& b, const Lattice& lattice);
 

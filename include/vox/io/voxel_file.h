@@ -37,4 +37,14 @@ bool isVoxelFile(const std::filesystem::path& path);
 Result<VoxelGrid> loadVoxelFile(const std::filesystem::path& path);
 Status saveVoxelFile(const VoxelGrid& grid, const std::filesystem::path& path);
 
+// Several grids as voxel files (each format by its path's extension), written as one: the directories are created,
+// every file is encoded and written under a temporary name, and only when all are complete are they renamed over
+// their targets (writeFilesAtomic), so a failure leaves every target as it was. An unknown extension is refused
+// before anything is written.
+struct VoxelFileToWrite {
+  std::filesystem::path path;
+  VoxelGrid grid;
+};
+Status saveVoxelFiles(std::span<const VoxelFileToWrite> files);
+
 }  // namespace vox::io

@@ -21,8 +21,9 @@ bool isSave(BrowserPurpose p) { return p != BrowserPurpose::kOpen && p != Browse
 void accept(AppState& state) {
   FileBrowser& b = state.browser;
   std::filesystem::path name = b.file_name;
-  if (isSave(b.purpose) && !name.empty() && !matchesExtension(name.string(), browserExtensions(b.purpose))) {
-    name += browserExtensions(b.purpose).front();  // "part" -> "part.vxm"
+  const std::vector<std::string> extensions = browserExtensions(b.purpose);  // none: a folder's name
+  if (isSave(b.purpose) && !name.empty() && !extensions.empty() && !matchesExtension(name.string(), extensions)) {
+    name += extensions.front();  // "part" -> "part.vxm"
   }
   const std::filesystem::path path = name.is_absolute() ? name : b.directory / name;
   if (acceptBrowserPath(state, b.purpose, path)) ImGui::CloseCurrentPopup();
@@ -80,8 +81,13 @@ void drawFileBrowser(AppState& state) {
     }
   }
   std::error_code ec;
-  if (isSave(b.purpose) && !b.file_name.empty() && std::filesystem::exists(b.directory / b.file_name, ec)) {
+  const bool folder = browserExtensions(b.purpose).empty();  // the name is a folder's (save each part)
+  if (folder && !b.file_name.empty() && std::filesystem::is_directory(b.directory / b.file_name, ec)) {
+    ImGui::TextDisabled("%s exists: files of the same names in it will be replaced.", b.file_name.c_str());
+  } else if (isSave(b.purpose) && !b.file_name.empty() && std::filesystem::exists(b.directory / b.file_name, ec)) {
     ImGui::TextDisabled("%s exists and will be replaced.", b.file_name.c_str());
+  } else if (folder) {
+    ImGui::TextDisabled("Showing folders; the folder named above is made when missing");
   } else {
     std::string exts;
     for (const std::string& e : browserExtensions(b.purpose)) exts += (exts.empty() ? "" : ", ") + e;

@@ -45,7 +45,7 @@ void drawMainMenu(AppState& state) {
         if (!chosen.empty()) requestOpen(state, chosen);
       }
     }
-    if (a.id == ActionId::kSaveAs || a.id == ActionId::kExportXrayCsv || a.id == ActionId::kCancelJob ||
+    if (a.id == ActionId::kSaveParts || a.id == ActionId::kExportXrayCsv || a.id == ActionId::kCancelJob ||
         a.id == ActionId::kViewNegZ || a.id == ActionId::kZoomOut || a.id == ActionId::kViewDisputed ||
         a.id == ActionId::kRedo || a.id == ActionId::kExportThickness) {
       ImGui::Separator();

@@ -1,8 +1,10 @@
 // The Parts panel: the document as a scene of parts on one lattice (app/parts.h). The list (colour, visibility, name,
 // volume), selection (click; Ctrl+click adds), splitting into bodies, adding a part from a file, a Boolean of two
-// selected parts, removing one, what Section, X-ray and mass work on, and the interference list: clicking a pair
-// shows its overlap in red in the 3D view and in the section beside the panel. Widgets dispatch actions.
+// selected parts, removing one, what Section, X-ray and mass work on, a part's placement (move, quarter turns) and
+// colour, the clearance of two parts, and the interference list: clicking a pair shows its overlap in red in the 3D
+// view and in the section beside the panel. Widgets dispatch actions.
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 
@@ -65,8 +67,15 @@ void drawPartRow(AppState& state, const Assembly& parts, size_t i, int64_t voxel
   ImGui::TableNextRow();
   ImGui::PushID(int(i));
   ImGui::TableSetColumnIndex(0);
-  ImGui::ColorButton("##colour", ImVec4(p.colour.x, p.colour.y, p.colour.z, 1.0f), ImGuiColorEditFlags_NoTooltip,
-                     ImVec2(ImGui::GetFrameHeight() * 0.8f, ImGui::GetFrameHeight() * 0.8f));
+  // The swatch opens a colour picker; the part's points are drawn in the colour as it is picked.
+  float colour[3] = {p.colour.x, p.colour.y, p.colour.z};
+  if (ImGui::ColorEdit3("##colour", colour,
+                        ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_NoLabel | ImGuiColorEditFlags_NoTooltip)) {
+    dispatchValues(
+        state, ActionId::kPartColour,
+        {std::to_string(i + 1), std::to_string(colour[0]), std::to_string(colour[1]), std::to_string(colour[2])});
+  }
+  if (i == 0) markWidget("part_colour_first");
   ImGui::SameLine();
   bool visible = p.visible;
   if (ImGui::Checkbox("##visible", &visible)) {
@@ -135,6 +144,77 @@ void drawPartOperations(AppState& state, const Assembly& parts) {
   ImGui::EndDisabled();
 }
 
+// Placement of the first selected part: a translation in model units (snapped to whole voxels when an edit ends) and
+// quarter turns about X, Y and Z, each a new model state (undoable).
+void drawPlacement(AppState& state, const Assembly& parts) {
+  PartsUi& ui = state.parts_ui;
+  if (ui.selected.empty()) {
+    ImGui::TextDisabled("Select a part to move or turn it.");
+    return;
+  }
+  const size_t i = ui.selected.front();
+  const Part& p = parts.part(i);
+  const double h = parts.lattice().voxel_size;
+  if (ui.translation_edit_part != i || ui.translation_edit_version != state.doc.model->version) {
+    ui.translation_edit = glm::dvec3(p.placement.translation) * h;
+    ui.translation_edit_part = i;
+    ui.translation_edit_version = state.doc.model->version;
+  }
+  ImGui::TextWrapped("Placement of %s (moves snap to whole voxels):", p.name.c_str());
+  const char* axes[3] = {"X##move", "Y##move", "Z##move"};
+  bool edited = false;
+  for (int k = 0; k < 3; ++k) {
+    if (k > 0) ImGui::SameLine();
+    ImGui::SetNextItemWidth(90.0f);
+    ImGui::InputDouble(axes[k], &ui.translation_edit[k], 0.0, 0.0, "%.4g");
+    if (k == 0) markWidget("part_move_x");
+    edited = edited || ImGui::IsItemDeactivatedAfterEdit();
+  }
+  if (edited) {
+    const glm::dvec3 t = ui.translation_edit;
+    dispatchValues(state, ActionId::kPlacePart,
+                   {std::to_string(i + 1), std::to_string(t.x), std::to_string(t.y), std::to_string(t.z),
+                    std::to_string(p.placement.quarter_turns.x), std::to_string(p.placement.quarter_turns.y),
+                    std::to_string(p.placement.quarter_turns.z)});
+    ui.translation_edit_part = SIZE_MAX;  // shows the snapped value next frame
+  }
+  const char* turn_labels[3] = {"Turn X +90", "Turn Y +90", "Turn Z +90"};
+  const char* axis_words[3] = {"x", "y", "z"};
+  for (int k = 0; k < 3; ++k) {
+    if (k > 0) ImGui::SameLine();
+    if (ImGui::Button(turn_labels[k]))
+      dispatchValues(state, ActionId::kTurnPart, {std::to_string(i + 1), axis_words[k]});
+  }
+  ImGui::SameLine();
+  ImGui::BeginDisabled(p.placement.identity());
+  if (ImGui::Button("Reset")) {
+    dispatchValues(state, ActionId::kPlacePart, {std::to_string(i + 1), "0", "0", "0", "0", "0", "0"});
+  }
+  ImGui::EndDisabled();
+  const glm::ivec3 q = p.placement.quarter_turns;
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  ImGui::TextWrapped("Turned %d, %d, %d degrees about X, Y, Z; moved %d, %d, %d voxels.", 90 * q.x, 90 * q.y, 90 * q.z,
+                     p.placement.translation.x, p.placement.translation.y, p.placement.translation.z);
+  ImGui::PopStyleColor();
+}
+
+// Clearance of the two selected parts: the smallest gap and where (the two voxels are marked in the 3D view).
+void drawClearance(AppState& state) {
+  const PartsUi& ui = state.parts_ui;
+  ImGui::BeginDisabled(ui.selected.size() < 2 || state.clearance_job.active());
+  if (ImGui::Button("Clearance of the two selected")) dispatch(state, ActionId::kClearance);
+  markWidget("part_clearance");
+  ImGui::EndDisabled();
+  if (state.clearance_job.active()) {
+    ImGui::SameLine();
+    ImGui::Text("Finding the clearance... %.1f s", nowSeconds() - state.job_started);
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel##clearance")) dispatch(state, ActionId::kCancelJob);
+  }
+  const std::string text = clearanceText(state);
+  if (!text.empty()) ImGui::TextWrapped("%s", text.c_str());
+}
+
 void drawPairList(AppState& state, const Assembly& parts, const Interference& inter) {
   const std::string units = parts.lattice().units;
   const double h = parts.lattice().voxel_size;
@@ -181,8 +261,19 @@ void drawInterference(AppState& state, const Assembly& parts) {
   if (const Interference* inter = currentInterference(state)) {
     drawPairList(state, parts, *inter);
   } else if (state.interference_job.active()) {
-    ImGui::Text("Finding interference... %.1f s", nowSeconds() - state.job_started);
+    char overlay[48];
+    std::snprintf(overlay, sizeof overlay, "%.0f%%   %.1f s", state.interference_job.progress() * 100.0,
+                  nowSeconds() - state.job_started);
+    ImGui::TextUnformatted("Finding interference...");
+    ImGui::ProgressBar(float(state.interference_job.progress()), ImVec2(-1.0f, 0.0f), overlay);
+    ImGui::BeginDisabled(state.interference_job.cancelRequested());
+    if (ImGui::Button("Cancel##interference")) dispatch(state, ActionId::kCancelInterference);
+    markWidget("interference_cancel");
+    ImGui::EndDisabled();
   } else {
+    if (state.parts_ui.interference_cancelled_version == state.doc.model->version) {
+      ImGui::TextUnformatted("Cancelled.");
+    }
     ImGui::TextWrapped("Which parts share voxels, how many, and where.");
     if (ImGui::Button("Find interference")) dispatch(state, ActionId::kInterference);
     markWidget("find_interference");
@@ -218,6 +309,8 @@ void drawPartsPanel(AppState& state) {
   drawSplit(state);
   drawPartList(state, *parts);
   drawPartOperations(state, *parts);
+  drawPlacement(state, *parts);
+  drawClearance(state);
   drawInterference(state, *parts);
 }
 

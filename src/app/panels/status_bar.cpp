@@ -31,6 +31,12 @@ void drawStatusBar(AppState& state) {
     ImGui::TextUnformatted("Computing thickness");
     ImGui::SameLine();
     ImGui::ProgressBar(float(state.thickness.progress()), ImVec2(200.0f, 0.0f));
+  } else if (state.parts_job.active() || state.interference_job.active()) {  // the Parts panel's; Esc cancels
+    const bool parts = state.parts_job.active();
+    ImGui::TextUnformatted(parts ? state.parts_job.label().c_str() : state.interference_job.label().c_str());
+    ImGui::SameLine();
+    ImGui::ProgressBar(float(parts ? state.parts_job.progress() : state.interference_job.progress()),
+                       ImVec2(200.0f, 0.0f));
   } else if (!state.status_message.empty() && nowSeconds() - state.status_since < 8.0) {
     ImGui::TextUnformatted(state.status_message.c_str());
   } else if (!state.model.empty()) {

@@ -140,6 +140,38 @@ TEST(Interference, twoBoxesOverlapInAKnownBlock) {
   EXPECT_EQ(sharedVoxels(a, b, lattice).grid.filledCount(), 120);
 }
 
+TEST(Interference, progressReachesTheEndAndCancelStops) {
+  const Lattice lattice;
+  std::vector<LatticeGrid> parts;
+  for (int i = 0; i < 6; ++i) parts.push_back(randomPart({8 * i, 0, 0}, {40, 20, 20}, 4, uint32_t(30 + i)));
+  const Interference plain = findInterference(parts, lattice);
+  ASSERT_FALSE(plain.pairs.empty());
+  // With a callback: the same pairs, fractions that never go back, ending at 1.
+  std::vector<double> seen;
+  auto with = findInterference(parts, lattice, [&](double f) {
+    seen.push_back(f);
+    return true;
+  });
+  ASSERT_TRUE(with.ok());
+  ASSERT_EQ(with->pairs.size(), plain.pairs.size());
+  for (size_t i = 0; i < plain.pairs.size(); ++i) {
+    EXPECT_EQ(with->pairs[i].a, plain.pairs[i].a);
+    EXPECT_EQ(with->pairs[i].b, plain.pairs[i].b);
+    EXPECT_EQ(with->pairs[i].voxels, plain.pairs[i].voxels);
+  }
+  EXPECT_EQ(with->overlap_voxels, plain.overlap_voxels);
+  ASSERT_GE(seen.size(), 2u);
+  for (size_t i = 1; i < seen.size(); ++i) EXPECT_GE(seen[i], seen[i - 1]);
+  EXPECT_DOUBLE_EQ(seen.back(), 1.0);
+  // A callback that asks to stop: cancelled, whether it asks at once or half way.
+  for (int after : {0, 3}) {
+    int calls = 0;
+    auto stopped = findInterference(parts, lattice, [&](double) { return calls++ < after; });
+    ASSERT_FALSE(stopped.ok()) << after;
+    EXPECT_EQ(stopped.error().code, ErrorCode::kCancelled);
+  }
+}
+
 TEST(Interference, randomPartsMatchVoxelCounts) {
   const Lattice lattice;
   std::vector<LatticeGrid> parts;

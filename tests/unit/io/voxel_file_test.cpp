@@ -4,6 +4,7 @@
 
 #include <array>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -335,6 +336,43 @@ TEST(VoxelFile, emptyGridIsNotSaved) {
   const Status s = saveVxm(VoxelGrid(), tmp / "e.vxm");
   ASSERT_FALSE(s.ok());
   EXPECT_EQ(s.error().code, ErrorCode::kInvalidArgument);
+}
+
+TEST(VoxelFiles, severalGridsAreWrittenEachByItsExtensionIntoNewFolders) {
+  test::TempDir tmp;
+  VoxelGrid a(Dims{5, 3, 2}), b(Dims{4, 4, 4});
+  a.fillRun(1, 1, 0, 5);
+  b.fillRun(2, 3, 1, 3);
+  b.frame().origin = glm::dvec3(2.0, 0.0, 0.0);
+  const std::vector<VoxelFileToWrite> files{{tmp / "out" / "a.vxm", a}, {tmp / "out" / "deep" / "b.binvox", b}};
+  ASSERT_TRUE(saveVoxelFiles(files).ok());
+  auto ra = loadVoxelFile(tmp / "out" / "a.vxm");
+  auto rb = loadVoxelFile(tmp / "out" / "deep" / "b.binvox");
+  ASSERT_TRUE(ra.ok());
+  ASSERT_TRUE(rb.ok());
+  EXPECT_EQ(ra->dims(), a.dims());
+  EXPECT_EQ(ra->filledCount(), 5);
+  EXPECT_EQ(rb->filledCount(), 2);
+  EXPECT_EQ(rb->frame().origin, b.frame().origin);
+}
+
+TEST(VoxelFiles, nothingIsWrittenWhenOneFileCannotBe) {
+  test::TempDir tmp;
+  VoxelGrid g(Dims{3, 3, 3});
+  g.fillRun(0, 0, 0, 3);
+  // An unknown extension is refused before any file is written.
+  const std::vector<VoxelFileToWrite> bad_ext{{tmp / "a.vxm", g}, {tmp / "b.txt", g}};
+  const Status s1 = saveVoxelFiles(bad_ext);
+  ASSERT_FALSE(s1.ok());
+  EXPECT_NE(s1.error().message.find("b.txt"), std::string::npos) << s1.error().message;
+  EXPECT_FALSE(std::filesystem::exists(tmp / "a.vxm"));
+  // A folder that cannot be made (a file stands where it would be): neither file appears.
+  ASSERT_TRUE(writeFileAtomic(tmp / "blocker", std::string("not a folder")).ok());
+  const std::vector<VoxelFileToWrite> bad_dir{{tmp / "ok" / "a.vxm", g}, {tmp / "blocker" / "b.vxm", g}};
+  const Status s2 = saveVoxelFiles(bad_dir);
+  ASSERT_FALSE(s2.ok());
+  EXPECT_NE(s2.error().message.find("blocker"), std::string::npos) << s2.error().message;
+  EXPECT_FALSE(std::filesystem::exists(tmp / "ok" / "a.vxm"));
 }
 
 }  // namespace
