@@ -15,8 +15,10 @@
 
 #include <cmath>
 #include <memory>
+#include <set>
 
 #include <assimp/DefaultIOSystem.h>
+#include <assimp/BaseImporter.h>
 #include <assimp/Importer.hpp>
 #include <assimp/IOSystem.hpp>
 #include <assimp/MemoryIOWrapper.h>
@@ -207,6 +209,31 @@ std::vector<MeshTriangles> meshTriangles(const aiScene& scene, const std::vector
   return out;
 }
 
+// assimp's ReadFile takes the one importer that claims the file's extension; where several do (glTF 1 and 2 both
+// claim .gltf and .glb), it asks each to recognise the content, and when none does it goes on to try every other
+// importer by signature. assimp 5.2's 3MF importer then aborts the process on a zip without a package relationship
+// (found by tests/fuzz/fuzz_mesh_file.cpp: a .glb whose JSON is cut short, followed by a zip). So a file goes to
+// ReadFile only when one of the importers of its own extension will read it.
+bool ownImporterRecognises(const Assimp::Importer& importer, const std::string& ext, const std::string& file) {
+  std::vector<Assimp::BaseImporter*> own;
+  for (size_t i = 0; i < importer.GetImporterCount(); ++i) {
+    Assimp::BaseImporter* candidate = importer.GetImporter(i);
+    if (candidate == nullptr) continue;
+    std::set<std::string> extensions;
+    candidate->GetExtensionList(extensions);
+    if (extensions.count(ext) > 0) own.push_back(candidate);
+  }
+  if (own.size() == 1) return true;  // ReadFile takes it without asking
+  for (Assimp::BaseImporter* candidate : own) {
+    try {
+      if (candidate->CanRead(file, importer.GetIOHandler(), true)) return true;
+    } catch (const std::exception&) {
+      // not this one
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 Result<MeshFileLoad> importWithAssimp(std::span<const uint8_t> bytes, const std::string& name, MeshFormat format,
@@ -219,6 +246,10 @@ Result<MeshFileLoad> importWithAssimp(std::span<const uint8_t> bytes, const std:
   const aiScene* scene = nullptr;
   std::vector<MeshTriangles> meshes;
   try {
+    if (!ownImporterRecognises(importer, ext, main_name)) {
+      return makeError(ErrorCode::kParse, name + ": not a readable " + meshFormatName(format) + " file (assimp's " +
+                                              meshFormatName(format) + " importers do not recognise its content)");
+    }
     scene = importer.ReadFile(main_name, 0);
     if (scene != nullptr && (scene->mNumMeshes == 0 || scene->mRootNode == nullptr)) {
       return makeError(ErrorCode::kParse, name + ": " + meshFormatName(format) + " file contains no triangles");
