@@ -140,7 +140,6 @@ int runRankZero(const MpiVoxelizeJob& job, const MpiWorld& world, Prepared& p, O
   std::optional<StreamedVoxelization> done;
   std::optional<Error> worker_error;
   uint64_t filled = 0;
-  bool started = false;
   // Appends slabs next .. upto - 1 (none of them rank 0's), each asked of its rank.
   auto fetch = [&](io::VxmLayerWriter& w, int32_t upto) -> Status {
     for (; next < upto; ++next) {
@@ -158,7 +157,6 @@ int runRankZero(const MpiVoxelizeJob& job, const MpiWorld& world, Prepared& p, O
     return Ok{};
   };
   const Status written = io::saveVxmInSlabs(job.out_path, p.dims, p.frame, [&](io::VxmLayerWriter& w) -> Status {
-    started = true;
     for (int r = 1; r < world.size; ++r) sendInts({0}, r, kTagStart);
     auto r = voxelizeInSlabs(
         p.mesh->mesh, p.params, L,
@@ -177,7 +175,6 @@ int runRankZero(const MpiVoxelizeJob& job, const MpiWorld& world, Prepared& p, O
   });
   const int code = written ? kExitOk : exitCodeFor(written.error());
   for (int r = 1; r < world.size; ++r) sendInts({code}, r, kTagEnd);
-  (void)started;
   if (!written) return out.fail(written.error());
   const double t_written = nowSeconds();
   // Every rank's figures: the warnings about the rays count them over all slabs.
@@ -227,20 +224,29 @@ int runOtherRank(const MpiVoxelizeJob& job, const MpiWorld& world, Prepared& p) 
       },
       {}, &p.mesh->topology, SlabShare{world.rank, world.size});
   if (stopped) return *stopped;
+  int code = kExitOk;
+  bool ended = false;
   if (!r) {
     // Rank 0 asks for the slab that failed (or ends the job first): it gets the error instead.
     const MPI_Status status = waitFor(0, MPI_ANY_TAG);
     const std::vector<int64_t> v = receiveInts(0, status.MPI_TAG);
-    if (status.MPI_TAG == kTagEnd) return int(v.at(0));
-    const std::string text = "rank " + std::to_string(world.rank) + ": " + job.mesh_path + ": " + r.error().message;
-    sendInts({v.at(0), 0, int64_t(r.error().code), int64_t(text.size())}, 0, kTagSlabHead);
-    sendBytes(textBytes(text), 0, kTagSlabBytes);
+    if (status.MPI_TAG == kTagEnd) {
+      code = int(v.at(0));
+      ended = true;
+    } else {
+      const std::string text = "rank " + std::to_string(world.rank) + ": " + job.mesh_path + ": " + r.error().message;
+      sendInts({v.at(0), 0, int64_t(r.error().code), int64_t(text.size())}, 0, kTagSlabHead);
+      sendBytes(textBytes(text), 0, kTagSlabBytes);
+    }
   }
-  const std::vector<int64_t> end = receiveInts(0, kTagEnd);
-  if (r && end.at(0) == kExitOk) {
-    sendInts({r->rays.odd, r->rays.unbalanced, peakRssBytes(), int64_t(r->largest_slab_bytes)}, 0, kTagReport);
+  if (!ended) code = int(receiveInts(0, kTagEnd).at(0));
+  // Rank 0 waits for every rank's figures once the file is written (a rank that failed after its last slab, with
+  // nothing of the file left to give, sends zeros).
+  if (code == kExitOk) {
+    const RayCounts rays = r ? r->rays : RayCounts{};
+    sendInts({rays.odd, rays.unbalanced, peakRssBytes(), r ? int64_t(r->largest_slab_bytes) : 0}, 0, kTagReport);
   }
-  return int(end.at(0));
+  return code;
 }
 
 int spreadOverRanks(const MpiVoxelizeJob& job, const MpiWorld& world, const std::function<int()>& alone) {
