@@ -2,15 +2,15 @@
 // JSON keys: triangles, dims, voxel_size, origin, filled, volume, load_s, voxelize_s, write_s, total_s, warnings;
 // also format, bodies, units, file_units, deflection, mode, mode_reason, disputed_voxels, strays_removed, grid_bytes
 // peak_rss_bytes and streamed (true: written in slabs, cli/voxelize_stream.h).
-#include <sys/resource.h>
-
 #include <new>
 
 #include <CLI/CLI.hpp>
 
 #include "cli/cmd_list.h"
 #include "cli/commands.h"
+#include "cli/batch.h"
 #include "cli/model_input.h"
+#include "cli/voxelize_mpi.h"
 #include "cli/voxelize_stream.h"
 #include "vox/io/voxel_file.h"
 #include "vox/voxelize/stream.h"
@@ -24,13 +24,7 @@ struct VoxelizeOptions {
   MeshOptions mesh_options;
 };
 
-int64_t peakRssBytes() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return int64_t(u.ru_maxrss) * 1024;  // Linux reports KiB
-}
-
-int runVoxelize(const VoxelizeOptions& o) {
+int runVoxelizeHere(const VoxelizeOptions& o) {
   Output out(o.json);
   const double t0 = nowSeconds();
   if (!io::isVoxelFile(o.out)) return out.fail(kExitUsage, o.out + ": unknown output format (use .vxm or .binvox)");
@@ -112,6 +106,21 @@ int runVoxelize(const VoxelizeOptions& o) {
   }
   out.say("wrote " + o.out + " in " + significant(t_written - t0, 3) + " s");
   return out.finish();
+}
+
+// Under mpirun or srun the slabs are spread over the ranks (cli/voxelize_mpi.h).
+int runVoxelize(const VoxelizeOptions& o) {
+  if (!launchedByMpi()) return runVoxelizeHere(o);
+  if (!mpiBuilt()) {
+    if (mpiWorldSizeFromEnvironment() > 1) {
+      Output out(o.json);
+      return out.fail(kExitUsage, "this voxmod was built without MPI: run 'voxmod voxelize' without mpirun or srun");
+    }
+    return runVoxelizeHere(o);
+  }
+  const MpiVoxelizeJob job{o.mesh, o.out, o.json, o.mesh_options.params.remove_strays || !o.disputed_out.empty(),
+                           o.mesh_options};
+  return voxelizeOverMpiRanks(job, [&] { return runVoxelizeHere(o); });
 }
 
 }  // namespace

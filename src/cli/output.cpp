@@ -10,13 +10,15 @@
 namespace vox::cli {
 
 void Output::say(const std::string& line) const {
+  if (quiet_) return;
   std::FILE* f = json_ ? stderr : stdout;
   std::fprintf(f, "%s\n", line.c_str());
 }
 
 void Output::warn(const std::string& line) {
-  std::fprintf(stderr, "warning: %s\n", line.c_str());
   warnings_.push_back(line);
+  if (quiet_) return;
+  std::fprintf(stderr, "warning: %s\n", line.c_str());
 }
 
 std::string significant(double v, int digits) {
@@ -46,6 +48,10 @@ Result<std::vector<uint8_t>> encodeFieldFile(const std::string& name, const Scal
 }
 
 void Output::note(const std::string& line) {
+  if (quiet_) {
+    notes_.push_back(line);
+    return;
+  }
   std::fprintf(stderr, "note: %s\n", line.c_str());
   notes_.push_back(line);
 }
@@ -64,6 +70,7 @@ int exitCodeFor(const Error& e) {
 int Output::fail(const Error& error) { return fail(exitCodeFor(error), error.message); }
 
 int Output::fail(int exit_code, const std::string& message) {
+  if (quiet_) return exit_code;
   std::fprintf(stderr, "voxmod: error: %s\n", message.c_str());
   if (json_) {
     data_["error"] = message;
@@ -75,6 +82,7 @@ int Output::fail(int exit_code, const std::string& message) {
 }
 
 int Output::finish() {
+  if (quiet_) return kExitOk;
   data_["warnings"] = warnings_;
   if (!notes_.empty()) data_["notes"] = notes_;
   if (json_) std::cout << data_.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << std::endl;

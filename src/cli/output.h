@@ -20,6 +20,10 @@ inline constexpr int kExitNoGL = 3;
 class Output {
  public:
   explicit Output(bool json) : json_(json) {}
+  // Prints nothing at all (an MPI rank other than 0, whose messages rank 0 prints); still collects the JSON object.
+  void silence() { quiet_ = true; }
+  const std::vector<std::string>& warnings() const { return warnings_; }
+  const std::vector<std::string>& notes() const { return notes_; }
   bool json() const { return json_; }
   nlohmann::ordered_json& data() { return data_; }
   // Human line: stdout without --json, stderr with it (stdout then holds only the JSON object).
@@ -35,6 +39,7 @@ class Output {
 
  private:
   bool json_;
+  bool quiet_ = false;
   nlohmann::ordered_json data_ = nlohmann::ordered_json::object();
   std::vector<std::string> warnings_;
   std::vector<std::string> notes_;

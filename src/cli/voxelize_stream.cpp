@@ -15,15 +15,11 @@
 
 namespace vox::cli {
 
-namespace {
-
-int64_t peakRss() {
+int64_t peakRssBytes() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
   return int64_t(u.ru_maxrss) * 1024;  // Linux reports KiB
 }
-
-}  // namespace
 
 int runStreamedVoxelize(const StreamedVoxelizeJob& job, io::MeshFileLoad& mesh, const VoxelizeParams& params,
                         Output& out) {
@@ -49,7 +45,12 @@ int runStreamedVoxelize(const StreamedVoxelizeJob& job, io::MeshFileLoad& mesh, 
     return Status(Ok{});
   });
   if (!written) return out.fail(written.error());
-  const double t_written = nowSeconds();
+  return reportStreamedVoxelize(job, mesh, frame, *done, nowSeconds(), out);
+}
+
+int reportStreamedVoxelize(const StreamedVoxelizeJob& job, const io::MeshFileLoad& mesh, const GridFrame& frame,
+                           const StreamedVoxelization& done_in, double t_written, Output& out) {
+  const StreamedVoxelization* done = &done_in;
   for (const std::string& w : done->warnings) out.warn(w);
   const Dims dims = done->dims;
   const double h = frame.voxel_size;
@@ -77,14 +78,14 @@ int runStreamedVoxelize(const StreamedVoxelizeJob& job, io::MeshFileLoad& mesh, 
   d["write_s"] = 0.0;
   d["total_s"] = t_written - job.t0;
   d["grid_bytes"] = done->largest_slab_bytes;
-  d["peak_rss_bytes"] = peakRss();
+  d["peak_rss_bytes"] = peakRssBytes();
   d["streamed"] = true;
   d["slabs"] = done->slabs;
   d["slab_layers"] = done->slab_layers;
   out.say("voxelized " + job.mesh_path + " (" + std::to_string(mesh.mesh.triangles.size()) + " triangles) to " +
           dimsText(dims) + " in " + std::to_string(done->slabs) + " slabs of " + std::to_string(done->slab_layers) +
-          " layers (the grid does not fit under the memory limit), " + std::to_string(done->filled) +
-          " filled voxels, mode " + fillModeName(done->mode_used) + " (" + done->mode_reason + ")");
+          " layers (" + job.reason + "), " + std::to_string(done->filled) + " filled voxels, mode " +
+          fillModeName(done->mode_used) + " (" + done->mode_reason + ")");
   out.say("wrote " + job.out_path + " in " + significant(t_written - job.t0, 3) + " s");
   return out.finish();
 }

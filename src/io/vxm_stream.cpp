@@ -28,6 +28,36 @@ using voxel_file_detail::emitRuns;
 
 // ---- Writing
 
+namespace {
+
+// The runs of layers [z0, z1) of `grid` into `enc` (which writes into `out`), a row at a time.
+void encodeLayers(const VoxelGrid& grid, int32_t z0, int32_t z1, RunEncoder& enc, const Writer& out,
+                  std::vector<uint64_t>& words) {
+  const uint64_t layer_voxels = uint64_t(grid.nx()) * uint64_t(grid.ny());
+  words.resize(size_t((int64_t(grid.nx()) + 63) / 64));
+  for (int32_t z = z0; z < z1 && out.status().ok(); ++z) {
+    if (!grid.layerAllocated(z)) {
+      enc.add(false, layer_voxels);
+      continue;
+    }
+    for (int32_t y = 0; y < grid.ny(); ++y) {
+      unpaddedRow(grid, y, z, words);
+      emitRuns(words.data(), grid.nx(), enc);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<uint8_t> encodeVxmLayers(const VoxelGrid& grid, int32_t z0, int32_t z1) {
+  Writer out;
+  RunEncoder enc(out);
+  std::vector<uint64_t> words;
+  encodeLayers(grid, std::max(z0, 0), std::min(z1, grid.nz()), enc, out, words);
+  enc.finish();
+  return std::move(out.bytes);
+}
+
 struct VxmLayerWriter::State {
   State(ByteSink& s, const Dims& d) : sink(s), dims(d), body(&s), enc(body) {}
   ByteSink& sink;
@@ -81,18 +111,42 @@ Status VxmLayerWriter::append(const VoxelGrid& grid, int32_t z0, int32_t z1) {
       s.layers + (z1 - z0) > s.dims.nz) {
     return makeError(ErrorCode::kInvalidArgument, "VxmLayerWriter: layers that do not belong to the grid");
   }
-  const uint64_t layer_voxels = uint64_t(grid.nx()) * uint64_t(grid.ny());
-  for (int32_t z = z0; z < z1 && s.body.status().ok(); ++z) {
-    if (!grid.layerAllocated(z)) {
-      s.enc.add(false, layer_voxels);
-      continue;
-    }
-    for (int32_t y = 0; y < grid.ny(); ++y) {
-      unpaddedRow(grid, y, z, s.words);
-      emitRuns(s.words.data(), grid.nx(), s.enc);
-    }
-  }
+  encodeLayers(grid, z0, z1, s.enc, s.body, s.words);
   s.layers += z1 - z0;
+  s.status = s.body.status();
+  return s.status;
+}
+
+Status VxmLayerWriter::appendRuns(std::span<const uint8_t> runs, int32_t layers) {
+  State& s = *state_;
+  if (!s.status.ok()) return s.status;
+  if (layers < 0 || s.layers + layers > s.dims.nz) {
+    return makeError(ErrorCode::kInvalidArgument, "VxmLayerWriter: layers that do not belong to the grid");
+  }
+  const uint64_t voxels = uint64_t(s.dims.nx) * uint64_t(s.dims.ny) * uint64_t(layers);
+  uint64_t covered = 0;
+  bool filled = false;
+  const uint8_t* p = runs.data();
+  const uint8_t* const end = p + runs.size();
+  while (p < end && s.body.status().ok()) {
+    uint64_t n = 0;
+    if (!readVarint(p, end, n) || n > voxels - covered) {
+      s.status =
+          Status(makeError(ErrorCode::kCorrupt, "VxmLayerWriter: runs that do not encode " + std::to_string(layers) +
+                                                    " layers (a bad varint, or more voxels than they hold)"));
+      return s.status;
+    }
+    s.enc.add(filled, n);  // the encoder joins a run that continues across the boundary
+    covered += n;
+    filled = !filled;
+  }
+  if (s.body.status().ok() && covered != voxels) {
+    s.status = Status(makeError(ErrorCode::kCorrupt, "VxmLayerWriter: runs cover " + std::to_string(covered) +
+                                                         " of the " + std::to_string(voxels) + " voxels of " +
+                                                         std::to_string(layers) + " layers"));
+    return s.status;
+  }
+  s.layers += layers;
   s.status = s.body.status();
   return s.status;
 }

@@ -219,6 +219,16 @@ void LayerFiller::warn(std::vector<std::string>& warnings) const {
   warnAboutRays(sumStats(state_->scratch, state_->caster), state_->rule, warnings);
 }
 
+RayCounts LayerFiller::counts() const {
+  const PassStats s = sumStats(state_->scratch, state_->caster);
+  return RayCounts{s.odd_rays, s.unbalanced_rays, s.rays};
+}
+
+void warnAboutRayCounts(const RayCounts& counts, FillMode mode, std::vector<std::string>& warnings) {
+  warnAboutRays(PassStats{counts.odd, counts.unbalanced, counts.rays},
+                mode == FillMode::kParity ? Rule::kParity : Rule::kNonzero, warnings);
+}
+
 bool fillAlongX(const PassInput& in, FillMode mode, VoxelizeResult& result) {
   VoxelGrid grid(in.placement.dims, in.frame);
   LayerFiller filler(in, mode);

@@ -21,6 +21,7 @@
 #include "vox/core/progress.h"
 #include "vox/core/result.h"
 #include "vox/core/voxel_grid.h"
+#include "vox/voxelize/stream.h"
 #include "vox/voxelize/voxelize.h"
 #include "voxelize/ray_caster.h"
 
@@ -206,6 +207,10 @@ bool fillAlongX(const PassInput& in, FillMode mode, VoxelizeResult& result);
 // The pass of fillAlongX a range of Z layers at a time, so that a grid too large for memory can be made in slabs
 // (stream.cpp): every layer gets exactly the voxels fillAlongX gives it, whatever the ranges. The ray caster is made
 // once for the whole grid; the counts behind the warnings add up over the ranges filled.
+// The warnings LayerFiller::warn gives for these counts (summed over fillers of the same grid), in `mode`
+// (parity or nonzero).
+void warnAboutRayCounts(const RayCounts& counts, FillMode mode, std::vector<std::string>& warnings);
+
 class LayerFiller {
  public:
   LayerFiller(const PassInput& in, FillMode mode);
@@ -217,6 +222,8 @@ class LayerFiller {
   bool fill(int32_t z0, int32_t z1, VoxelGrid& target, int32_t z_offset);
   // The warnings about the rays of every layer filled so far.
   void warn(std::vector<std::string>& warnings) const;
+  // What warn() counts: the rays of the layers filled so far that warn, and the rays of the whole grid.
+  RayCounts counts() const;
 
  private:
   struct State;

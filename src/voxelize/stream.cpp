@@ -53,7 +53,7 @@ Result<int32_t> streamSlabLayers(const Box3d& bounds, const VoxelizeParams& para
 
 Result<StreamedVoxelization> voxelizeInSlabs(const TriangleMesh& mesh, const VoxelizeParams& params,
                                              int32_t slab_layers, const SlabSink& sink, const ProgressFn& progress,
-                                             const MeshTopology* topology) {
+                                             const MeshTopology* topology, const SlabShare& share) {
   const std::string name = mesh.name.empty() ? std::string("the mesh") : mesh.name;
   if (Status usable = voxelize_detail::checkMesh(mesh, name); !usable) return usable.error();
   auto plan = planVoxelization(mesh.bounds(), params);
@@ -86,13 +86,21 @@ Result<StreamedVoxelization> voxelizeInSlabs(const TriangleMesh& mesh, const Vox
   r.mode_used = modes.mode_used;
   r.mode_reason = modes.mode_reason;
   r.slab_layers = std::clamp(slab_layers, 1, dims.nz);
+  if (share.parts < 1 || share.part < 0 || share.part >= share.parts) {
+    return makeError(ErrorCode::kInvalidArgument,
+                     "voxelizeInSlabs: share " + std::to_string(share.part) + " of " + std::to_string(share.parts));
+  }
   const int threads = params.threads > 0 ? params.threads : std::max(1, int(std::thread::hardware_concurrency()));
-  voxelize_detail::ProgressGate gate(progress, dims.nz);
+  int64_t own_layers = 0;  // the progress counts this share's layers
+  for (int32_t z0 = 0, k = 0; z0 < dims.nz; z0 += r.slab_layers, ++k)
+    if (share.owns(k)) own_layers += std::min(dims.nz, z0 + r.slab_layers) - z0;
+  voxelize_detail::ProgressGate gate(progress, own_layers);
   bool out_of_memory = false;
   const voxelize_detail::PassInput in{mesh, plan->placement, r.frame, threads, gate, out_of_memory};
   try {
     voxelize_detail::LayerFiller filler(in, r.mode_used);
-    for (int32_t z0 = 0; z0 < dims.nz; z0 += r.slab_layers) {
+    for (int32_t z0 = 0, k = 0; z0 < dims.nz; z0 += r.slab_layers, ++k) {
+      if (!share.owns(k)) continue;
       const int32_t z1 = std::min(dims.nz, z0 + r.slab_layers);
       VoxelGrid slab(Dims{dims.nx, dims.ny, z1 - z0}, r.frame);
       if (!filler.fill(z0, z1, slab, z0)) {
@@ -104,7 +112,7 @@ Result<StreamedVoxelization> voxelizeInSlabs(const TriangleMesh& mesh, const Vox
       ++r.slabs;
       if (Status s = sink(slab, z0, z1); !s) return s.error();
     }
-    filler.warn(modes.warnings);
+    r.rays = filler.counts();
   } catch (const std::bad_alloc&) {
     out_of_memory = true;
   }
@@ -115,7 +123,12 @@ Result<StreamedVoxelization> voxelizeInSlabs(const TriangleMesh& mesh, const Vox
   gate.finish();
   if (gate.cancelled()) return makeError(ErrorCode::kCancelled, "voxelization cancelled");
   r.warnings = std::move(modes.warnings);
+  if (share.parts == 1) addRayWarnings(r, r.rays);
   return r;
+}
+
+void addRayWarnings(StreamedVoxelization& r, const RayCounts& counts) {
+  voxelize_detail::warnAboutRayCounts(counts, r.mode_used, r.warnings);
 }
 
 }  // namespace vox

@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/mpirun_support.h"
 #include "support/test_support.h"
 
 namespace vox {
@@ -25,6 +26,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
+using test::mpiMissing;
+using test::mpirunArgs;
+using test::runProgram;
 using test::runVoxmod;
 using test::TempDir;
 
@@ -90,50 +94,6 @@ void expectReportInInputOrder(const std::vector<json>& report, const std::vector
     for (const char* key : {"input", "status", "output", "dims", "filled", "warnings", "seconds", "error"})
       EXPECT_TRUE(report[i].contains(key)) << key << " in " << report[i].dump();
   }
-}
-
-// Runs a program (not through a shell) with stdout and stderr captured; `env` adds variables.
-test::RunResult runProgram(const std::vector<std::string>& args, const std::map<std::string, std::string>& env = {}) {
-  TempDir tmp;
-  const auto out_path = tmp / "stdout", err_path = tmp / "stderr";
-  std::fflush(nullptr);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    for (const auto& [k, v] : env) setenv(k.c_str(), v.c_str(), 1);
-    std::vector<std::string> copy = args;
-    std::vector<char*> argv;
-    for (auto& a : copy) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    if (!freopen(out_path.c_str(), "w", stdout) || !freopen(err_path.c_str(), "w", stderr)) _exit(126);
-    execvp(argv[0], argv.data());
-    _exit(127);
-  }
-  int status = 0;
-  waitpid(pid, &status, 0);
-  test::RunResult r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  r.out = test::readFile(out_path);
-  r.err = test::readFile(err_path);
-  return r;
-}
-
-std::vector<std::string> mpirunArgs(int ranks) {
-  std::vector<std::string> args = {"mpirun", "--oversubscribe", "-np", std::to_string(ranks)};
-  if (geteuid() == 0) args.push_back("--allow-run-as-root");
-  args.push_back(test::voxmodExecutable());
-  return args;
-}
-
-// Why MPI batches cannot be tested here (no mpirun, or a voxmod built without MPI), or empty.
-std::string mpiMissing() {
-  if (std::system("command -v mpirun >/dev/null 2>&1") != 0) return "mpirun not found (openmpi-bin)";
-  TempDir tmp;
-  std::vector<std::string> args = mpirunArgs(2);
-  for (const char* a : {"batch", "no-such-input.stl", "-o"}) args.push_back(a);
-  args.push_back((tmp / "out").string());
-  args.push_back("--format=vxm");
-  if (runProgram(args).err.find("built without MPI") != std::string::npos) return "voxmod is built without MPI";
-  return {};
 }
 
 std::vector<std::string> batchArgs(const std::vector<std::string>& inputs, const fs::path& outdir,

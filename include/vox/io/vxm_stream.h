@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <span>
+#include <vector>
 
 #include "vox/core/progress.h"
 #include "vox/core/result.h"
@@ -26,6 +28,10 @@ class VxmLayerWriter {
   VxmLayerWriter& operator=(const VxmLayerWriter&) = delete;
   // Appends layers [z0, z1) of `layers` (a grid of dims.nx x dims.ny layers) as the grid's next layers.
   Status append(const VoxelGrid& layers, int32_t z0, int32_t z1);
+  // Appends `layers` layers given as their runs (encodeVxmLayers, made elsewhere: another MPI rank) as the grid's
+  // next layers: the file is the one append() of those layers would write. Runs that do not cover exactly the
+  // layers' voxels are refused (kCorrupt).
+  Status appendRuns(std::span<const uint8_t> runs, int32_t layers);
   // Once every layer of the grid is appended (refused otherwise).
   Status finish();
   uint64_t filled() const;
@@ -35,6 +41,11 @@ class VxmLayerWriter {
   struct State;
   std::unique_ptr<State> state_;
 };
+
+// Layers [z0, z1) of `grid` encoded on their own as a .vxm body encodes them, for VxmLayerWriter::appendRuns: the
+// runs of their voxels (x fastest, then y, then z), alternating empty and filled from an empty one (0 voxels when
+// the first voxel is filled), as varints. About the size of those layers' part of the file's body.
+std::vector<uint8_t> encodeVxmLayers(const VoxelGrid& grid, int32_t z0, int32_t z1);
 
 // Writes a .vxm file atomically (writeFileAtomic) with `produce` appending its layers, lowest first.
 Status saveVxmInSlabs(const std::filesystem::path& path, const Dims& dims, const GridFrame& frame,

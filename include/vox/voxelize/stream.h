@@ -33,22 +33,43 @@ uint64_t meshHeldBytes(const TriangleMesh& mesh);
 // ny, z_end - z_begin; the grid's frame). A failure stops the voxelization and is returned.
 using SlabSink = std::function<Status(const VoxelGrid& slab, int32_t z_begin, int32_t z_end)>;
 
+// Rays along X that warn (an odd number of crossings; in nonzero mode, a winding that does not come back to zero),
+// counted over the slabs voxelized, and the rays of the whole grid.
+struct RayCounts {
+  int64_t odd = 0, unbalanced = 0, rays = 0;
+};
+
+// A share of the slabs, for voxelizing one grid in several processes (MPI ranks): slab k (layers
+// [k slab_layers, (k + 1) slab_layers)) is this share's when k % parts == part. Every share voxelizes its slabs
+// exactly as the whole run would.
+struct SlabShare {
+  int32_t part = 0, parts = 1;
+  bool owns(int32_t slab) const { return slab % parts == part; }
+};
+
 struct StreamedVoxelization {
   Dims dims;  // of the whole grid
   GridFrame frame;
   FillMode mode_used = FillMode::kParity;
   std::string mode_reason;
+  // The warnings; of a share of the slabs (SlabShare::parts > 1), all but those about the rays, which the
+  // counts of every share give (addRayWarnings).
   std::vector<std::string> warnings;
-  int64_t filled = 0;
-  int32_t slabs = 0, slab_layers = 0;
-  uint64_t largest_slab_bytes = 0;  // VoxelGrid::memoryBytes of the largest slab
+  RayCounts rays;                      // over the slabs voxelized here
+  int64_t filled = 0;                  // in the slabs voxelized here
+  int32_t slabs = 0, slab_layers = 0;  // slabs voxelized here; layers per slab
+  uint64_t largest_slab_bytes = 0;     // VoxelGrid::memoryBytes of the largest slab
 };
 
-// Voxelizes `mesh` in slabs of `slab_layers` layers (> 0), calling `sink` for each. Fails like voxelizeSolid
-// (kInvalidArgument, kCancelled, kLimit when a slab runs out of memory), with kUnsupported for vote mode or
-// params.remove_strays, and with the sink's error.
+// Voxelizes `mesh` in slabs of `slab_layers` layers (> 0), calling `sink` for each (of `share`'s slabs only, in
+// order). Fails like voxelizeSolid (kInvalidArgument, kCancelled, kLimit when a slab runs out of memory), with
+// kUnsupported for vote mode or params.remove_strays, and with the sink's error.
 Result<StreamedVoxelization> voxelizeInSlabs(const TriangleMesh& mesh, const VoxelizeParams& params,
                                              int32_t slab_layers, const SlabSink& sink, const ProgressFn& progress = {},
-                                             const MeshTopology* topology = nullptr);
+                                             const MeshTopology* topology = nullptr, const SlabShare& share = {});
+
+// Appends to r.warnings the warnings about the rays that `counts` (summed over every share of the grid) give, as
+// the whole run gives them.
+void addRayWarnings(StreamedVoxelization& r, const RayCounts& counts);
 
 }  // namespace vox

@@ -87,27 +87,32 @@ TEST(Components, randomGridMatchesFloodFill) {
   }
 }
 
+// b's box starts a whole word (64 voxels) past a's, then at offsets that are not whole words, on either side of a's
+// and past its end: every row of one operand or both is read across word boundaries.
 TEST(PartBoolean, shiftedBoxesMatchSetOperations) {
   const Lattice lattice;
   const LatticeGrid a = randomPart({-3, 2, 0}, {150, 20, 9}, 6, 1);
-  const LatticeGrid b = randomPart({61, -4, 3}, {70, 30, 12}, 6, 2);
-  for (PartOp op : {PartOp::kUnion, PartOp::kIntersection, PartOp::kDifference, PartOp::kXor}) {
-    const LatticeGrid r = booleanParts(a, b, op, lattice);
-    EXPECT_EQ(r.box(), unite(a.box(), b.box()));
-    const Box3i box = r.box();
-    int64_t want_count = 0;
-    for (int z = box.min.z; z < box.max.z; ++z)
-      for (int y = box.min.y; y < box.max.y; ++y)
-        for (int x = box.min.x; x < box.max.x; ++x) {
-          const bool va = at(a, {x, y, z}), vb = at(b, {x, y, z});
-          const bool want = op == PartOp::kUnion          ? (va || vb)
-                            : op == PartOp::kIntersection ? (va && vb)
-                            : op == PartOp::kDifference   ? (va && !vb)
-                                                          : (va != vb);
-          want_count += want ? 1 : 0;
-          ASSERT_EQ(at(r, {x, y, z}), want) << partOpName(op) << " at " << x << " " << y << " " << z;
-        }
-    EXPECT_EQ(r.grid.filledCount(), want_count) << partOpName(op);  // nothing in the padding
+  for (int bx : {61, 5, -70, 130}) {
+    SCOPED_TRACE(bx);
+    const LatticeGrid b = randomPart({bx, -4, 3}, {70, 30, 12}, 6, 2);
+    for (PartOp op : {PartOp::kUnion, PartOp::kIntersection, PartOp::kDifference, PartOp::kXor}) {
+      const LatticeGrid r = booleanParts(a, b, op, lattice);
+      EXPECT_EQ(r.box(), unite(a.box(), b.box()));
+      const Box3i box = r.box();
+      int64_t want_count = 0;
+      for (int z = box.min.z; z < box.max.z; ++z)
+        for (int y = box.min.y; y < box.max.y; ++y)
+          for (int x = box.min.x; x < box.max.x; ++x) {
+            const bool va = at(a, {x, y, z}), vb = at(b, {x, y, z});
+            const bool want = op == PartOp::kUnion          ? (va || vb)
+                              : op == PartOp::kIntersection ? (va && vb)
+                              : op == PartOp::kDifference   ? (va && !vb)
+                                                            : (va != vb);
+            want_count += want ? 1 : 0;
+            ASSERT_EQ(at(r, {x, y, z}), want) << partOpName(op) << " at " << x << " " << y << " " << z;
+          }
+      EXPECT_EQ(r.grid.filledCount(), want_count) << partOpName(op);  // nothing in the padding
+    }
   }
 }
 

@@ -67,6 +67,41 @@ TEST(VxmStream, slabsGiveTheBytesOfTheWholeGridEncoder) {
   }
 }
 
+// Slabs encoded on their own (as other MPI ranks encode them) and appended as runs, mixed with slabs appended as
+// layers: the runs join across every boundary, so the bytes are the whole-grid encoder's.
+TEST(VxmStream, slabsEncodedElsewhereGiveTheBytesOfTheWholeGridEncoder) {
+  const VoxelGrid g = testGrid(Dims{70, 9, 13});
+  const std::vector<uint8_t> whole = io::encodeVxm(g);
+  test::TempDir tmp;
+  for (int32_t slab : {1, 2, 3, 13}) {
+    SCOPED_TRACE(slab);
+    const auto path = tmp / "s.vxm";
+    auto s = io::saveVxmInSlabs(path, g.dims(), g.frame(), [&](io::VxmLayerWriter& w) {
+      for (int32_t z0 = 0, k = 0; z0 < g.nz(); z0 += slab, ++k) {
+        const int32_t z1 = std::min(g.nz(), z0 + slab);
+        if (Status st = k % 3 == 0 ? w.append(g, z0, z1) : w.appendRuns(io::encodeVxmLayers(g, z0, z1), z1 - z0); !st)
+          return st;
+      }
+      return Status(Ok{});
+    });
+    ASSERT_TRUE(s.ok()) << s.error().message;
+    const std::string bytes = test::readFile(path);
+    EXPECT_TRUE(std::vector<uint8_t>(bytes.begin(), bytes.end()) == whole);
+  }
+  // Runs that do not cover the layers they stand for are refused, and no file is left.
+  std::filesystem::remove(tmp / "s.vxm");
+  const std::vector<uint8_t> two = io::encodeVxmLayers(g, 0, 2);
+  for (int32_t layers : {1, 3}) {
+    auto s = io::saveVxmInSlabs(tmp / "bad.vxm", g.dims(), g.frame(), [&](io::VxmLayerWriter& w) {
+      if (Status st = w.appendRuns(two, layers); !st) return st;
+      return w.append(g, layers, g.nz());
+    });
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().code, ErrorCode::kCorrupt) << s.error().message;
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(tmp.path()));
+}
+
 TEST(VxmStream, writerRefusesAnIncompleteGridAndLeavesNoFile) {
   const VoxelGrid g = testGrid(Dims{70, 9, 13});
   test::TempDir tmp;
