@@ -138,8 +138,9 @@ struct LineScratch {
 };
 
 // Lower envelope over the sites of piece [a, b) of line f (n long): zeros at a - 1 and b when they lie in the line
-// or when `border` (ends count as zeros), and every finite value inside. Writes the piece in place.
-void envelopePiece(uint32_t* f, int64_t n, int64_t a, int64_t b, bool border, LineScratch& s) {
+// or when `border` (ends count as zeros), and every finite value inside. Writes the piece in place and raises mx to
+// its largest value.
+void envelopePiece(uint32_t* f, int64_t n, int64_t a, int64_t b, bool border, LineScratch& s, uint32_t& mx) {
   int64_t k = -1;
   auto push = [&](int64_t q, int64_t fq) {
     const int64_t qq = fq + q * q;
@@ -172,63 +173,113 @@ void envelopePiece(uint32_t* f, int64_t n, int64_t a, int64_t b, bool border, Li
   if (b < n || border) push(b, 0);
   if (k < 0) return;  // no site: the piece stays infinite
   int64_t j = 0;
+  uint32_t m = mx;
   for (int64_t q = a; q < b; ++q) {
     while (j < k && s.num[size_t(j) + 1] <= q * s.den[size_t(j) + 1]) ++j;
     const int64_t dq = q - s.site[size_t(j)];
-    f[q] = uint32_t(dq * dq + s.val[size_t(j)]);
+    const auto v = uint32_t(dq * dq + s.val[size_t(j)]);
+    f[q] = v;
+    m = std::max(m, v);
   }
+  mx = m;
 }
 
-// Transforms line f (n long) piece by piece between its zeros.
-void transformLine(uint32_t* f, int64_t n, bool border, LineScratch& s) {
-  for (int64_t q = 0; q < n;) {
-    if (f[q] == 0) {
-      ++q;
-      continue;
+// Transposes a 64 x 64 bit matrix: bit j of word i becomes bit i of word j.
+inline void transpose64(uint64_t a[64]) {
+  uint64_t m = 0x00000000FFFFFFFFull;
+  for (int j = 32; j != 0; j >>= 1, m ^= m << j) {
+    for (int k = 0; k < 64; k = (k + j + 1) & ~j) {
+      const uint64_t t = ((a[k] >> j) ^ a[k + j]) & m;
+      a[k] ^= t << j;
+      a[k + j] ^= t;
     }
-    int64_t b = q;
-    while (b < n && f[b] != 0) ++b;
-    envelopePiece(f, n, q, b, border, s);
-    q = b;
   }
 }
 
 // Passes 2 and 3: the lines along Y (axis 1) or Z (axis 2) of plane o (slice z = o for Y, row y = o for Z), taken
 // kTile neighbouring lines in x at a time (each step along the line reads kTile consecutive values), transformed in
-// the thread's scratch and written back. Returns the largest finite value written.
+// the thread's scratch and written back. The voxels whose value is not zero (filled for a distance, empty for a
+// clearance: a pass never turns one into the other) are read from the grid's bit words, 64 x at a time, and only
+// they are read, transformed and written: the empty space in the box costs a word per row. Returns the largest
+// finite value written.
 class PlaneLines {
  public:
   static constexpr int64_t kTile = 64;
-  PlaneLines(DistanceField& f, int axis, bool border)
-      : f_(f),
+  PlaneLines(const VoxelGrid& g, DistanceField& f, int axis, bool border)
+      : g_(g),
+        f_(f),
+        axis_(axis),
         border_(border),
         nx_(f.boxDims().nx),
         len_(axis == 1 ? f.boxDims().ny : f.boxDims().nz),
+        words_((len_ + 63) / 64),
         outer_stride_(axis == 1 ? nx_ * f.boxDims().ny : nx_),
         line_stride_(axis == 1 ? nx_ : nx_ * f.boxDims().ny),
         scratch_(len_),
-        tile_(size_t(kTile * len_)) {}
+        tile_(size_t(kTile * len_)),
+        masks_(size_t(words_ * 64), 0),
+        columns_(size_t(words_ * 64)) {}
   uint32_t transform(int64_t o) {
     uint32_t mx = 0;
+    const glm::ivec3 lo = f_.boxMin();
+    const int64_t wpr = g_.wordsPerRow();
     for (int64_t x0 = 0; x0 < nx_; x0 += kTile) {
       const int64_t w = std::min(kTile, nx_ - x0);
-      uint32_t* base = f_.data() + o * outer_stride_ + x0;
-      uint32_t any = 0;
+      const uint64_t wmask = w == 64 ? ~uint64_t(0) : (uint64_t(1) << w) - 1;
+      const int64_t xp = int64_t(lo.x) + x0 + 1, w0 = xp >> 6, sh = xp & 63;  // padded x of the tile's first voxel
+      uint64_t any = 0;
       for (int64_t q = 0; q < len_; ++q) {
-        const uint32_t* src = base + q * line_stride_;
-        for (int64_t j = 0; j < w; ++j) {
-          tile_[size_t(j * len_ + q)] = src[j];
-          any |= src[j];
-        }
+        const uint64_t* row = axis_ == 1 ? g_.rowWords(lo.y + int32_t(q), lo.z + int32_t(o))
+                                         : g_.rowWords(lo.y + int32_t(o), lo.z + int32_t(q));
+        uint64_t bits = row[w0] >> sh;
+        if (sh && w0 + 1 < wpr) bits |= row[w0 + 1] << (64 - sh);
+        if (!border_) bits = ~bits;  // clearance: the empty voxels carry the values
+        bits &= wmask;
+        masks_[size_t(q)] = bits;
+        any |= bits;
       }
       if (!any) continue;  // all zeros: already final
-      for (int64_t j = 0; j < w; ++j) transformLine(tile_.data() + j * len_, len_, border_, scratch_);
+      uint32_t* base = f_.data() + o * outer_stride_ + x0;
       for (int64_t q = 0; q < len_; ++q) {
+        if (!masks_[size_t(q)]) continue;
+        const uint32_t* src = base + q * line_stride_;
+        for (int64_t j = 0; j < w; ++j) tile_[size_t(j * len_ + q)] = src[j];
+      }
+      for (int64_t b = 0; b < words_; ++b) {
+        uint64_t* m = masks_.data() + b * 64;  // masks_ has words_ * 64 entries, those past len_ stay zero
+        uint64_t t[64];
+        std::copy(m, m + 64, t);
+        transpose64(t);
+        for (int64_t j = 0; j < 64; ++j) columns_[size_t(j * words_ + b)] = t[j];
+      }
+      for (int64_t j = 0; j < w; ++j) {
+        const uint64_t* col = columns_.data() + j * words_;
+        uint32_t* line = tile_.data() + j * len_;
+        // runs [a, e) of set bits along the line
+        for (int64_t q = 0; q < len_;) {
+          int64_t wi = q >> 6;
+          uint64_t cur = col[wi] & (~uint64_t(0) << (q & 63));
+          while (!cur && ++wi < words_) cur = col[wi];
+          if (!cur) break;
+          const int64_t a = wi * 64 + std::countr_zero(cur);
+          uint64_t inv = ~col[wi] & (~uint64_t(0) << (a & 63));
+          while (!inv && ++wi < words_) inv = ~col[wi];
+          const int64_t e = inv ? std::min(len_, wi * 64 + std::countr_zero(inv)) : len_;
+          envelopePiece(line, len_, a, e, border_, scratch_, mx);
+          q = e;
+        }
+      }
+      for (int64_t q = 0; q < len_; ++q) {
+        uint64_t m = masks_[size_t(q)];
+        if (!m) continue;
         uint32_t* dst = base + q * line_stride_;
-        for (int64_t j = 0; j < w; ++j) {
-          const uint32_t v = tile_[size_t(j * len_ + q)];
-          if (dst[j] != v) dst[j] = v;  // a page that stays zero is never written (nor faulted in)
-          if (v != kInf && v > mx) mx = v;
+        if (m == wmask) {
+          for (int64_t j = 0; j < w; ++j) dst[j] = tile_[size_t(j * len_ + q)];
+        } else {
+          for (; m; m &= m - 1) {
+            const int j = std::countr_zero(m);
+            dst[j] = tile_[size_t(j * len_ + q)];
+          }
         }
       }
     }
@@ -236,11 +287,15 @@ class PlaneLines {
   }
 
  private:
+  const VoxelGrid& g_;
   DistanceField& f_;
+  int axis_;
   bool border_;
-  int64_t nx_, len_, outer_stride_, line_stride_;
+  int64_t nx_, len_, words_, outer_stride_, line_stride_;
   LineScratch scratch_;
   std::vector<uint32_t> tile_;
+  std::vector<uint64_t> masks_;    // the tile's voxels with values, a word per step along the lines
+  std::vector<uint64_t> columns_;  // the same, transposed: words_ words per line
 };
 
 // Passes 1 and 2 slice by slice (a Y line lies in its slice, so the slice is transformed along Y while the X pass
@@ -251,7 +306,7 @@ uint32_t transformBox(const VoxelGrid& g, DistanceField& f, bool to_empty, Progr
   std::vector<uint32_t> maxima(size_t(threads), 0);
   std::atomic<int64_t> done{0};
   parallelChunks(0, d.nz, 1, threads, [&](int, int64_t zb, int64_t ze) {
-    PlaneLines lines(f, 1, to_empty);
+    PlaneLines lines(g, f, 1, to_empty);
     for (int64_t z = zb; z < ze; ++z) {
       if (gate.cancelled()) return;
       rowsX(g, f, to_empty, z);
@@ -262,7 +317,7 @@ uint32_t transformBox(const VoxelGrid& g, DistanceField& f, bool to_empty, Progr
   if (gate.cancelled()) return 0;
   done = 0;
   parallelChunks(0, d.ny, 1, threads, [&](int t, int64_t yb, int64_t ye) {
-    PlaneLines lines(f, 2, to_empty);
+    PlaneLines lines(g, f, 2, to_empty);
     for (int64_t y = yb; y < ye; ++y) {
       if (gate.cancelled()) return;
       maxima[size_t(t)] = std::max(maxima[size_t(t)], lines.transform(y));
