@@ -127,58 +127,62 @@ void rowsX(const VoxelGrid& g, DistanceField& f, bool to_empty, int64_t zi) {
   }
 }
 
-// Scratch of one thread for the 1D transform of lines up to n long. Parabola k of the envelope is the lowest from
-// the point num[k] / den[k] on (den > 0; den = 0 for the first, lowest from minus infinity): kept as a fraction so
-// that every comparison is exact integer arithmetic (for lines up to kMaxDim long |num| < 2^31, den <= 2^16).
+// Scratch of one thread for the 1D transform of lines up to n long: the parabolas of the envelope, parabola k the
+// lowest from the point num / den on. Kept as a fraction so that every comparison is exact integer arithmetic (for
+// lines up to kMaxDim long |num| < 2^31, 0 < den <= 2^16); the first parabola, lowest from minus infinity, has
+// num / den = kNever, which nothing hides.
+struct Parabola {
+  int64_t site;  // position
+  int64_t g;     // value + site^2
+  int64_t num, den;
+};
+constexpr int64_t kNever = -(int64_t(1) << 40);
 struct LineScratch {
-  std::vector<int64_t> site;  // positions of the envelope's parabolas
-  std::vector<int64_t> val;   // their values
-  std::vector<int64_t> num, den;
-  explicit LineScratch(int64_t n) : site(size_t(n) + 2), val(size_t(n) + 2), num(size_t(n) + 3), den(size_t(n) + 3) {}
+  std::vector<Parabola> p;
+  explicit LineScratch(int64_t n) : p(size_t(n) + 3) {}
 };
 
 // Lower envelope over the sites of piece [a, b) of line f (n long): zeros at a - 1 and b when they lie in the line
 // or when `border` (ends count as zeros), and every finite value inside. Writes the piece in place and raises mx to
 // its largest value.
-void envelopePiece(uint32_t* f, int64_t n, int64_t a, int64_t b, bool border, LineScratch& s, uint32_t& mx) {
+void envelopePiece(uint32_t* f, int64_t stride, int64_t n, int64_t a, int64_t b, bool border, LineScratch& s,
+                   uint32_t& mx) {
+  Parabola* p = s.p.data();
   int64_t k = -1;
   auto push = [&](int64_t q, int64_t fq) {
     const int64_t qq = fq + q * q;
-    while (k >= 0) {
+    if (k < 0) {
+      p[0] = Parabola{q, qq, kNever, 1};
+      k = 0;
+      return;
+    }
+    for (;;) {
       // parabolas k and q meet at (qq - (f(v) + v^2)) / (2 (q - v)), v < q; q hides k when that is at or before
       // the point where k starts to be lowest
-      const int64_t v = s.site[size_t(k)];
-      const int64_t xn = qq - (s.val[size_t(k)] + v * v), xd = 2 * (q - v);
-      if (s.den[size_t(k)] != 0 && xn * s.den[size_t(k)] <= s.num[size_t(k)] * xd) {
+      const Parabola& pk = p[k];
+      const int64_t xn = qq - pk.g, xd = 2 * (q - pk.site);
+      if (xn * pk.den <= pk.num * xd) {
         --k;
         continue;
       }
-      ++k;
-      s.site[size_t(k)] = q;
-      s.val[size_t(k)] = fq;
-      s.num[size_t(k)] = xn;
-      s.den[size_t(k)] = xd;
+      p[++k] = Parabola{q, qq, xn, xd};
       return;
     }
-    k = 0;
-    s.site[0] = q;
-    s.val[0] = fq;
-    s.num[0] = 0;
-    s.den[0] = 0;
   };
   if (a > 0 || border) push(a - 1, 0);
   for (int64_t q = a; q < b; ++q) {
-    if (f[q] != kInf) push(q, f[q]);
+    const uint32_t fq = f[q * stride];
+    if (fq != kInf) push(q, fq);
   }
   if (b < n || border) push(b, 0);
   if (k < 0) return;  // no site: the piece stays infinite
   int64_t j = 0;
   uint32_t m = mx;
   for (int64_t q = a; q < b; ++q) {
-    while (j < k && s.num[size_t(j) + 1] <= q * s.den[size_t(j) + 1]) ++j;
-    const int64_t dq = q - s.site[size_t(j)];
-    const auto v = uint32_t(dq * dq + s.val[size_t(j)]);
-    f[q] = v;
+    while (j < k && p[j + 1].num <= q * p[j + 1].den) ++j;
+    const int64_t dq = q - p[j].site;
+    const auto v = uint32_t(dq * dq + (p[j].g - p[j].site * p[j].site));
+    f[q * stride] = v;
     m = std::max(m, v);
   }
   mx = m;
@@ -243,7 +247,7 @@ class PlaneLines {
       for (int64_t q = 0; q < len_; ++q) {
         if (!masks_[size_t(q)]) continue;
         const uint32_t* src = base + q * line_stride_;
-        for (int64_t j = 0; j < w; ++j) tile_[size_t(j * len_ + q)] = src[j];
+        std::copy(src, src + w, tile_.data() + q * kTile);
       }
       for (int64_t b = 0; b < words_; ++b) {
         uint64_t* m = masks_.data() + b * 64;  // masks_ has words_ * 64 entries, those past len_ stay zero
@@ -254,7 +258,7 @@ class PlaneLines {
       }
       for (int64_t j = 0; j < w; ++j) {
         const uint64_t* col = columns_.data() + j * words_;
-        uint32_t* line = tile_.data() + j * len_;
+        uint32_t* line = tile_.data() + j;
         // runs [a, e) of set bits along the line
         for (int64_t q = 0; q < len_;) {
           int64_t wi = q >> 6;
@@ -265,7 +269,7 @@ class PlaneLines {
           uint64_t inv = ~col[wi] & (~uint64_t(0) << (a & 63));
           while (!inv && ++wi < words_) inv = ~col[wi];
           const int64_t e = inv ? std::min(len_, wi * 64 + std::countr_zero(inv)) : len_;
-          envelopePiece(line, len_, a, e, border_, scratch_, mx);
+          envelopePiece(line, kTile, len_, a, e, border_, scratch_, mx);
           q = e;
         }
       }
@@ -274,11 +278,11 @@ class PlaneLines {
         if (!m) continue;
         uint32_t* dst = base + q * line_stride_;
         if (m == wmask) {
-          for (int64_t j = 0; j < w; ++j) dst[j] = tile_[size_t(j * len_ + q)];
+          std::copy(tile_.data() + q * kTile, tile_.data() + q * kTile + w, dst);
         } else {
           for (; m; m &= m - 1) {
             const int j = std::countr_zero(m);
-            dst[j] = tile_[size_t(j * len_ + q)];
+            dst[j] = tile_[size_t(q * kTile + j)];
           }
         }
       }
