@@ -127,108 +127,163 @@ void rowsX(const VoxelGrid& g, DistanceField& f, bool to_empty, int64_t zi) {
   }
 }
 
-// Scratch of one thread for the 1D transform of lines up to n long. Parabola k of the envelope is the lowest from
-// the point num[k] / den[k] on (den > 0; den = 0 for the first, lowest from minus infinity): kept as a fraction so
-// that every comparison is exact integer arithmetic (for lines up to kMaxDim long |num| < 2^31, den <= 2^16).
+// Scratch of one thread for the 1D transform of lines up to n long: the parabolas of the envelope, parabola k the
+// lowest from the point num / den on. Kept as a fraction so that every comparison is exact integer arithmetic (for
+// lines up to kMaxDim long |num| < 2^31, 0 < den <= 2^16); the first parabola, lowest from minus infinity, has
+// num / den = kNever, which nothing hides.
+struct Parabola {
+  int64_t site;  // position
+  int64_t g;     // value + site^2
+  int64_t num, den;
+};
+constexpr int64_t kNever = -(int64_t(1) << 40);
 struct LineScratch {
-  std::vector<int64_t> site;  // positions of the envelope's parabolas
-  std::vector<int64_t> val;   // their values
-  std::vector<int64_t> num, den;
-  explicit LineScratch(int64_t n) : site(size_t(n) + 2), val(size_t(n) + 2), num(size_t(n) + 3), den(size_t(n) + 3) {}
+  std::vector<Parabola> p;
+  explicit LineScratch(int64_t n) : p(size_t(n) + 3) {}
 };
 
 // Lower envelope over the sites of piece [a, b) of line f (n long): zeros at a - 1 and b when they lie in the line
-// or when `border` (ends count as zeros), and every finite value inside. Writes the piece in place.
-void envelopePiece(uint32_t* f, int64_t n, int64_t a, int64_t b, bool border, LineScratch& s) {
+// or when `border` (ends count as zeros), and every finite value inside. Writes the piece in place and raises mx to
+// its largest value.
+void envelopePiece(uint32_t* f, int64_t stride, int64_t n, int64_t a, int64_t b, bool border, LineScratch& s,
+                   uint32_t& mx) {
+  Parabola* p = s.p.data();
   int64_t k = -1;
   auto push = [&](int64_t q, int64_t fq) {
     const int64_t qq = fq + q * q;
-    while (k >= 0) {
+    if (k < 0) {
+      p[0] = Parabola{q, qq, kNever, 1};
+      k = 0;
+      return;
+    }
+    for (;;) {
       // parabolas k and q meet at (qq - (f(v) + v^2)) / (2 (q - v)), v < q; q hides k when that is at or before
       // the point where k starts to be lowest
-      const int64_t v = s.site[size_t(k)];
-      const int64_t xn = qq - (s.val[size_t(k)] + v * v), xd = 2 * (q - v);
-      if (s.den[size_t(k)] != 0 && xn * s.den[size_t(k)] <= s.num[size_t(k)] * xd) {
+      const Parabola& pk = p[k];
+      const int64_t xn = qq - pk.g, xd = 2 * (q - pk.site);
+      if (xn * pk.den <= pk.num * xd) {
         --k;
         continue;
       }
-      ++k;
-      s.site[size_t(k)] = q;
-      s.val[size_t(k)] = fq;
-      s.num[size_t(k)] = xn;
-      s.den[size_t(k)] = xd;
+      p[++k] = Parabola{q, qq, xn, xd};
       return;
     }
-    k = 0;
-    s.site[0] = q;
-    s.val[0] = fq;
-    s.num[0] = 0;
-    s.den[0] = 0;
   };
   if (a > 0 || border) push(a - 1, 0);
   for (int64_t q = a; q < b; ++q) {
-    if (f[q] != kInf) push(q, f[q]);
+    const uint32_t fq = f[q * stride];
+    if (fq != kInf) push(q, fq);
   }
   if (b < n || border) push(b, 0);
   if (k < 0) return;  // no site: the piece stays infinite
   int64_t j = 0;
+  uint32_t m = mx;
   for (int64_t q = a; q < b; ++q) {
-    while (j < k && s.num[size_t(j) + 1] <= q * s.den[size_t(j) + 1]) ++j;
-    const int64_t dq = q - s.site[size_t(j)];
-    f[q] = uint32_t(dq * dq + s.val[size_t(j)]);
+    while (j < k && p[j + 1].num <= q * p[j + 1].den) ++j;
+    const int64_t dq = q - p[j].site;
+    const auto v = uint32_t(dq * dq + (p[j].g - p[j].site * p[j].site));
+    f[q * stride] = v;
+    m = std::max(m, v);
   }
+  mx = m;
 }
 
-// Transforms line f (n long) piece by piece between its zeros.
-void transformLine(uint32_t* f, int64_t n, bool border, LineScratch& s) {
-  for (int64_t q = 0; q < n;) {
-    if (f[q] == 0) {
-      ++q;
-      continue;
+// Transposes a 64 x 64 bit matrix: bit j of word i becomes bit i of word j.
+inline void transpose64(uint64_t a[64]) {
+  uint64_t m = 0x00000000FFFFFFFFull;
+  for (int j = 32; j != 0; j >>= 1, m ^= m << j) {
+    for (int k = 0; k < 64; k = (k + j + 1) & ~j) {
+      const uint64_t t = ((a[k] >> j) ^ a[k + j]) & m;
+      a[k] ^= t << j;
+      a[k + j] ^= t;
     }
-    int64_t b = q;
-    while (b < n && f[b] != 0) ++b;
-    envelopePiece(f, n, q, b, border, s);
-    q = b;
   }
 }
 
 // Passes 2 and 3: the lines along Y (axis 1) or Z (axis 2) of plane o (slice z = o for Y, row y = o for Z), taken
 // kTile neighbouring lines in x at a time (each step along the line reads kTile consecutive values), transformed in
-// the thread's scratch and written back. Returns the largest finite value written.
+// the thread's scratch and written back. The voxels whose value is not zero (filled for a distance, empty for a
+// clearance: a pass never turns one into the other) are read from the grid's bit words, 64 x at a time, and only
+// they are read, transformed and written: the empty space in the box costs a word per row. Returns the largest
+// finite value written.
 class PlaneLines {
  public:
   static constexpr int64_t kTile = 64;
-  PlaneLines(DistanceField& f, int axis, bool border)
-      : f_(f),
+  PlaneLines(const VoxelGrid& g, DistanceField& f, int axis, bool border)
+      : g_(g),
+        f_(f),
+        axis_(axis),
         border_(border),
         nx_(f.boxDims().nx),
         len_(axis == 1 ? f.boxDims().ny : f.boxDims().nz),
+        words_((len_ + 63) / 64),
         outer_stride_(axis == 1 ? nx_ * f.boxDims().ny : nx_),
         line_stride_(axis == 1 ? nx_ : nx_ * f.boxDims().ny),
         scratch_(len_),
-        tile_(size_t(kTile * len_)) {}
+        tile_(size_t(kTile * len_)),
+        masks_(size_t(words_ * 64), 0),
+        columns_(size_t(words_ * 64)) {}
   uint32_t transform(int64_t o) {
     uint32_t mx = 0;
+    const glm::ivec3 lo = f_.boxMin();
+    const int64_t wpr = g_.wordsPerRow();
     for (int64_t x0 = 0; x0 < nx_; x0 += kTile) {
       const int64_t w = std::min(kTile, nx_ - x0);
-      uint32_t* base = f_.data() + o * outer_stride_ + x0;
-      uint32_t any = 0;
+      const uint64_t wmask = w == 64 ? ~uint64_t(0) : (uint64_t(1) << w) - 1;
+      const int64_t xp = int64_t(lo.x) + x0 + 1, w0 = xp >> 6, sh = xp & 63;  // padded x of the tile's first voxel
+      uint64_t any = 0;
       for (int64_t q = 0; q < len_; ++q) {
-        const uint32_t* src = base + q * line_stride_;
-        for (int64_t j = 0; j < w; ++j) {
-          tile_[size_t(j * len_ + q)] = src[j];
-          any |= src[j];
-        }
+        const uint64_t* row = axis_ == 1 ? g_.rowWords(lo.y + int32_t(q), lo.z + int32_t(o))
+                                         : g_.rowWords(lo.y + int32_t(o), lo.z + int32_t(q));
+        uint64_t bits = row[w0] >> sh;
+        if (sh && w0 + 1 < wpr) bits |= row[w0 + 1] << (64 - sh);
+        if (!border_) bits = ~bits;  // clearance: the empty voxels carry the values
+        bits &= wmask;
+        masks_[size_t(q)] = bits;
+        any |= bits;
       }
       if (!any) continue;  // all zeros: already final
-      for (int64_t j = 0; j < w; ++j) transformLine(tile_.data() + j * len_, len_, border_, scratch_);
+      uint32_t* base = f_.data() + o * outer_stride_ + x0;
       for (int64_t q = 0; q < len_; ++q) {
+        if (!masks_[size_t(q)]) continue;
+        const uint32_t* src = base + q * line_stride_;
+        std::copy(src, src + w, tile_.data() + q * kTile);
+      }
+      for (int64_t b = 0; b < words_; ++b) {
+        uint64_t* m = masks_.data() + b * 64;  // masks_ has words_ * 64 entries, those past len_ stay zero
+        uint64_t t[64];
+        std::copy(m, m + 64, t);
+        transpose64(t);
+        for (int64_t j = 0; j < 64; ++j) columns_[size_t(j * words_ + b)] = t[j];
+      }
+      for (int64_t j = 0; j < w; ++j) {
+        const uint64_t* col = columns_.data() + j * words_;
+        uint32_t* line = tile_.data() + j;
+        // runs [a, e) of set bits along the line
+        for (int64_t q = 0; q < len_;) {
+          int64_t wi = q >> 6;
+          uint64_t cur = col[wi] & (~uint64_t(0) << (q & 63));
+          while (!cur && ++wi < words_) cur = col[wi];
+          if (!cur) break;
+          const int64_t a = wi * 64 + std::countr_zero(cur);
+          uint64_t inv = ~col[wi] & (~uint64_t(0) << (a & 63));
+          while (!inv && ++wi < words_) inv = ~col[wi];
+          const int64_t e = inv ? std::min(len_, wi * 64 + std::countr_zero(inv)) : len_;
+          envelopePiece(line, kTile, len_, a, e, border_, scratch_, mx);
+          q = e;
+        }
+      }
+      for (int64_t q = 0; q < len_; ++q) {
+        uint64_t m = masks_[size_t(q)];
+        if (!m) continue;
         uint32_t* dst = base + q * line_stride_;
-        for (int64_t j = 0; j < w; ++j) {
-          const uint32_t v = tile_[size_t(j * len_ + q)];
-          if (dst[j] != v) dst[j] = v;  // a page that stays zero is never written (nor faulted in)
-          if (v != kInf && v > mx) mx = v;
+        if (m == wmask) {
+          std::copy(tile_.data() + q * kTile, tile_.data() + q * kTile + w, dst);
+        } else {
+          for (; m; m &= m - 1) {
+            const int j = std::countr_zero(m);
+            dst[j] = tile_[size_t(q * kTile + j)];
+          }
         }
       }
     }
@@ -236,11 +291,15 @@ class PlaneLines {
   }
 
  private:
+  const VoxelGrid& g_;
   DistanceField& f_;
+  int axis_;
   bool border_;
-  int64_t nx_, len_, outer_stride_, line_stride_;
+  int64_t nx_, len_, words_, outer_stride_, line_stride_;
   LineScratch scratch_;
   std::vector<uint32_t> tile_;
+  std::vector<uint64_t> masks_;    // the tile's voxels with values, a word per step along the lines
+  std::vector<uint64_t> columns_;  // the same, transposed: words_ words per line
 };
 
 // Passes 1 and 2 slice by slice (a Y line lies in its slice, so the slice is transformed along Y while the X pass
@@ -251,7 +310,7 @@ uint32_t transformBox(const VoxelGrid& g, DistanceField& f, bool to_empty, Progr
   std::vector<uint32_t> maxima(size_t(threads), 0);
   std::atomic<int64_t> done{0};
   parallelChunks(0, d.nz, 1, threads, [&](int, int64_t zb, int64_t ze) {
-    PlaneLines lines(f, 1, to_empty);
+    PlaneLines lines(g, f, 1, to_empty);
     for (int64_t z = zb; z < ze; ++z) {
       if (gate.cancelled()) return;
       rowsX(g, f, to_empty, z);
@@ -262,7 +321,7 @@ uint32_t transformBox(const VoxelGrid& g, DistanceField& f, bool to_empty, Progr
   if (gate.cancelled()) return 0;
   done = 0;
   parallelChunks(0, d.ny, 1, threads, [&](int t, int64_t yb, int64_t ye) {
-    PlaneLines lines(f, 2, to_empty);
+    PlaneLines lines(g, f, 2, to_empty);
     for (int64_t y = yb; y < ye; ++y) {
       if (gate.cancelled()) return;
       maxima[size_t(t)] = std::max(maxima[size_t(t)], lines.transform(y));

@@ -91,6 +91,11 @@ TEST(Distance, matchesBruteForceOnAssortedGrids) {
   expectMatchesBruteForce(test::randomBoxes(Dims{70, 6, 5}, 4, 11), "boxes across words");
   expectMatchesBruteForce(test::randomGrid(Dims{130, 3, 4}, 0.85, 12), "noise across words");
   expectMatchesBruteForce(test::ballGrid(Dims{1, 19, 1}, {0.5, 9.5, 0.5}, 7.0), "a line");
+  // lines along Y and Z longer than one and two words (the passes find their pieces in words of 64 steps)
+  expectMatchesBruteForce(test::randomBoxes(Dims{5, 140, 4}, 4, 13), "boxes along y");
+  expectMatchesBruteForce(test::randomBoxes(Dims{4, 5, 150}, 4, 14), "boxes along z");
+  expectMatchesBruteForce(test::randomGrid(Dims{3, 67, 66}, 0.85, 15), "noise in long y and z lines");
+  expectMatchesBruteForce(test::ballGrid(Dims{3, 3, 131}, {1.5, 1.5, 65.5}, 64.0), "a line along z");
 }
 
 TEST(Distance, boxIsTheFilledBoundingBoxAndValuesHaveUnits) {
