@@ -194,7 +194,7 @@ def zip_bytes(entries):
     return buf.getvalue()
 
 
-def three_mf(unit):
+def three_mf(unit, target="/3D/3dmodel.model"):
     verts = "".join('<vertex x="%d" y="%d" z="%d"/>' % v for v in CUBE_V)
     tris = "".join('<triangle v1="%d" v2="%d" v3="%d"/>' % t for t in CUBE_TRIS)
     model = ('<?xml version="1.0" encoding="UTF-8"?>\n<model unit="%s" xml:lang="en-US" '
@@ -206,8 +206,8 @@ def three_mf(unit):
              'relationships+xml"/><Default Extension="model" ContentType="application/vnd.ms-package.'
              '3dmanufacturing-3dmodel+xml"/></Types>\n')
     rels = ('<?xml version="1.0" encoding="UTF-8"?>\n<Relationships xmlns="http://schemas.openxmlformats.org/package/'
-            '2006/relationships"><Relationship Target="/3D/3dmodel.model" Id="rel0" '
-            'Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>\n')
+            '2006/relationships"><Relationship Target="%s" Id="rel0" '
+            'Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>\n' % target)
     return zip_bytes([("[Content_Types].xml", types), ("_rels/.rels", rels), ("3D/3dmodel.model", model)])
 
 
@@ -261,6 +261,9 @@ write(BAD, "ply_lying_counts.ply", ply_header("ascii", 9, 6) + "".join("%d %d %d
       + "".join("4 %d %d %d %d\n" % q for q in CUBE_QUADS))
 write(BAD, "ply_binary_truncated.ply", ply_binary(CUBE_V, CUBE_QUADS)[:-9])
 write(BAD, "ply_bad_index.ply", ply_binary(CUBE_V, CUBE_QUADS[:5] + [(3, 0, 4, 8)]))
+# A .glb whose JSON is cut short, followed by a 3MF package whose relationship names a part it does not hold:
+# neither glTF importer recognises it, and assimp's 3MF importer, tried next by signature, aborts on such a package.
+write(BAD, "glb_then_zip.glb", glb()[:200] + three_mf("millimeter", target="/3D/missing.model"))
 write(BAD, "not_zip.3mf", '<?xml version="1.0"?>\n<model unit="millimeter"></model>\n')
 write(BAD, "zip_without_model.3mf", zip_bytes([("[Content_Types].xml", "<Types/>\n")]))
 STEP_START = ("ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION(('a truncated file'),'2;1');\n"

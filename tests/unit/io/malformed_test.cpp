@@ -135,6 +135,8 @@ const Refusal kRefusals[] = {
     {"ply_bad_index.ply", ErrorCode::kParse,
      "ply_bad_index.ply: not a readable PLY file (assimp: 'Validation failed: aiMesh::mFaces[5]::mIndices[3] is out "
      "of range')"},
+    {"glb_then_zip.glb", ErrorCode::kParse,
+     "glb_then_zip.glb: not a readable GLB file (assimp's GLB importers do not recognise its content)"},
     {"not_zip.3mf", ErrorCode::kParse, "not_zip.3mf: not a 3MF file: it does not start with a zip signature ('PK')"},
     {"zip_without_model.3mf", ErrorCode::kParse,
      "zip_without_model.3mf: not a 3MF file: the zip holds no 3D model part (3D/3dmodel.model)"},
