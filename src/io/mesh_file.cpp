@@ -5,6 +5,7 @@
 #include <cstring>
 #include <fstream>
 
+#include "io/glb_check.h"
 #include "io/mesh_assimp.h"
 #include "io/mesh_findings.h"
 #include "io/mesh_sniff.h"
@@ -157,6 +158,9 @@ Result<MeshFileLoad> readWithAssimp(std::span<const uint8_t> bytes, const std::s
     package = std::move(p->zip);
     bytes = package;
   } else if (format == MeshFormat::kGltf || format == MeshFormat::kGlb) {
+    if (format == MeshFormat::kGlb) {
+      if (Status s = checkGlb(bytes, name); !s.ok()) return s.error();
+    }
     file_unit = "meter";  // glTF 2.0, "Coordinate System and Units"
   }
   auto out = importWithAssimp(bytes, name, format, directory);

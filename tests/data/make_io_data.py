@@ -261,9 +261,21 @@ write(BAD, "ply_lying_counts.ply", ply_header("ascii", 9, 6) + "".join("%d %d %d
       + "".join("4 %d %d %d %d\n" % q for q in CUBE_QUADS))
 write(BAD, "ply_binary_truncated.ply", ply_binary(CUBE_V, CUBE_QUADS)[:-9])
 write(BAD, "ply_bad_index.ply", ply_binary(CUBE_V, CUBE_QUADS[:5] + [(3, 0, 4, 8)]))
-# A .glb whose JSON is cut short, followed by a 3MF package whose relationship names a part it does not hold:
+# A .glb whose JSON is cut short, its binary chunk a 3MF package whose relationship names a part it does not hold:
 # neither glTF importer recognises it, and assimp's 3MF importer, tried next by signature, aborts on such a package.
-write(BAD, "glb_then_zip.glb", glb()[:200] + three_mf("millimeter", target="/3D/missing.model"))
+def glb_chunks(text, data):
+    text += b" " * (-len(text) % 4)
+    data += b"\0" * (-len(data) % 4)
+    body = struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(data), 0x004E4942) + data
+    return struct.pack("<4sII", b"glTF", 2, 12 + len(body)) + body
+
+
+write(BAD, "glb_then_zip.glb", glb_chunks(b'{"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]',
+                                          three_mf("millimeter", target="/3D/missing.model")))
+# A .glb whose JSON chunk claims 4 GB: assimp would allocate that before comparing it with the file.
+GLB_TOO_LONG = bytearray(glb())
+struct.pack_into("<I", GLB_TOO_LONG, 12, 0xFFF00000)
+write(BAD, "glb_chunk_too_long.glb", bytes(GLB_TOO_LONG))
 write(BAD, "not_zip.3mf", '<?xml version="1.0"?>\n<model unit="millimeter"></model>\n')
 write(BAD, "zip_without_model.3mf", zip_bytes([("[Content_Types].xml", "<Types/>\n")]))
 STEP_START = ("ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION(('a truncated file'),'2;1');\n"

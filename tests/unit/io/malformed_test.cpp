@@ -137,6 +137,8 @@ const Refusal kRefusals[] = {
      "of range')"},
     {"glb_then_zip.glb", ErrorCode::kParse,
      "glb_then_zip.glb: not a readable GLB file (assimp's GLB importers do not recognise its content)"},
+    {"glb_chunk_too_long.glb", ErrorCode::kParse,
+     "glb_chunk_too_long.glb: GLB chunk 1 says 4293918720 bytes where 708 remain"},
     {"not_zip.3mf", ErrorCode::kParse, "not_zip.3mf: not a 3MF file: it does not start with a zip signature ('PK')"},
     {"zip_without_model.3mf", ErrorCode::kParse,
      "zip_without_model.3mf: not a 3MF file: the zip holds no 3D model part (3D/3dmodel.model)"},
