@@ -289,4 +289,9 @@ IGES_START = ("a truncated IGES file".ljust(72) + "S      1\n"
 write(BAD, "truncated.iges", IGES_START)
 write(BAD, "off_bad_index.off", "OFF\n8 6 0\n" + "".join("%d %d %d\n" % v for v in CUBE_V)
       + "".join("4 %d %d %d %d\n" % q for q in CUBE_QUADS[:5]) + "4 3 0 4 8\n")
+# Comment lines among the faces: assimp reads each as a face without corners and takes one off its face count for
+# it; more of them than faces and the count wraps around (a crash).
+write(BAD, "off_comment_among_faces.off", "OFF\n8 6 0\n" + "".join("%d %d %d\n" % v for v in CUBE_V)
+      + "".join("4 %d %d %d %d\n" % q for q in CUBE_QUADS[:3]) + "# a comment\n" * 7
+      + "".join("4 %d %d %d %d\n" % q for q in CUBE_QUADS[3:]))
 write(BAD, "off_not_numbers.off", "OFF\n3 1 0\n0 0 0\n1 0 0&1\n0 1 0\n3 0 1 2\n")

@@ -147,6 +147,9 @@ const Refusal kRefusals[] = {
     {"step_named.ply", ErrorCode::kParse,
      "step_named.ply: not a PLY file: it looks like a STEP file (name it .step to read it as one)"},
     {"off_bad_index.off", ErrorCode::kParse, "off_bad_index.off:16: OFF face 6 refers to vertex '8' of 8"},
+    {"off_comment_among_faces.off", ErrorCode::kParse,
+     "off_comment_among_faces.off:14: OFF line holds no data among the vertices and faces (a comment or spaces "
+     "alone): assimp would read it as one"},
     {"off_not_numbers.off", ErrorCode::kParse, "off_not_numbers.off:4: OFF vertex 2 is not three or more numbers"},
     {"truncated.iges", ErrorCode::kParse,
      "truncated.iges: IGES file truncated: its last line is not a Terminate record ('T' in column 73)"},
