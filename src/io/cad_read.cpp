@@ -28,9 +28,13 @@
 #include <Interface_Check.hxx>
 #include <Interface_CheckIterator.hxx>
 #include <Interface_Static.hxx>
+#include <Standard_Failure.hxx>
+#include <Interface_InterfaceModel.hxx>
+#include <IFSelect_WorkLibrary.hxx>
 #include <STEPControl_Reader.hxx>
 #include <ShapeFix_Shape.hxx>
 #include <StepData_StepModel.hxx>
+#include <StepShape_OrientedEdge.hxx>
 #include <TColStd_SequenceOfAsciiString.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS_Shape.hxx>
@@ -138,6 +142,49 @@ Status transfer(Reader& reader, const std::string& name, const char* format, con
   return Ok{};
 }
 
+// An oriented edge whose edge is an oriented edge again, round to itself: Open CASCADE follows the chain by recursion
+// (StepShape_OrientedEdge::EdgeStart, from the checks its work session computes as it takes the model) and
+// overflows the stack (found by tests/fuzz/fuzz_mesh_file.cpp). Refused with the entity's number; chains that end
+// are left alone.
+Status checkOrientedEdges(const Handle(StepData_StepModel) & model, const std::string& name) {
+  if (model.IsNull()) return Ok{};
+  const int n = model->NbEntities();
+  for (int i = 1; i <= n; ++i) {
+    Handle(StepShape_OrientedEdge) edge = Handle(StepShape_OrientedEdge)::DownCast(model->Value(i));
+    for (int steps = 0; !edge.IsNull(); ++steps) {
+      if (steps > n) {
+        return makeError(ErrorCode::kParse, name + ": malformed STEP file: the oriented edge #" +
+                                                std::to_string(model->IdentLabel(model->Value(i))) +
+                                                " leads round to itself through its edge elements");
+      }
+      edge = Handle(StepShape_OrientedEdge)::DownCast(edge->EdgeElement());
+    }
+  }
+  return Ok{};
+}
+
+// STEPControl_Reader::ReadStream in two steps, to look at the model before the work session takes it (and computes
+// its checks): the file read into a model by the session's own library and protocol, then handed to the session as
+// ReadStream hands it.
+Status readStepModel(STEPControl_Reader& reader, std::istream& stream, const std::string& name,
+                     const occt::ReaderLock& lock) {
+  const Handle(XSControl_WorkSession)& session = reader.WS();
+  Handle(Interface_InterfaceModel) model;
+  int read = -1;
+  try {
+    read = session->WorkLibrary()->ReadStream(name.c_str(), stream, model, session->Protocol());
+  } catch (const Standard_Failure& failure) {
+    return makeError(ErrorCode::kParse,
+                     name + ": not a readable STEP file (Open CASCADE: " + occt::failureText(failure) + ")");
+  }
+  if (read != 0 || model.IsNull()) return readFailure(name, "STEP", lock);
+  if (Status s = checkOrientedEdges(Handle(StepData_StepModel)::DownCast(model), name); !s.ok()) return s;
+  session->SetModel(model);
+  session->SetLoadedFile(name.c_str());
+  session->InitTransferReader(4);
+  return Ok{};
+}
+
 Status readStep(std::span<const uint8_t> bytes, const std::string& name, const ProgressFn& progress,
                 CadModel::Impl& out) {
   if (Status s = checkStep(bytes, name); !s.ok()) return s;
@@ -145,7 +192,7 @@ Status readStep(std::span<const uint8_t> bytes, const std::string& name, const P
   Interface_Static::SetCVal("xstep.cascade.unit", "MM");
   STEPControl_Reader reader;
   std::istringstream stream(std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-  if (reader.ReadStream(name.c_str(), stream) != IFSelect_RetDone) return readFailure(name, "STEP", lock);
+  if (Status s = readStepModel(reader, stream, name, lock); !s.ok()) return s;
   if (Status s = checkLoad(reader, name, "STEP"); !s.ok()) return s;
   TColStd_SequenceOfAsciiString lengths, angles, solid_angles;
   reader.FileUnits(lengths, angles, solid_angles);

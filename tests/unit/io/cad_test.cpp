@@ -350,6 +350,24 @@ TEST(CadFile, aValueWithoutItsCommaIsRefusedBeforeOpenCascadeRecoversFromIt) {
                                    ": malformed STEP file: byte 171 follows a value where ',' or ')' belongs");
 }
 
+TEST(CadFile, anOrientedEdgeLeadingRoundToItselfIsRefused) {
+  // Found by the fuzzer: Open CASCADE follows oriented edges by recursion and overflows the stack on a cycle.
+  test::TempDir tmp;
+  test::writeStep(tmp / "box.step", {{CadShape::kBox, {0, 0, 0}, {1, 1, 1}}});
+  std::string step = test::readFile(tmp / "box.step");
+  const size_t at = step.find("ORIENTED_EDGE('',*,*,#");
+  ASSERT_NE(at, std::string::npos);
+  const size_t name_at = step.rfind('#', at);
+  const std::string self = step.substr(name_at, step.find_first_of(" =", name_at) - name_at);
+  const size_t ref = at + std::string("ORIENTED_EDGE('',*,*,").size();
+  step.replace(ref, step.find(',', ref) - ref, self);
+  test::writeFile(tmp / "cycle.step", step);
+  auto r = loadMeshFile(tmp / "cycle.step");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().message, (tmp / "cycle.step").string() + ": malformed STEP file: the oriented edge " + self +
+                                   " leads round to itself through its edge elements");
+}
+
 TEST(CadFile, namesInStringsAndCommentsAreNotDefinitions) {
   test::TempDir tmp;
   test::writeStep(tmp / "box.step", {{CadShape::kBox, {0, 0, 0}, {1, 1, 1}}});
