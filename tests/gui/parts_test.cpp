@@ -129,9 +129,9 @@ TEST(AppParts, aMeshSplitsIntoItsBodiesOnTheModelsLattice) {
   EXPECT_EQ(currentInterference(state), nullptr);
 }
 
-TEST(AppParts, booleansAreNewPartsAndUndoable) {
-  test::TempDir dir;
-  // Two blocks on one lattice: a is 6 x 4 x 4 at the origin, b the same shifted by 4 voxels in X (2 x 4 x 4 shared).
+// Two 6 x 4 x 4 blocks as voxel files on one lattice (voxel size 1): a at the origin, b 4 voxels along X, so they
+// share a 2 x 4 x 4 block. The document is a with b added as a part.
+void openTwoBlocks(AppState& state, const test::TempDir& dir) {
   VoxelGrid a(Dims{6, 4, 4}), b(Dims{6, 4, 4});
   for (int32_t z = 0; z < 4; ++z) {
     for (int32_t y = 0; y < 4; ++y) {
@@ -142,11 +142,17 @@ TEST(AppParts, booleansAreNewPartsAndUndoable) {
   b.frame().origin = glm::dvec3(4.0, 0.0, 0.0);
   ASSERT_TRUE(io::saveVxm(a, dir / "a.vxm").ok());
   ASSERT_TRUE(io::saveVxm(b, dir / "b.vxm").ok());
-  AppState state;
   ASSERT_TRUE(run(state, "open " + (dir / "a.vxm").string()).ok());
   ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
   ASSERT_TRUE(run(state, "add-part " + (dir / "b.vxm").string()).ok());
   ASSERT_TRUE(pump(state, [&] { return currentParts(state) && currentParts(state)->size() == 2; }));
+  ASSERT_EQ(state.model.filledCount(), 10 * 4 * 4);
+}
+
+TEST(AppParts, booleansAreNewPartsAndUndoable) {
+  test::TempDir dir;
+  AppState state;
+  openTwoBlocks(state, dir);
   EXPECT_EQ(state.model.filledCount(), 10 * 4 * 4);  // the union on the extent's frame
   EXPECT_EQ(state.model.dims(), (Dims{10, 4, 4}));
 
@@ -228,26 +234,6 @@ TEST(AppParts, aVoxelModelSplitsIntoConnectedComponents) {
     EXPECT_EQ(partVoxelCounts(state)[0], conn == std::string("6") ? 27 : 28);
     EXPECT_EQ(state.model.filledCount(), 27 + 1 + 2);
   }
-}
-
-// Two 6 x 4 x 4 blocks as voxel files on one lattice (voxel size 1): a at the origin, b 4 voxels along X, so they
-// share a 2 x 4 x 4 block. The document is a with b added as a part.
-void openTwoBlocks(AppState& state, const test::TempDir& dir) {
-  VoxelGrid a(Dims{6, 4, 4}), b(Dims{6, 4, 4});
-  for (int32_t z = 0; z < 4; ++z) {
-    for (int32_t y = 0; y < 4; ++y) {
-      a.fillRun(y, z, 0, 6);
-      b.fillRun(y, z, 0, 6);
-    }
-  }
-  b.frame().origin = glm::dvec3(4.0, 0.0, 0.0);
-  ASSERT_TRUE(io::saveVxm(a, dir / "a.vxm").ok());
-  ASSERT_TRUE(io::saveVxm(b, dir / "b.vxm").ok());
-  ASSERT_TRUE(run(state, "open " + (dir / "a.vxm").string()).ok());
-  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
-  ASSERT_TRUE(run(state, "add-part " + (dir / "b.vxm").string()).ok());
-  ASSERT_TRUE(pump(state, [&] { return currentParts(state) && currentParts(state)->size() == 2; }));
-  ASSERT_EQ(state.model.filledCount(), 10 * 4 * 4);
 }
 
 TEST(AppParts, aPartMovesAndTurnsOnTheLatticeUndoably) {
