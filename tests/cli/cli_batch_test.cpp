@@ -446,9 +446,11 @@ TEST(CliBatch, mpiRankKilledInTheMiddleThenResumed) {
     EXPECT_TRUE(test::readFile(output) == expected.at(fs::path(output).filename().string())) << output;
     done.insert(fs::relative(output, out).string());
   }
+  // A rank killed between renaming its output into place and journaling it leaves a file the report does not list:
+  // complete all the same (outputs are atomic), and converted again by the resume.
   for (const auto& [name, bytes] : filesBelow(out)) {
-    if (name.ends_with(".binvox") && !isTemporary(name)) {
-      EXPECT_TRUE(done.contains(name)) << name << " unreported";
+    if (name.ends_with(".binvox") && !isTemporary(name) && !done.contains(name)) {
+      EXPECT_TRUE(bytes == expected.at(fs::path(name).filename().string())) << name << " unreported and incomplete";
     }
   }
 
