@@ -4,6 +4,11 @@
 #include <bit>
 #include <cassert>
 #include <cstdlib>
+#include <cstring>
+#include <deque>
+#include <iterator>
+#include <mutex>
+#include <vector>
 
 #include "vox/core/bits.h"
 
@@ -35,6 +40,79 @@ VoxelGrid::VoxelGrid(Dims dims, GridFrame frame) : dims_(dims), frame_(std::move
   layers_.assign(size_t(dims.nz) + 2, zero_layer_);
 }
 
+namespace {
+
+// Freed layers of at least kMinWords words, kept for reuse up to kCapBytes in all (oldest dropped first): the
+// memory of a grid freed after an operation serves the next one's result instead of going back to the system and
+// being faulted in again page by page.
+class LayerPool {
+ public:
+  static constexpr size_t kMinWords = 4096;           // 32 KiB: smaller layers are malloc's business
+  static constexpr size_t kCapBytes = size_t(256) << 20;
+  uint64_t* take(size_t words) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    for (auto it = free_.rbegin(); it != free_.rend(); ++it) {
+      if (it->words != words) continue;
+      uint64_t* p = it->p;
+      bytes_ -= words * sizeof(uint64_t);
+      free_.erase(std::next(it).base());
+      return p;
+    }
+    return nullptr;
+  }
+  // True when the pool keeps p; false when the caller frees it.
+  bool give(uint64_t* p, size_t words) {
+    const size_t b = words * sizeof(uint64_t);
+    if (words < kMinWords || b > kCapBytes) return false;
+    std::vector<uint64_t*> dropped;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      while (bytes_ + b > kCapBytes) {
+        dropped.push_back(free_.front().p);
+        bytes_ -= free_.front().words * sizeof(uint64_t);
+        free_.pop_front();
+      }
+      free_.push_back(Entry{p, words});
+      bytes_ += b;
+    }
+    for (uint64_t* q : dropped) std::free(q);
+    return true;
+  }
+
+ private:
+  struct Entry {
+    uint64_t* p;
+    size_t words;
+  };
+  std::mutex mutex_;
+  std::deque<Entry> free_;
+  size_t bytes_ = 0;
+};
+
+LayerPool& layerPool() {
+  static auto* pool = new LayerPool;  // never destroyed: grids held in statics free their layers after main
+  return *pool;
+}
+
+}  // namespace
+
+uint64_t* VoxelGrid::allocateLayerWords(size_t words, LayerFill fill) {
+  if (fill != LayerFill::kSparseZero) {
+    if (uint64_t* p = layerPool().take(words)) {
+      if (fill == LayerFill::kDenseZero) std::memset(p, 0, words * sizeof(uint64_t));
+      return p;
+    }
+  }
+  void* p = fill == LayerFill::kOverwritten ? std::malloc(words * sizeof(uint64_t))
+                                            : std::calloc(words, sizeof(uint64_t));
+  if (!p) throw std::bad_alloc();
+  return static_cast<uint64_t*>(p);
+}
+
+void VoxelGrid::releaseLayerWords(uint64_t* p, size_t words) {
+  if (!layerPool().give(p, words)) std::free(p);
+}
+
 glm::ivec3 VoxelGrid::coordinates(int64_t index) const {
   const int64_t nx = dims_.nx, ny = dims_.ny;
   return {int32_t(index % nx), int32_t((index / nx) % ny), int32_t(index / (nx * ny))};
@@ -54,7 +132,7 @@ uint64_t* VoxelGrid::mutableLayerWords(int32_t z) {
 uint64_t* VoxelGrid::freshLayerWords(int32_t z) {
   assert(z >= 0 && z < dims_.nz);
   auto& layer = layers_[size_t(z) + 1];
-  layer = std::make_shared<Layer>(size_t(wordsPerLayer()));
+  layer = std::make_shared<Layer>(size_t(wordsPerLayer()), LayerAllocator<uint64_t>(LayerFill::kDenseZero));
   return layer->data();
 }
 

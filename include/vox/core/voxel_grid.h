@@ -135,21 +135,31 @@ class VoxelGrid {
   void shareLayerFrom(const VoxelGrid& other, int32_t z);
 
  private:
-  // Layer storage comes from calloc and is not written when allocated: memory fresh from the system is already
-  // zero, so a layer's pages are only faulted in where something is written (a sparse layer touches few of them).
+  // Layer storage (core/voxel_grid.cpp, layer memory): a layer made for a writer that may leave words untouched comes
+  // from calloc and is not written when allocated: memory fresh from the system is already zero, so its pages are
+  // only faulted in where something is written (a sparse layer touches few of them). A layer every word of which is
+  // written (freshLayerWords, a copy on write) reuses, where it can, the storage of a layer of the same size freed
+  // before: a bounded pool keeps freed layers so that an operation producing a whole grid (a Boolean) does not fault
+  // in fresh pages each time.
+  enum class LayerFill { kSparseZero, kDenseZero, kOverwritten };
+  static uint64_t* allocateLayerWords(size_t words, LayerFill fill);
+  static void releaseLayerWords(uint64_t* p, size_t words);
   template <class T>
-  struct ZeroedAllocator {
+  struct LayerAllocator {
     using value_type = T;
-    ZeroedAllocator() = default;
+    LayerFill fill = LayerFill::kSparseZero;
+    LayerAllocator() = default;
+    explicit LayerAllocator(LayerFill f) : fill(f) {}
     template <class U>
-    ZeroedAllocator(const ZeroedAllocator<U>&) {}  // NOLINT(google-explicit-constructor): allocator rebinding
+    LayerAllocator(const LayerAllocator<U>& o) : fill(o.fill) {}  // NOLINT(google-explicit-constructor): rebinding
     T* allocate(size_t n) {
-      void* p = std::calloc(n, sizeof(T));
-      if (!p) throw std::bad_alloc();
-      return static_cast<T*>(p);
+      static_assert(sizeof(T) == sizeof(uint64_t));
+      return reinterpret_cast<T*>(allocateLayerWords(n, fill));
     }
-    void deallocate(T* p, size_t) { std::free(p); }
-    // Value-initialising a word writes nothing: calloc's memory is already zero.
+    void deallocate(T* p, size_t n) { releaseLayerWords(reinterpret_cast<uint64_t*>(p), n); }
+    // A copy writes every word: its storage need not be zeroed first.
+    LayerAllocator select_on_container_copy_construction() const { return LayerAllocator(LayerFill::kOverwritten); }
+    // Value-initialising a word writes nothing: the storage is already zero.
     template <class U>
     void construct(U* p) noexcept {
       ::new (static_cast<void*>(p)) U;
@@ -158,9 +168,9 @@ class VoxelGrid {
     void construct(U* p, Args&&... args) {
       ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
     }
-    bool operator==(const ZeroedAllocator&) const { return true; }
+    bool operator==(const LayerAllocator&) const { return true; }  // any of them frees what another allocated
   };
-  using Layer = std::vector<uint64_t, ZeroedAllocator<uint64_t>>;
+  using Layer = std::vector<uint64_t, LayerAllocator<uint64_t>>;
   Dims dims_{};
   GridFrame frame_{};
   int64_t words_per_row_ = 0;

@@ -140,6 +140,41 @@ TEST(VoxelGrid, neighbourAtAndCellDistances) {
   EXPECT_EQ(chebyshevDistance({0, 0, 0}, {3, -4, 5}), 5);
 }
 
+// Layers of at least 32 KiB freed by one grid are kept for reuse by freshLayerWords and copies on write: what they
+// held must never show through.
+TEST(VoxelGrid, layersMadeFromFreedLayersHoldOnlyTheirOwnWords) {
+  const Dims d{1000, 700, 4};  // 16 words x 702 rows a layer
+  for (int round = 0; round < 3; ++round) {
+    {
+      VoxelGrid dirty(d);
+      for (int32_t z = 0; z < d.nz; ++z) {
+        uint64_t* w = dirty.freshLayerWords(z);
+        std::fill(w, w + dirty.wordsPerLayer(), ~uint64_t(0));
+      }
+    }
+    VoxelGrid fresh(d);
+    for (int32_t z = 0; z < d.nz; ++z) {
+      const uint64_t* w = fresh.freshLayerWords(z);
+      ASSERT_TRUE(std::all_of(w, w + fresh.wordsPerLayer(), [](uint64_t x) { return x == 0; }))
+          << "layer " << z << ", round " << round;
+    }
+    {
+      VoxelGrid dirty(d);
+      for (int32_t z = 0; z < d.nz; ++z) {
+        uint64_t* w = dirty.freshLayerWords(z);
+        std::fill(w, w + dirty.wordsPerLayer(), ~uint64_t(0));
+      }
+    }
+    VoxelGrid a = box(d, {3, 5, 0}, {900, 600, 4});
+    VoxelGrid b = a;
+    b.reset(10, 10, 2);  // copy on write of layer 2, into storage another grid freed
+    EXPECT_EQ(b.filledCount(), a.filledCount() - 1);
+    EXPECT_FALSE(b.get(10, 10, 2));
+    EXPECT_TRUE(b.get(11, 10, 2));
+    EXPECT_FALSE(b.get(2, 10, 2));
+  }
+}
+
 TEST(VoxelGrid, copiesShareLayersUntilWritten) {
   VoxelGrid a = box(Dims{8, 8, 8}, {1, 1, 1}, {7, 7, 7});
   VoxelGrid b = a;  // snapshot
