@@ -36,7 +36,7 @@ glm::ivec3 voxelAtDistance(const VoxelGrid& g, const glm::ivec3& v, uint32_t d2)
 }  // namespace
 
 Result<Clearance> findClearance(const LatticeGrid& a, const LatticeGrid& b, const Lattice& lattice,
-                                const ClearanceParams& params) {
+                                const ClearanceParams& params, const ProgressFn& progress) {
   Clearance out;
   const Box3i box_a = filledBox(a), box_b_all = filledBox(b);
   if (box_a.empty() || box_b_all.empty()) return out;
@@ -45,7 +45,7 @@ Result<Clearance> findClearance(const LatticeGrid& a, const LatticeGrid& b, cons
   const Box3i box = unite(box_a, box_b);
   const LatticeGrid grid_a = reframe(a, box, lattice);
   const LatticeGrid grid_b = reframe(b, box, lattice);
-  auto field = computeClearance(grid_a.grid);
+  auto field = computeClearance(grid_a.grid, progress);
   if (!field) return field.error();
   // The smallest value at b's voxels (first in z, y, x order among equals).
   uint32_t best = DistanceField::kInfinite;

@@ -43,8 +43,10 @@ void startClearance(AppState& state, size_t a, size_t b) {
   state.clearance_job_b = b;
   state.clearance_job_version = version;
   state.job_started = nowSeconds();
-  state.clearance_job.start("Finding the clearance", [pa = std::move(pa), pb = std::move(pb), lattice](
-                                                         const ProgressFn&) { return findClearance(pa, pb, lattice); });
+  state.clearance_job.start("Finding the clearance",
+                            [pa = std::move(pa), pb = std::move(pb), lattice](const ProgressFn& progress) {
+                              return findClearance(pa, pb, lattice, {}, progress);
+                            });
 }
 
 void updateClearance(AppState& state) {

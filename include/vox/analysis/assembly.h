@@ -95,7 +95,8 @@ struct ClearanceParams {
 // The closest pair of voxels between a and b: the exact Euclidean distance transform of a (vox/analysis/distance.h,
 // on the union of the two boxes grown by the bound) read at b's voxels, then the voxel of a nearest to the best one.
 // O(voxels of the grown box). Fails with kLimit when the box would need more memory than the machine allows.
+// `progress` gets the fraction done (the distance transform's) and cancels with kCancelled when it returns false.
 Result<Clearance> findClearance(const LatticeGrid& a, const LatticeGrid& b, const Lattice& lattice,
-                                const ClearanceParams& params = {});
+                                const ClearanceParams& params = {}, const ProgressFn& progress = {});
 
 }  // namespace vox

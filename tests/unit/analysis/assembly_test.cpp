@@ -6,6 +6,7 @@
 
 #include <map>
 #include <random>
+#include <algorithm>
 #include <vector>
 
 #include "grids.h"
@@ -242,6 +243,27 @@ TEST(Clearance, gapBetweenTwoBoxes) {
   auto g = findClearance(a, b, lattice, ClearanceParams{1.0});
   ASSERT_TRUE(g.ok());
   EXPECT_FALSE(g->found);
+}
+
+TEST(Clearance, reportsProgressAndCancels) {
+  Lattice lattice{glm::dvec3(0.0), 1.0, "mm"};
+  const LatticeGrid a{test::boxGrid(Dims{40, 40, 40}, {0, 0, 0}, {40, 40, 40}), {0, 0, 0}};
+  const LatticeGrid b{test::boxGrid(Dims{40, 40, 40}, {0, 0, 0}, {40, 40, 40}), {60, 0, 0}};
+  std::vector<double> seen;
+  auto c = findClearance(a, b, lattice, {}, [&](double f) {
+    seen.push_back(f);
+    return true;
+  });
+  ASSERT_TRUE(c.ok()) << c.error().message;
+  EXPECT_TRUE(c->found);
+  ASSERT_GE(seen.size(), 2u);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_DOUBLE_EQ(seen.back(), 1.0);
+  int calls = 0;
+  auto stopped = findClearance(a, b, lattice, {}, [&](double) { return ++calls < 3; });
+  ASSERT_FALSE(stopped.ok());
+  EXPECT_EQ(stopped.error().code, ErrorCode::kCancelled);
+  EXPECT_EQ(calls, 3);  // nothing asked again after the answer was no
 }
 
 TEST(AssemblyModel, sharedLatticeTranslationAndTurns) {
