@@ -109,8 +109,8 @@ uint64_t* VoxelGrid::allocateLayerWords(size_t words, LayerFill fill) {
   return static_cast<uint64_t*>(p);
 }
 
-void VoxelGrid::releaseLayerWords(uint64_t* p, size_t words) {
-  if (!layerPool().give(p, words)) std::free(p);
+void VoxelGrid::releaseLayerWords(uint64_t* p, size_t words, LayerFill fill) {
+  if (fill == LayerFill::kSparseZero || !layerPool().give(p, words)) std::free(p);
 }
 
 glm::ivec3 VoxelGrid::coordinates(int64_t index) const {

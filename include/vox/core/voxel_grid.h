@@ -138,12 +138,13 @@ class VoxelGrid {
   // Layer storage (core/voxel_grid.cpp, layer memory): a layer made for a writer that may leave words untouched comes
   // from calloc and is not written when allocated: memory fresh from the system is already zero, so its pages are
   // only faulted in where something is written (a sparse layer touches few of them). A layer every word of which is
-  // written (freshLayerWords, a copy on write) reuses, where it can, the storage of a layer of the same size freed
-  // before: a bounded pool keeps freed layers so that an operation producing a whole grid (a Boolean) does not fault
-  // in fresh pages each time.
+  // written (freshLayerWords, a copy on write) reuses, where it can, the storage of such a layer of the same size
+  // freed before: a bounded pool keeps them so that an operation producing a whole grid (a Boolean) does not fault
+  // in fresh pages each time. Layers from calloc go back to the system when freed, so that a sparse or streamed
+  // grid's memory is not held.
   enum class LayerFill { kSparseZero, kDenseZero, kOverwritten };
   static uint64_t* allocateLayerWords(size_t words, LayerFill fill);
-  static void releaseLayerWords(uint64_t* p, size_t words);
+  static void releaseLayerWords(uint64_t* p, size_t words, LayerFill fill);
   template <class T>
   struct LayerAllocator {
     using value_type = T;
@@ -156,7 +157,7 @@ class VoxelGrid {
       static_assert(sizeof(T) == sizeof(uint64_t));
       return reinterpret_cast<T*>(allocateLayerWords(n, fill));
     }
-    void deallocate(T* p, size_t n) { releaseLayerWords(reinterpret_cast<uint64_t*>(p), n); }
+    void deallocate(T* p, size_t n) { releaseLayerWords(reinterpret_cast<uint64_t*>(p), n, fill); }
     // A copy writes every word: its storage need not be zeroed first.
     LayerAllocator select_on_container_copy_construction() const { return LayerAllocator(LayerFill::kOverwritten); }
     // Value-initialising a word writes nothing: the storage is already zero.
