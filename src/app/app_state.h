@@ -358,6 +358,8 @@ struct AppState {
   AsyncValue<XrayKey, std::shared_ptr<const XrayResult>> xray_result;
   AsyncValue<uint64_t, std::shared_ptr<const ThicknessResult>> thickness;  // keyed by model_version
   Job<std::filesystem::path> volume_export_job;  // File > Export volume: the file being written (export_volume.h)
+  // What the status line adds to "Wrote FILE" when that export is done, e.g. " (the half the cut-away keeps)".
+  std::string volume_export_note;
   // A coarse view's section at full resolution, read from the file in the background (full_section.h).
   Job<Section> full_section_job;
   std::optional<Section> full_section;

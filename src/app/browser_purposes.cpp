@@ -200,9 +200,7 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
         purpose != BrowserPurpose::kSaveParts) {  // saveParts says how many files it wrote
       state.status_message = "Wrote " + std::filesystem::absolute(path).lexically_normal().string();
       const bool surface = purpose == BrowserPurpose::kExportSurface || purpose == BrowserPurpose::kExportSmoothSurface;
-      if (surface && state.panel == Panel::kSection && state.view.cut_away) {
-        state.status_message += " (the half the cut-away keeps)";
-      }
+      if (surface && exportsCutAway(state)) state.status_message += kCutAwayNote;
       state.status_since = nowSeconds();
     }
     if (auto then = std::move(state.browser.then)) {

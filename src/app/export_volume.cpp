@@ -3,6 +3,7 @@
 #include <memory>
 #include <utility>
 
+#include "app/exports.h"
 #include "app/messages.h"
 #include "app/thickness.h"
 #include "vox/analysis/distance.h"
@@ -28,7 +29,10 @@ std::optional<io::VolumeFormat> formatFor(AppState& state, const std::filesystem
   return format;
 }
 
-void start(AppState& state, const std::filesystem::path& path, Job<std::filesystem::path>::Work work) {
+// `note` follows "Wrote FILE" in the status line when it is done.
+void start(AppState& state, const std::filesystem::path& path, Job<std::filesystem::path>::Work work,
+           std::string note = {}) {
+  state.volume_export_note = std::move(note);
   state.volume_export_job.start("Writing " + path.filename().string(), std::move(work));
 }
 
@@ -40,10 +44,20 @@ bool startVolumeExport(AppState& state, const std::filesystem::path& path) {
     return false;
   }
   if (!formatFor(state, path, false)) return false;
-  start(state, path, [grid = state.model, path](const ProgressFn& progress) -> ExportResult {
-    if (Status s = io::saveVolume(io::voxelsOnly(grid), path, progress); !s) return s.error();
-    return path;
-  });
+  // What the view shows: with the Section panel's cut-away on, the half it keeps (as the surface export).
+  const bool cut = exportsCutAway(state);
+  VoxelGrid grid = cutAwayModel(state);
+  if (cut && grid.filledCount() == 0) {
+    reportError(state, "the cut-away keeps no voxels: nothing to export", path);
+    return false;
+  }
+  start(
+      state, path,
+      [grid = std::move(grid), path](const ProgressFn& progress) -> ExportResult {
+        if (Status s = io::saveVolume(io::voxelsOnly(grid), path, progress); !s) return s.error();
+        return path;
+      },
+      cut ? kCutAwayNote : "");
   return true;
 }
 
@@ -77,7 +91,8 @@ void pollVolumeExport(AppState& state) {
   auto done = state.volume_export_job.take();
   if (!done) return;
   if (done->ok()) {
-    state.status_message = "Wrote " + std::filesystem::absolute(done->value()).lexically_normal().string();
+    state.status_message =
+        "Wrote " + std::filesystem::absolute(done->value()).lexically_normal().string() + state.volume_export_note;
     state.status_since = nowSeconds();
   } else if (done->error().code != ErrorCode::kCancelled) {
     reportError(state, done->error().message);

@@ -1,10 +1,12 @@
 // File > Export volume and Export thickness volume without a window (export_volume.h): each runs in the background
-// and says where it wrote when done; wrong extensions, missing results and unwritable places are error dialogs
-// naming the file; Cancel leaves no file behind.
+// and says where it wrote when done; the model's volume is what the view shows (the cut-away's half); wrong extensions,
+// missing results and unwritable places are error dialogs naming the file; Cancel leaves no file behind.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
+#include <utility>
 
 #include "app/action_functions.h"
 #include "app/actions.h"
@@ -101,6 +103,65 @@ TEST(AppExportVolume, theThicknessVolumeNeedsTheThicknessAndHoldsItFieldForField
   auto back = io::loadNrrdField(dir / "t.nrrd");
   ASSERT_TRUE(back.ok()) << back.error().message;
   EXPECT_EQ(back->values, thicknessField(currentThickness(state)->thickness).values);
+}
+
+TEST(AppExportVolume, theCutAwayExportsTheHalfTheViewKeeps) {
+  test::TempDir dir;
+  AppState state;
+  // A 10 x 10 x 10 cube in a 12^3 grid.
+  VoxelGrid cube(Dims{12, 12, 12});
+  for (int z = 1; z < 11; ++z)
+    for (int y = 1; y < 11; ++y) cube.fillRun(y, z, 1, 11);
+  ASSERT_NO_FATAL_FAILURE(openGrid(state, dir, cube));
+  const auto filledIn = [](const std::filesystem::path& path) {
+    auto back = io::loadNrrdField(path);
+    EXPECT_TRUE(back.ok()) << back.error().message;
+    int64_t filled = 0, top = -1;
+    if (!back.ok()) return std::pair<int64_t, int64_t>{-1, -1};
+    for (int32_t z = 0; z < back->dims.nz; ++z)
+      for (int32_t y = 0; y < back->dims.ny; ++y)
+        for (int32_t x = 0; x < back->dims.nx; ++x) {
+          if (back->at(x, y, z) > 0.0f) {
+            ++filled;
+            top = std::max<int64_t>(top, z);
+          }
+        }
+    return std::pair<int64_t, int64_t>{filled, top};
+  };
+
+  // The section at z = 4, keeping z <= 4: layers 1 to 4 of the cube, the plane's own included.
+  ASSERT_TRUE(dispatch(state, ActionId::kSectionAt, ActionArgs{{"z", "4"}, ""}).ok());
+  ASSERT_EQ(state.panel, Panel::kSection);
+  ASSERT_TRUE(state.view.cut_away);
+  state.view.keep_above = false;
+  ASSERT_TRUE(dispatch(state, ActionId::kExportVolume, ActionArgs{{"half.nrrd"}, (dir / "half.nrrd").string()}).ok());
+  ASSERT_TRUE(pump(state, [&] { return !volumeExportRunning(state); }));
+  EXPECT_EQ(state.status_message, "Wrote " + (dir / "half.nrrd").string() + " (the half the cut-away keeps)");
+  EXPECT_EQ(filledIn(dir / "half.nrrd"), (std::pair<int64_t, int64_t>{400, 4}));
+  auto half = io::loadNrrdField(dir / "half.nrrd");
+  ASSERT_TRUE(half.ok());
+  EXPECT_EQ(half->dims, cube.dims());  // the model's lattice, the other half empty
+
+  // Keeping the half above: layers 4 to 10.
+  state.view.keep_above = true;
+  ASSERT_TRUE(dispatch(state, ActionId::kExportVolume, ActionArgs{{"above.nrrd"}, (dir / "above.nrrd").string()}).ok());
+  ASSERT_TRUE(pump(state, [&] { return !volumeExportRunning(state); }));
+  EXPECT_EQ(filledIn(dir / "above.nrrd"), (std::pair<int64_t, int64_t>{700, 10}));
+
+  // A cut-away that keeps nothing is an error naming the file, and nothing is written.
+  state.view.keep_above = false;
+  ASSERT_TRUE(dispatch(state, ActionId::kSectionAt, ActionArgs{{"z", "0"}, ""}).ok());
+  EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kExportVolume, dir / "none.nrrd"));
+  ASSERT_EQ(state.errors.messages.size(), 1u);
+  EXPECT_NE(state.errors.messages[0].find("none.nrrd"), std::string::npos) << state.errors.messages[0];
+  EXPECT_FALSE(std::filesystem::exists(dir / "none.nrrd"));
+
+  // Without the cut-away the whole model again, and no note.
+  state.view.cut_away = false;
+  ASSERT_TRUE(dispatch(state, ActionId::kExportVolume, ActionArgs{{"whole.nrrd"}, (dir / "whole.nrrd").string()}).ok());
+  ASSERT_TRUE(pump(state, [&] { return !volumeExportRunning(state); }));
+  EXPECT_EQ(state.status_message, "Wrote " + (dir / "whole.nrrd").string());
+  EXPECT_EQ(filledIn(dir / "whole.nrrd"), (std::pair<int64_t, int64_t>{1000, 10}));
 }
 
 TEST(AppExportVolume, cancelLeavesNoFileAndNoMessage) {
