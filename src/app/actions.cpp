@@ -34,6 +34,8 @@ const Action kActions[] = {
   {ActionId::kExportXrayCsv,  "export-csv",      "File",    "Export X-ray CSV...",                kNone,                       1, -1, exportCsv,     exportCsvPath,     hasXray,     nullptr},
   {ActionId::kExportVolume,   "export-volume",   "File",    "Export volume (.vti .vdb .nrrd .vox)...", kNone,                  1, -1, exportVolume,  exportVolumePath,  hasModel,    nullptr},
   {ActionId::kExportThickness, "export-thickness", "File",  "Export thickness volume (.vti .vdb .nrrd)...", kNone,              1, -1, exportThickness, exportThicknessPath, hasThickness, nullptr},
+  {ActionId::kExportDepth,    "export-depth",    "File",    "Export depth volume (.vti .vdb .nrrd)...", kNone,                  1, -1, exportDepth,   exportDepthPath,   hasDepth,    nullptr},
+  {ActionId::kExportXrayVolume, "export-xray-volume", "File", "Export X-ray volume (.vti .vdb .nrrd)...", kNone,                 1, -1, exportXrayVolume, exportXrayVolumePath, hasXray, nullptr},
   {ActionId::kExportSize,     "export-size",     nullptr,   "3D view export size",                kNone,                       2, 2,  nullptr,       exportSize,        nullptr,     nullptr},
   {ActionId::kQuit,           "quit",            "File",    "Quit",                               {GLFW_KEY_Q, kCtrl},         0, 0,  requestQuit,   nullptr,           nullptr,     nullptr},
 

@@ -29,6 +29,8 @@ enum class ActionId {
   kExportXrayCsv,
   kExportVolume,
   kExportThickness,
+  kExportDepth,
+  kExportXrayVolume,
   kExportSize,
   kQuit,
   kUndo,

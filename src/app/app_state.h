@@ -170,10 +170,12 @@ enum class BrowserPurpose {
   kExportSectionPng,
   kExportXrayPng,
   kExportXrayCsv,
-  kExportVolume,     // the model as .vti, .vdb, .nrrd or .vox (export_volume.h)
-  kExportThickness,  // the thickness volume as .vti, .vdb or .nrrd
-  kAddPart,          // a mesh or voxel file added to the scene as a part (parts.h)
-  kSaveParts,        // each part as a voxel file in a folder (parts.h, saveParts)
+  kExportVolume,      // the model as .vti, .vdb, .nrrd or .vox (export_volume.h)
+  kExportThickness,   // the thickness volume as .vti, .vdb or .nrrd
+  kExportDepth,       // the Skin panel's skin depth (each voxel's layer) as .vti, .vdb or .nrrd
+  kExportXrayVolume,  // the X-ray panel's image as a one-voxel-thick volume: .vti, .vdb or .nrrd
+  kAddPart,           // a mesh or voxel file added to the scene as a part (parts.h)
+  kSaveParts,         // each part as a voxel file in a folder (parts.h, saveParts)
 };
 
 struct FileBrowser {

@@ -47,7 +47,7 @@ void drawMainMenu(AppState& state) {
     }
     if (a.id == ActionId::kSaveParts || a.id == ActionId::kExportXrayCsv || a.id == ActionId::kCancelJob ||
         a.id == ActionId::kViewNegZ || a.id == ActionId::kZoomOut || a.id == ActionId::kViewDisputed ||
-        a.id == ActionId::kRedo || a.id == ActionId::kExportThickness) {
+        a.id == ActionId::kRedo || a.id == ActionId::kExportXrayVolume) {
       ImGui::Separator();
     }
   }
