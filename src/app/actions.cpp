@@ -163,6 +163,28 @@ void dispatchValues(AppState& state, ActionId id, std::vector<std::string> words
   (void)s;
 }
 
+std::string disabledReason(const AppState& state, const Action& a) {
+  if (actionEnabled(state, a)) return {};
+  const auto needs = [](const char* what, ActionId panel) {
+    const Action& p = action(panel);
+    return std::string("Needs ") + what + ": open the " + p.label + " (" + shortcutText(p.shortcut) +
+           ") and let it finish";
+  };
+  if (!state.doc.model) return {};  // no model: every export is off for the same plain reason
+  switch (a.id) {
+    case ActionId::kExportThickness:
+      return needs("the thickness", ActionId::kPanelThickness);
+    case ActionId::kExportDepth:
+      return needs("the skin layers", ActionId::kPanelSkin);
+    case ActionId::kExportXrayPng:
+    case ActionId::kExportXrayCsv:
+    case ActionId::kExportXrayVolume:
+      return needs("the X-ray", ActionId::kPanelXray);
+    default:
+      return {};
+  }
+}
+
 std::string shortcutText(const Shortcut& s) {
   if (s.key == 0) return {};
   std::string t;

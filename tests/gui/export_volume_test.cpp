@@ -90,11 +90,15 @@ TEST(AppExportVolume, theThicknessVolumeNeedsTheThicknessAndHoldsItFieldForField
   VoxelGrid g(Dims{16, 12, 10});
   for (int32_t z = 1; z < 9; ++z)
     for (int32_t y = 1; y < 11; ++y) g.fillRun(y, z, 1, 15);
+  EXPECT_EQ(disabledReason(state, action(ActionId::kExportThickness)), "");  // no model: off for a plain reason
   ASSERT_NO_FATAL_FAILURE(openGrid(state, dir, g));
+  EXPECT_EQ(disabledReason(state, action(ActionId::kExportThickness)),
+            "Needs the thickness: open the Thickness panel (Ctrl+6) and let it finish");
   EXPECT_FALSE(dispatch(state, ActionId::kExportThickness, ActionArgs{{"t.vti"}, (dir / "t.vti").string()}).ok());
 
   state.panel = Panel::kThickness;
   ASSERT_TRUE(pump(state, [&] { return currentThickness(state) != nullptr; }));
+  EXPECT_EQ(disabledReason(state, action(ActionId::kExportThickness)), "");
   EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kExportThickness, dir / "t.vox"));  // voxels only
   for (const char* name : {"t.vti", "t.vdb", "t.nrrd"}) {
     SCOPED_TRACE(name);
@@ -137,8 +141,11 @@ TEST(AppExportVolume, theDepthVolumeNeedsTheSkinLayersAndHoldsWhatPeelDepthWrite
   AppState state;
   const VoxelGrid g = holedBox();
   ASSERT_NO_FATAL_FAILURE(openGrid(state, dir, g));
-  // Off until the Skin panel has computed the skin layers; the browser's path says why, naming the file.
+  // Off until the Skin panel has computed the skin layers, and the menu item's tooltip says so; the browser's path
+  // says why too, naming the file.
   EXPECT_FALSE(actions::hasDepth(state));
+  EXPECT_EQ(disabledReason(state, action(ActionId::kExportDepth)),
+            "Needs the skin layers: open the Skin removal panel (Ctrl+3) and let it finish");
   EXPECT_FALSE(dispatch(state, ActionId::kExportDepth, ActionArgs{{"d.vti"}, (dir / "d.vti").string()}).ok());
   EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kExportDepth, dir / "d.vti"));
   ASSERT_EQ(state.errors.messages.size(), 1u);
@@ -147,6 +154,7 @@ TEST(AppExportVolume, theDepthVolumeNeedsTheSkinLayersAndHoldsWhatPeelDepthWrite
 
   state.panel = Panel::kSkin;
   ASSERT_TRUE(pump(state, [&] { return actions::hasDepth(state); }));
+  EXPECT_EQ(disabledReason(state, action(ActionId::kExportDepth)), "");
   EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kExportDepth, dir / "d.vox"));  // voxels only
   ASSERT_EQ(state.errors.messages.size(), 2u);
   EXPECT_NE(state.errors.messages[1].find("d.vox"), std::string::npos) << state.errors.messages[1];
@@ -209,6 +217,8 @@ TEST(AppExportVolume, theXrayVolumeNeedsTheXrayAndHoldsWhatXrayVolumeWrites) {
   const VoxelGrid g = holedBox();
   ASSERT_NO_FATAL_FAILURE(openGrid(state, dir, g));
   EXPECT_FALSE(actions::hasXray(state));
+  EXPECT_EQ(disabledReason(state, action(ActionId::kExportXrayVolume)),
+            "Needs the X-ray: open the X-ray panel (Ctrl+4) and let it finish");
   EXPECT_FALSE(dispatch(state, ActionId::kExportXrayVolume, ActionArgs{{"x.vti"}, (dir / "x.vti").string()}).ok());
   EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kExportXrayVolume, dir / "x.vti"));
   ASSERT_EQ(state.errors.messages.size(), 1u);
@@ -217,6 +227,7 @@ TEST(AppExportVolume, theXrayVolumeNeedsTheXrayAndHoldsWhatXrayVolumeWrites) {
 
   ASSERT_TRUE(dispatch(state, ActionId::kXray, ActionArgs{{"y", "max"}, "y max"}).ok());
   ASSERT_TRUE(pump(state, [&] { return actions::hasXray(state); }));
+  EXPECT_EQ(disabledReason(state, action(ActionId::kExportXrayVolume)), "");
   EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kExportXrayVolume, dir / "x.vox"));
   ASSERT_EQ(state.errors.messages.size(), 2u);
   EXPECT_NE(state.errors.messages[1].find("x.vox"), std::string::npos) << state.errors.messages[1];

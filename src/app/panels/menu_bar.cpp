@@ -32,6 +32,9 @@ void drawMainMenu(AppState& state) {
                         actionEnabled(state, a))) {
       dispatch(state, a.id);
     }
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+      if (const std::string why = disabledReason(state, a); !why.empty()) ImGui::SetTooltip("%s", why.c_str());
+    }
     if (a.id == ActionId::kOpen) {
       // Open Recent sits under Open; its entries are files, not actions.
       if (ImGui::BeginMenu("Open Recent", !state.settings.recent_files.empty())) {
