@@ -62,6 +62,8 @@ bool canCancel(const AppState& s) {
          s.interference_job.active() || s.clearance_job.active();
 }
 bool hasThickness(const AppState& s) { return currentThickness(s) != nullptr; }
+// A depth export needs the skin layers computed (the Skin panel computes them); until then the menu item is off.
+bool hasDepth(const AppState& s) { return currentDepthMap(s) != nullptr; }
 
 // ---- File ----
 void open(AppState& s) { openBrowser(s, BrowserPurpose::kOpen); }
@@ -92,6 +94,12 @@ Status exportVolumePath(AppState& s, const ActionArgs& a) { return acceptPath(s,
 void exportThickness(AppState& s) { openBrowser(s, BrowserPurpose::kExportThickness); }
 Status exportThicknessPath(AppState& s, const ActionArgs& a) {
   return acceptPath(s, BrowserPurpose::kExportThickness, a);
+}
+void exportDepth(AppState& s) { openBrowser(s, BrowserPurpose::kExportDepth); }
+Status exportDepthPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportDepth, a); }
+void exportXrayVolume(AppState& s) { openBrowser(s, BrowserPurpose::kExportXrayVolume); }
+Status exportXrayVolumePath(AppState& s, const ActionArgs& a) {
+  return acceptPath(s, BrowserPurpose::kExportXrayVolume, a);
 }
 
 Status exportSize(AppState& s, const ActionArgs& a) {  // W H: the 3D view's export size (0 0: as shown)

@@ -16,6 +16,7 @@ bool canPeelBack(const AppState& s);
 bool hasDisputed(const AppState& s);
 bool canCancel(const AppState& s);     // voxelizing, loading, the thickness or a volume export runs
 bool hasThickness(const AppState& s);  // the Thickness panel's result for the model shown
+bool hasDepth(const AppState& s);      // the Skin panel's skin layers (the depth map) of the model
 
 // ---- File ----
 void open(AppState& s);
@@ -41,6 +42,10 @@ void exportVolume(AppState& s);
 Status exportVolumePath(AppState& s, const ActionArgs& a);
 void exportThickness(AppState& s);
 Status exportThicknessPath(AppState& s, const ActionArgs& a);
+void exportDepth(AppState& s);
+Status exportDepthPath(AppState& s, const ActionArgs& a);
+void exportXrayVolume(AppState& s);
+Status exportXrayVolumePath(AppState& s, const ActionArgs& a);
 Status exportSize(AppState& s, const ActionArgs& a);
 
 // ---- Edit ----

@@ -34,6 +34,8 @@ const Action kActions[] = {
   {ActionId::kExportXrayCsv,  "export-csv",      "File",    "Export X-ray CSV...",                kNone,                       1, -1, exportCsv,     exportCsvPath,     hasXray,     nullptr},
   {ActionId::kExportVolume,   "export-volume",   "File",    "Export volume (.vti .vdb .nrrd .vox)...", kNone,                  1, -1, exportVolume,  exportVolumePath,  hasModel,    nullptr},
   {ActionId::kExportThickness, "export-thickness", "File",  "Export thickness volume (.vti .vdb .nrrd)...", kNone,              1, -1, exportThickness, exportThicknessPath, hasThickness, nullptr},
+  {ActionId::kExportDepth,    "export-depth",    "File",    "Export depth volume (.vti .vdb .nrrd)...", kNone,                  1, -1, exportDepth,   exportDepthPath,   hasDepth,    nullptr},
+  {ActionId::kExportXrayVolume, "export-xray-volume", "File", "Export X-ray volume (.vti .vdb .nrrd)...", kNone,                 1, -1, exportXrayVolume, exportXrayVolumePath, hasXray, nullptr},
   {ActionId::kExportSize,     "export-size",     nullptr,   "3D view export size",                kNone,                       2, 2,  nullptr,       exportSize,        nullptr,     nullptr},
   {ActionId::kQuit,           "quit",            "File",    "Quit",                               {GLFW_KEY_Q, kCtrl},         0, 0,  requestQuit,   nullptr,           nullptr,     nullptr},
 
@@ -159,6 +161,28 @@ Status dispatch(AppState& state, const Action& a, const ActionArgs& args) {
 void dispatchValues(AppState& state, ActionId id, std::vector<std::string> words) {
   const Status s = dispatch(state, id, ActionArgs{std::move(words), {}});
   (void)s;
+}
+
+std::string disabledReason(const AppState& state, const Action& a) {
+  if (actionEnabled(state, a)) return {};
+  const auto needs = [](const char* what, ActionId panel) {
+    const Action& p = action(panel);
+    return std::string("Needs ") + what + ": open the " + p.label + " (" + shortcutText(p.shortcut) +
+           ") and let it finish";
+  };
+  if (!state.doc.model) return {};  // no model: every export is off for the same plain reason
+  switch (a.id) {
+    case ActionId::kExportThickness:
+      return needs("the thickness", ActionId::kPanelThickness);
+    case ActionId::kExportDepth:
+      return needs("the skin layers", ActionId::kPanelSkin);
+    case ActionId::kExportXrayPng:
+    case ActionId::kExportXrayCsv:
+    case ActionId::kExportXrayVolume:
+      return needs("the X-ray", ActionId::kPanelXray);
+    default:
+      return {};
+  }
 }
 
 std::string shortcutText(const Shortcut& s) {

@@ -29,6 +29,8 @@ enum class ActionId {
   kExportXrayCsv,
   kExportVolume,
   kExportThickness,
+  kExportDepth,
+  kExportXrayVolume,
   kExportSize,
   kQuit,
   kUndo,
@@ -131,6 +133,9 @@ Status dispatch(AppState& state, const Action& a, const ActionArgs& args);
 // (the action not enabled now) is ignored, as a disabled menu item's click is.
 void dispatchValues(AppState& state, ActionId id, std::vector<std::string> words);
 bool actionEnabled(const AppState& state, const Action& a);
+// Why an export that needs a computed result is off now, for its menu item's tooltip, e.g. "Needs the skin layers:
+// open the Skin removal panel (Ctrl+3) and let it finish"; empty while it is on, and for the other actions.
+std::string disabledReason(const AppState& state, const Action& a);
 // "Ctrl+Shift+S"; empty without a shortcut.
 std::string shortcutText(const Shortcut& s);
 

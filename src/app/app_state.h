@@ -170,10 +170,12 @@ enum class BrowserPurpose {
   kExportSectionPng,
   kExportXrayPng,
   kExportXrayCsv,
-  kExportVolume,     // the model as .vti, .vdb, .nrrd or .vox (export_volume.h)
-  kExportThickness,  // the thickness volume as .vti, .vdb or .nrrd
-  kAddPart,          // a mesh or voxel file added to the scene as a part (parts.h)
-  kSaveParts,        // each part as a voxel file in a folder (parts.h, saveParts)
+  kExportVolume,      // the model as .vti, .vdb, .nrrd or .vox (export_volume.h)
+  kExportThickness,   // the thickness volume as .vti, .vdb or .nrrd
+  kExportDepth,       // the Skin panel's skin depth (each voxel's layer) as .vti, .vdb or .nrrd
+  kExportXrayVolume,  // the X-ray panel's image as a one-voxel-thick volume: .vti, .vdb or .nrrd
+  kAddPart,           // a mesh or voxel file added to the scene as a part (parts.h)
+  kSaveParts,         // each part as a voxel file in a folder (parts.h, saveParts)
 };
 
 struct FileBrowser {
@@ -358,6 +360,8 @@ struct AppState {
   AsyncValue<XrayKey, std::shared_ptr<const XrayResult>> xray_result;
   AsyncValue<uint64_t, std::shared_ptr<const ThicknessResult>> thickness;  // keyed by model_version
   Job<std::filesystem::path> volume_export_job;  // File > Export volume: the file being written (export_volume.h)
+  // What the status line adds to "Wrote FILE" when that export is done, e.g. " (the half the cut-away keeps)".
+  std::string volume_export_note;
   // A coarse view's section at full resolution, read from the file in the background (full_section.h).
   Job<Section> full_section_job;
   std::optional<Section> full_section;

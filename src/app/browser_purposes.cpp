@@ -36,6 +36,8 @@ std::vector<std::string> browserExtensions(BrowserPurpose purpose) {
     case BrowserPurpose::kExportVolume:
       return {".vti", ".vdb", ".nrrd", ".vox"};
     case BrowserPurpose::kExportThickness:
+    case BrowserPurpose::kExportDepth:
+    case BrowserPurpose::kExportXrayVolume:
       return {".vti", ".vdb", ".nrrd"};
     case BrowserPurpose::kSaveParts:
       return {};  // a folder: the browser lists folders only
@@ -68,6 +70,11 @@ const char* browserTitle(BrowserPurpose purpose) {
              "(MagicaVoxel)";
     case BrowserPurpose::kExportThickness:
       return "Export the thickness as a volume: .vti or .vdb (voxels, thickness, distance), .nrrd (thickness)";
+    case BrowserPurpose::kExportDepth:
+      return "Export the skin depth as a volume (.vti, .vdb, .nrrd): each voxel's skin layer, 1 the outer skin, the "
+             "core last";
+    case BrowserPurpose::kExportXrayVolume:
+      return "Export the X-ray as a volume (.vti, .vdb, .nrrd): each ray's thickness in model units, one voxel thick";
     case BrowserPurpose::kAddPart:
       return "Add a part from a mesh or voxel file (on the scene's lattice)";
     case BrowserPurpose::kSaveParts:
@@ -123,6 +130,13 @@ void openBrowser(AppState& state, BrowserPurpose purpose) {
       break;
     case BrowserPurpose::kExportThickness:
       b.file_name = stem + "_thickness.vti";
+      break;
+    case BrowserPurpose::kExportDepth:
+      b.file_name = stem + "_depth.vti";
+      break;
+    case BrowserPurpose::kExportXrayVolume:
+      b.file_name =
+          stem + "_xray_" + axisName(state.xray.params.axis) + "_" + xrayModeName(state.xray.params.mode) + ".vti";
       break;
     case BrowserPurpose::kSaveParts:
       b.file_name = stem + "_parts";
@@ -184,6 +198,12 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
     case BrowserPurpose::kExportThickness:
       ok = startThicknessExport(state, path);
       break;
+    case BrowserPurpose::kExportDepth:
+      ok = startDepthExport(state, path);
+      break;
+    case BrowserPurpose::kExportXrayVolume:
+      ok = startXrayVolumeExport(state, path);
+      break;
     case BrowserPurpose::kSaveParts:
       if (Status s = saveParts(state, path); !s) {
         reportError(state, s.error().message, path);
@@ -195,14 +215,14 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
   if (ok) {
     state.settings.last_directory = std::filesystem::absolute(path).parent_path().string();
     // Say where a file went (the name typed may have been relative, or the directory not the one in mind).
-    const bool in_background = purpose == BrowserPurpose::kExportVolume || purpose == BrowserPurpose::kExportThickness;
+    const bool in_background = purpose == BrowserPurpose::kExportVolume ||
+                               purpose == BrowserPurpose::kExportThickness || purpose == BrowserPurpose::kExportDepth ||
+                               purpose == BrowserPurpose::kExportXrayVolume;
     if (purpose != BrowserPurpose::kOpen && purpose != BrowserPurpose::kAddPart && !in_background &&
         purpose != BrowserPurpose::kSaveParts) {  // saveParts says how many files it wrote
       state.status_message = "Wrote " + std::filesystem::absolute(path).lexically_normal().string();
       const bool surface = purpose == BrowserPurpose::kExportSurface || purpose == BrowserPurpose::kExportSmoothSurface;
-      if (surface && state.panel == Panel::kSection && state.view.cut_away) {
-        state.status_message += " (the half the cut-away keeps)";
-      }
+      if (surface && exportsCutAway(state)) state.status_message += kCutAwayNote;
       state.status_since = nowSeconds();
     }
     if (auto then = std::move(state.browser.then)) {

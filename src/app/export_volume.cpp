@@ -3,9 +3,13 @@
 #include <memory>
 #include <utility>
 
+#include "app/exports.h"
 #include "app/messages.h"
+#include "app/skin.h"
 #include "app/thickness.h"
+#include "app/update.h"
 #include "vox/analysis/distance.h"
+#include "vox/analysis/scalar_fields.h"
 #include "vox/analysis/thickness_map.h"
 #include "vox/core/text.h"
 #include "vox/io/volume_export.h"
@@ -15,21 +19,33 @@ namespace {
 
 using ExportResult = Result<std::filesystem::path>;
 
-// The extension's format when it holds what is asked for (fields or not); an error dialog otherwise.
-std::optional<io::VolumeFormat> formatFor(AppState& state, const std::filesystem::path& path, bool fields) {
+// The extension's format when it holds what is asked for (a field, e.g. "the thickness", or the voxels when
+// `field` is null); an error dialog otherwise.
+std::optional<io::VolumeFormat> formatFor(AppState& state, const std::filesystem::path& path, const char* field) {
   const auto format = io::volumeFormatOf(path);
-  if (!format || (fields && !io::holdsFields(*format))) {
+  if (!format || (field && !io::holdsFields(*format))) {
     reportError(state,
-                std::string(fields ? "the thickness is exported" : "volumes are exported") + " as " +
-                    io::volumeExtensionList(fields) + "; choose one of those extensions",
+                std::string(field ? field : "volumes") + (field ? " is exported as " : " are exported as ") +
+                    io::volumeExtensionList(field != nullptr) + "; choose one of those extensions",
                 path);
     return std::nullopt;
   }
   return format;
 }
 
-void start(AppState& state, const std::filesystem::path& path, Job<std::filesystem::path>::Work work) {
+// `note` follows "Wrote FILE" in the status line when it is done.
+void start(AppState& state, const std::filesystem::path& path, Job<std::filesystem::path>::Work work,
+           std::string note = {}) {
+  state.volume_export_note = std::move(note);
   state.volume_export_job.start("Writing " + path.filename().string(), std::move(work));
+}
+
+// One scalar field under `name`, as voxmod peel --depth and voxmod xray --volume write it (cli/output.h,
+// encodeFieldFile): the field alone, in every format.
+ExportResult writeField(const std::string& name, const ScalarField& field, const std::filesystem::path& path,
+                        const ProgressFn& progress) {
+  if (Status s = io::saveVolume(io::oneField(name, field), path, progress); !s) return s.error();
+  return path;
 }
 
 }  // namespace
@@ -39,11 +55,21 @@ bool startVolumeExport(AppState& state, const std::filesystem::path& path) {
     reportError(state, "there is no model to export", path);
     return false;
   }
-  if (!formatFor(state, path, false)) return false;
-  start(state, path, [grid = state.model, path](const ProgressFn& progress) -> ExportResult {
-    if (Status s = io::saveVolume(io::voxelsOnly(grid), path, progress); !s) return s.error();
-    return path;
-  });
+  if (!formatFor(state, path, nullptr)) return false;
+  // What the view shows: with the Section panel's cut-away on, the half it keeps (as the surface export).
+  const bool cut = exportsCutAway(state);
+  VoxelGrid grid = cutAwayModel(state);
+  if (cut && grid.filledCount() == 0) {
+    reportError(state, "the cut-away keeps no voxels: nothing to export", path);
+    return false;
+  }
+  start(
+      state, path,
+      [grid = std::move(grid), path](const ProgressFn& progress) -> ExportResult {
+        if (Status s = io::saveVolume(io::voxelsOnly(grid), path, progress); !s) return s.error();
+        return path;
+      },
+      cut ? kCutAwayNote : "");
   return true;
 }
 
@@ -53,7 +79,7 @@ bool startThicknessExport(AppState& state, const std::filesystem::path& path) {
     reportError(state, "there is no thickness to export (open the Thickness panel and let it finish)", path);
     return false;
   }
-  const auto format = formatFor(state, path, true);
+  const auto format = formatFor(state, path, "the thickness");
   if (!format) return false;
   // The result is shared with the panel, not copied: it is immutable once computed.
   const auto& shared = *state.thickness.get(state.model_version);
@@ -73,11 +99,52 @@ bool startThicknessExport(AppState& state, const std::filesystem::path& path) {
   return true;
 }
 
+bool startDepthExport(AppState& state, const std::filesystem::path& path) {
+  const DepthMap* current = currentDepthMap(state);
+  if (!current || !state.doc.model) {
+    reportError(state, "there is no skin depth to export (open the Skin panel and let it compute the skin layers)",
+                path);
+    return false;
+  }
+  if (!formatFor(state, path, "the skin depth")) return false;
+  const ModelSnapshot& m = *state.doc.model;
+  // The layers of the base, which the Skin panel counts (peeled ones included); the base carries the units now set.
+  std::string note;
+  if (m.peeled > 0) {
+    note = " (all " + std::to_string(current->layers()) + " skin layers, the " + std::to_string(m.peeled) +
+           (m.peeled == 1 ? " peeled one included)" : " peeled ones included)");
+  }
+  const auto& shared = *state.depth.get(m.base_id);  // immutable once computed: shared, not copied
+  start(
+      state, path,
+      [depth = shared, base = m.base, path](const ProgressFn& progress) -> ExportResult {
+        return writeField("depth", depthField(*depth, base), path, progress);
+      },
+      std::move(note));
+  return true;
+}
+
+bool startXrayVolumeExport(AppState& state, const std::filesystem::path& path) {
+  const XrayResult* x = currentXray(state);
+  if (!x || state.model.empty()) {
+    reportError(state, "there is no X-ray to export (open the X-ray panel and let it finish)", path);
+    return false;
+  }
+  if (!formatFor(state, path, "the X-ray")) return false;
+  const XrayKey key{state.model_version, state.xray.params.axis, state.xray.params.mode};
+  const auto& shared = *state.xray_result.get(key);
+  start(state, path, [xray = shared, grid = state.model, path](const ProgressFn& progress) -> ExportResult {
+    return writeField("xray", xrayField(*xray, grid), path, progress);
+  });
+  return true;
+}
+
 void pollVolumeExport(AppState& state) {
   auto done = state.volume_export_job.take();
   if (!done) return;
   if (done->ok()) {
-    state.status_message = "Wrote " + std::filesystem::absolute(done->value()).lexically_normal().string();
+    state.status_message =
+        "Wrote " + std::filesystem::absolute(done->value()).lexically_normal().string() + state.volume_export_note;
     state.status_since = nowSeconds();
   } else if (done->error().code != ErrorCode::kCancelled) {
     reportError(state, done->error().message);

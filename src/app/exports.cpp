@@ -26,6 +26,13 @@ bool exportBinvox(AppState& state, const std::filesystem::path& path) {
   return true;
 }
 
+bool exportsCutAway(const AppState& state) { return state.panel == Panel::kSection && state.view.cut_away; }
+
+VoxelGrid cutAwayModel(const AppState& state) {
+  if (!exportsCutAway(state)) return state.model;
+  return cutAway(state.model, state.section.axis, state.section.index, state.view.keep_above);
+}
+
 bool exportSurface(AppState& state, const std::filesystem::path& path, bool smooth) {
   if (state.model.empty() || state.model.filledCount() == 0) {
     reportError(state, "there is no model to export", path);
@@ -36,9 +43,8 @@ bool exportSurface(AppState& state, const std::filesystem::path& path, bool smoo
     return false;
   }
   // What the view shows: with the Section panel's cut-away on, the half it keeps (the cut face included).
-  const bool cut = state.panel == Panel::kSection && state.view.cut_away;
-  const VoxelGrid half =
-      cut ? cutAway(state.model, state.section.axis, state.section.index, state.view.keep_above) : VoxelGrid();
+  const bool cut = exportsCutAway(state);
+  const VoxelGrid half = cut ? cutAwayModel(state) : VoxelGrid();
   if (cut && half.filledCount() == 0) {
     reportError(state, "the cut-away keeps no voxels: nothing to export", path);
     return false;

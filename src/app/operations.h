@@ -6,7 +6,7 @@
 // it lives with the viewport (view_export.h, defined in viewport.cpp), not here.
 #include "app/browser_purposes.h"  // the file browser's purposes: open, save as, the exports
 #include "app/document.h"          // open, save, unsaved changes, units, undo / redo, the window title
-#include "app/export_volume.h"     // volumes of the model and the thickness (.vti .vdb .nrrd .vox), in the background
+#include "app/export_volume.h"     // volumes: the model, thickness, skin depth, X-ray; in the background
 #include "app/exports.h"           // binvox, section and X-ray images, X-ray CSV
 #include "app/messages.h"          // error dialogs
 #include "app/model_jobs.h"        // voxelizing in the background; cancel, busy

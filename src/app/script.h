@@ -8,6 +8,7 @@
 // clang-format off
 //   open PATH | save PATH | save-as PATH | export-view PATH | export-section PATH | export-xray PATH | export-csv PATH
 //   export-volume PATH (.vti .vdb .nrrd .vox) | export-thickness PATH (.vti .vdb .nrrd)
+//   export-depth PATH | export-xray-volume PATH (.vti .vdb .nrrd)
 //   voxelize R [MODE]                voxelize the open mesh (MODE auto|parity|nonzero|vote); no values: the dialog
 //   section AXIS INDEX               the section at voxel INDEX along x|y|z (and the Section panel)
 //   peel N | peel-one | peel-back | peel-core | peel-reset

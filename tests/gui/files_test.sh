@@ -54,14 +54,17 @@ echo "ok - save marks the model saved; undo / redo move away from and back to it
   fail "re-opened part.vxm differs: $(get "$s5" dims) / $(get "$s5" filled) vs $(get "$s2" dims) / $(get "$s2" filled)"
 [[ "$(get "$s5" unsaved)" == 0 ]] || fail "a freshly opened file counts as unsaved"
 echo "ok - part.vxm re-opens with the same $(get "$s5" filled) voxels"
-for f in section.png xray.png view.png xray.csv surface.stl surface.3mf smooth.ply part.vdb thickness.vti 01_error_dialog.png 02_reopened.png; do
+for f in section.png xray.png view.png xray.csv xray.nrrd surface.stl surface.3mf smooth.ply part.vdb thickness.vti \
+  depth.vti 01_error_dialog.png 02_reopened.png; do
   [[ -s "$out/$f" ]] || fail "$f was not written"
 done
 head -n 1 "$out/xray.csv" | grep -q "^u,v,thickness_voxels" || fail "xray.csv has no header"
 # the surface is a binary STL of whole triangles: 84 bytes of header and count, 50 per triangle
 stl_size=$(stat -c %s "$out/surface.stl")
 (( stl_size > 84 && (stl_size - 84) % 50 == 0 )) || fail "surface.stl is not a binary STL ($stl_size bytes)"
-echo "ok - section, X-ray, view, surface and volume exports written"
+grep -q 'Name="depth"' "$out/depth.vti" || fail "depth.vti holds no depth field"
+[[ ! -e "$out/depth.vox" ]] || fail "the skin depth was written as .vox, which holds voxels only"
+echo "ok - section, X-ray, view, surface and volume (model, thickness, depth, X-ray) exports written"
 
 # Settings: a session without a script reads the window size it had last time, remembers the file it opened,
 # and keeps ImGui's ini beside its own.

@@ -32,6 +32,9 @@ void drawMainMenu(AppState& state) {
                         actionEnabled(state, a))) {
       dispatch(state, a.id);
     }
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+      if (const std::string why = disabledReason(state, a); !why.empty()) ImGui::SetTooltip("%s", why.c_str());
+    }
     if (a.id == ActionId::kOpen) {
       // Open Recent sits under Open; its entries are files, not actions.
       if (ImGui::BeginMenu("Open Recent", !state.settings.recent_files.empty())) {
@@ -47,7 +50,7 @@ void drawMainMenu(AppState& state) {
     }
     if (a.id == ActionId::kSaveParts || a.id == ActionId::kExportXrayCsv || a.id == ActionId::kCancelJob ||
         a.id == ActionId::kViewNegZ || a.id == ActionId::kZoomOut || a.id == ActionId::kViewDisputed ||
-        a.id == ActionId::kRedo || a.id == ActionId::kExportThickness) {
+        a.id == ActionId::kRedo || a.id == ActionId::kExportXrayVolume) {
       ImGui::Separator();
     }
   }
