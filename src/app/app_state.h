@@ -265,6 +265,11 @@ struct PartsUi {
   glm::dvec3 translation_edit{0.0};
   size_t translation_edit_part = SIZE_MAX;
   uint64_t translation_edit_version = 0;
+  // The colour picker: the part whose swatch was active in the last frame (a drag goes on while it stays so), and the
+  // undo step the last colour change made (setPartColour joins a drag's changes into it) with its part.
+  size_t colour_drag_part = SIZE_MAX;
+  std::shared_ptr<const Assembly> colour_step;
+  size_t colour_step_part = SIZE_MAX;
 };
 
 struct LoadedFile {

@@ -38,6 +38,22 @@ void commitParts(AppState& state, std::shared_ptr<const Assembly> parts, const s
   setModel(state, std::move(snap), true);
 }
 
+// A change of how the parts are shown (colour, visibility) as an undo step of its own: the state before it goes on the
+// undo stack (a cheap copy: the grids share their layers) and the current state takes the new parts. The model version
+// stays: the voxels are the same, so nothing derived from them (the renderers' points, the interference, the mass) is
+// found again, and the document is not unsaved by it (a .vxm file holds voxels only). `merge`: the change is part of
+// the current step (a colour drag), so nothing is pushed.
+void commitLook(AppState& state, std::shared_ptr<const Assembly> parts, std::string label, bool merge) {
+  Document& doc = state.doc;
+  if (!merge) {
+    doc.undo_stack.push_back(*doc.model);
+    doc.redo_stack.clear();
+  }
+  doc.model->parts = std::move(parts);
+  doc.model->label = std::move(label);
+  state.viewport.dirty = true;
+}
+
 // The current model as an assembly of one part (a document that is not a scene yet), or the current parts.
 Assembly sceneOfModel(const AppState& state) {
   if (const Assembly* a = currentParts(state)) return *a;
@@ -232,24 +248,26 @@ PartPlacement placementTurned(const AppState& state, size_t i, int axis) {
   return p;
 }
 
-void setPartColour(AppState& state, size_t i, const glm::vec3& colour) {
+void setPartColour(AppState& state, size_t i, const glm::vec3& colour, bool drag) {
   const Assembly* parts = currentParts(state);
-  if (!parts || i >= parts->size() || parts->part(i).colour == colour) return;
-  // Like visibility: how the scene is shown, edited in place in the current state.
+  const glm::vec3 c = glm::clamp(colour, glm::vec3(0.0f), glm::vec3(1.0f));
+  if (!parts || i >= parts->size() || parts->part(i).colour == c) return;
+  PartsUi& ui = state.parts_ui;
+  // A drag goes on in the step its first change made, as long as that step is still the current state.
+  const bool merge = drag && ui.colour_step_part == i && ui.colour_step == state.doc.model->parts;
   auto scene = std::make_shared<Assembly>(*parts);
-  scene->part(i).colour = glm::clamp(colour, glm::vec3(0.0f), glm::vec3(1.0f));
-  state.doc.model->parts = std::move(scene);
-  state.viewport.dirty = true;
+  scene->part(i).colour = c;
+  commitLook(state, std::move(scene), "colour of " + parts->part(i).name, merge);
+  ui.colour_step = state.doc.model->parts;
+  ui.colour_step_part = i;
 }
 
 void setPartVisible(AppState& state, size_t i, bool visible) {
   const Assembly* parts = currentParts(state);
   if (!parts || i >= parts->size() || parts->part(i).visible == visible) return;
-  // Visibility is how the scene is shown, not the model: the same state, edited in place (undo keeps it).
   auto scene = std::make_shared<Assembly>(*parts);
   scene->part(i).visible = visible;
-  state.doc.model->parts = std::move(scene);
-  state.viewport.dirty = true;
+  commitLook(state, std::move(scene), (visible ? "show " : "hide ") + parts->part(i).name, false);
 }
 
 void selectPart(AppState& state, size_t i, bool additive) {

@@ -299,18 +299,85 @@ TEST(AppParts, aPartsColourIsSetAndDrawnWithoutANewModelState) {
   AppState state;
   openTwoBlocks(state, dir);
   const uint64_t version = state.doc.model->version;
-  const size_t undo_depth = state.doc.undo_stack.size();
   ASSERT_TRUE(run(state, "part-colour 1 #ff8000").ok());
   EXPECT_EQ(currentParts(state)->part(0).colour, glm::vec3(1.0f, 128.0f / 255.0f, 0.0f));
   ASSERT_TRUE(run(state, "part-colour 2 0 0.5 1").ok());
   EXPECT_EQ(currentParts(state)->part(1).colour, glm::vec3(0.0f, 0.5f, 1.0f));
-  // How the parts are shown, like visibility: the same model state, nothing to undo.
+  // How the parts are shown: the voxels and the model version stay, so the document is not unsaved by it.
   EXPECT_EQ(state.doc.model->version, version);
-  EXPECT_EQ(state.doc.undo_stack.size(), undo_depth);
   EXPECT_FALSE(run(state, "part-colour 1 1.5 0 0").ok());
   EXPECT_FALSE(run(state, "part-colour 1 #12345").ok());
   EXPECT_FALSE(run(state, "part-colour 1 red").ok());
+  EXPECT_FALSE(run(state, "part-colour 1 0 0 drag").ok());
   EXPECT_EQ(currentParts(state)->part(0).colour, glm::vec3(1.0f, 128.0f / 255.0f, 0.0f));
+}
+
+// Colour and visibility are undone and redone like the other changes of the document, one step each; a drag in the
+// colour picker (its changes after the first say "drag", as the panel sends them) is one step; what was found for
+// the voxels (the interference) stays through them, as the voxels do.
+TEST(AppParts, colourAndVisibilityAreUndoneAndRedone) {
+  test::TempDir dir;
+  AppState state;
+  openTwoBlocks(state, dir);
+  const glm::vec3 first = currentParts(state)->part(0).colour;
+  const glm::vec3 second = currentParts(state)->part(1).colour;
+  ASSERT_TRUE(run(state, "interference").ok());
+  ASSERT_TRUE(pump(state, [&] { return currentInterference(state) != nullptr; }));
+  const size_t depth = state.doc.undo_stack.size();
+
+  ASSERT_TRUE(run(state, "part-colour 1 #ff0000").ok());
+  EXPECT_EQ(state.doc.undo_stack.size(), depth + 1);
+  EXPECT_EQ(state.doc.model->label, "colour of a.vxm");
+  undo(state);
+  EXPECT_EQ(currentParts(state)->part(0).colour, first);
+  redo(state);
+  EXPECT_EQ(currentParts(state)->part(0).colour, glm::vec3(1.0f, 0.0f, 0.0f));
+
+  // A drag: the first change a step of its own, the others in it; undo goes back to before the drag.
+  ASSERT_TRUE(run(state, "part-colour 2 0.1 0.2 0.3").ok());
+  for (const char* c : {"0.2 0.2 0.3", "0.3 0.2 0.3", "0.4 0.25 0.3"}) {
+    ASSERT_TRUE(run(state, std::string("part-colour 2 ") + c + " drag").ok());
+  }
+  EXPECT_EQ(currentParts(state)->part(1).colour, glm::vec3(0.4f, 0.25f, 0.3f));
+  EXPECT_EQ(state.doc.undo_stack.size(), depth + 2);
+  // A drag of another part's colour is not the same drag.
+  ASSERT_TRUE(run(state, "part-colour 1 0 1 0 drag").ok());
+  EXPECT_EQ(state.doc.undo_stack.size(), depth + 3);
+  undo(state);
+  EXPECT_EQ(currentParts(state)->part(0).colour, glm::vec3(1.0f, 0.0f, 0.0f));
+  EXPECT_EQ(currentParts(state)->part(1).colour, glm::vec3(0.4f, 0.25f, 0.3f));
+  undo(state);
+  EXPECT_EQ(currentParts(state)->part(1).colour, second);
+  EXPECT_EQ(currentParts(state)->part(0).colour, glm::vec3(1.0f, 0.0f, 0.0f));
+  // After an undo a "drag" change starts a step of its own: the step it would join is gone.
+  ASSERT_TRUE(run(state, "part-colour 2 0 0 1 drag").ok());
+  EXPECT_EQ(state.doc.undo_stack.size(), depth + 2);
+  EXPECT_FALSE(canRedo(state));
+  undo(state);
+  EXPECT_EQ(currentParts(state)->part(1).colour, second);
+
+  // Visibility: hiding is a step, undone and redone; the union (the model) keeps the hidden part.
+  ASSERT_TRUE(run(state, "part-visible 2 off").ok());
+  EXPECT_FALSE(currentParts(state)->part(1).visible);
+  EXPECT_EQ(state.doc.model->label, "hide b.vxm");
+  EXPECT_EQ(state.model.filledCount(), 10 * 4 * 4);
+  undo(state);
+  EXPECT_TRUE(currentParts(state)->part(1).visible);
+  redo(state);
+  EXPECT_FALSE(currentParts(state)->part(1).visible);
+  // The voxels never changed: the interference found before is still the current one.
+  EXPECT_NE(currentInterference(state), nullptr);
+
+  // Undoing a placement brings back the colours and visibility the parts had before it.
+  ASSERT_TRUE(run(state, "place-part 2 3 0 0").ok());
+  ASSERT_TRUE(run(state, "part-visible 2 on").ok());
+  ASSERT_TRUE(run(state, "part-colour 2 #00ff00").ok());
+  undo(state);
+  undo(state);
+  EXPECT_FALSE(currentParts(state)->part(1).visible);
+  EXPECT_EQ(currentParts(state)->part(1).placement.translation, glm::ivec3(3, 0, 0));
+  undo(state);
+  EXPECT_TRUE(currentParts(state)->part(1).placement.identity());
 }
 
 TEST(AppParts, eachPartIsSavedToAFolderOnTheLattice) {
