@@ -1,6 +1,7 @@
 #include "app/parts.h"
 
 #include <algorithm>
+#include <optional>
 #include <utility>
 
 #include <glm/common.hpp>
@@ -26,16 +27,37 @@ constexpr size_t kMaxComponentParts = 200;
 
 Error partsError(std::string message) { return makeError(ErrorCode::kInvalidArgument, std::move(message)); }
 
-// A new model state holding `parts`: the union as the model, a new base (the skin layers of the union).
-void commitParts(AppState& state, std::shared_ptr<const Assembly> parts, const std::string& label) {
+// A new model state holding `parts`: the union as the model (found here when not given), a new base (the skin layers
+// of the union).
+void commitParts(AppState& state, std::shared_ptr<const Assembly> parts, const std::string& label,
+                 std::optional<VoxelGrid> union_of_parts = std::nullopt) {
   auto origin = std::make_shared<ModelOrigin>();
   const ModelOrigin* prev = state.doc.model ? state.doc.model->origin.get() : nullptr;
   origin->what = std::to_string(parts->size()) + (parts->size() == 1 ? " part" : " parts") + " on one lattice";
   origin->resolution = prev ? prev->resolution : 0;
-  ModelSnapshot snap = newBase(state, partsUnion(*parts), std::move(origin), label);
+  VoxelGrid grid = union_of_parts ? std::move(*union_of_parts) : partsUnion(*parts);
+  ModelSnapshot snap = newBase(state, std::move(grid), std::move(origin), label);
   snap.parts = std::move(parts);
   state.parts_ui.selected.clear();
   setModel(state, std::move(snap), true);
+}
+
+// The union of `after`'s parts, where only part i was placed differently from `before`, whose union is `before_union`
+// (the model's base): made again only over part i's old and new boxes (redoUnionIn), the rest of the union kept.
+// The whole union when `before_union` is not on `before`'s extent.
+VoxelGrid unionAfterPlacing(const Assembly& before, const Assembly& after, size_t i, const VoxelGrid& before_union) {
+  const Box3i old_extent = before.extent(), extent = after.extent();
+  if (Dims{old_extent.size().x, old_extent.size().y, old_extent.size().z} != before_union.dims()) {
+    return partsUnion(after);
+  }
+  const Lattice& lattice = after.lattice();
+  const std::vector<LatticeGrid> placed = after.placedParts();
+  LatticeGrid u{before_union, old_extent.min};
+  if (extent != old_extent) u = reframe(u, extent, lattice);
+  redoUnionIn(u, placed, before.placedVoxels(i).box());
+  redoUnionIn(u, placed, placed[i].box());
+  u.grid.frame() = lattice.frameAt(extent.min);
+  return std::move(u.grid);
 }
 
 // A change of how the parts are shown (colour, visibility) as an undo step of its own: the state before it goes on the
@@ -229,7 +251,8 @@ Status placePart(AppState& state, size_t i, const PartPlacement& placement) {
   scene->setPlacement(i, p);
   const std::string label = (turned ? "turn " : "move ") + scene->part(i).name;
   const std::vector<size_t> selected = state.parts_ui.selected;
-  commitParts(state, std::move(scene), label);
+  VoxelGrid union_of_parts = unionAfterPlacing(*parts, *scene, i, state.doc.model->base);
+  commitParts(state, std::move(scene), label, std::move(union_of_parts));
   state.parts_ui.selected = selected;
   applyPartsScope(state);
   return Ok{};
@@ -346,13 +369,7 @@ const std::vector<int64_t>& partVoxelCounts(AppState& state) {
 }
 
 VoxelGrid partsUnion(const Assembly& parts) {
-  const Box3i ext = parts.extent();
-  const glm::ivec3 size = ext.size();
-  const Lattice& lattice = parts.lattice();
-  LatticeGrid acc{VoxelGrid(Dims{size.x, size.y, size.z}), ext.min};
-  for (size_t i = 0; i < parts.size(); ++i) acc = booleanParts(acc, parts.placedVoxels(i), PartOp::kUnion, lattice);
-  acc.grid.frame() = lattice.frameAt(ext.min);
-  return std::move(acc.grid);
+  return unionOfParts(parts.placedParts(), parts.extent(), parts.lattice()).grid;
 }
 
 VoxelGrid partOnExtent(const Assembly& parts, size_t i) {

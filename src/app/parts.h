@@ -40,6 +40,8 @@ void applyPartsScope(AppState& state);
 
 // Moves and turns part i (translation in whole lattice voxels, quarter turns about X, Y, Z; undoable). The model
 // grows or shrinks to the parts' new extent; the selection stays. Fails, saying why, for an index out of range.
+// The union is made again only over the part's old and new boxes (redoUnionIn): O(the words of the parts' rows in
+// those boxes), plus one copy of the union when the extent changes.
 Status placePart(AppState& state, size_t i, const PartPlacement& placement);
 // The placement with part i's translation set from model units (snapped to the nearest whole voxel).
 PartPlacement placementWithTranslation(const AppState& state, size_t i, const glm::dvec3& model_units);
@@ -93,8 +95,8 @@ void updateClearance(AppState& state);  // (updateParts calls it)
 // Filled voxels of each part, counted once per model version.
 const std::vector<int64_t>& partVoxelCounts(AppState& state);
 
-// The union of all parts, and part i alone, on the frame of the assembly's extent (what the 3D view and the
-// analyses use).
+// The union of all parts (unionOfParts), and part i alone, on the frame of the assembly's extent (what the analyses
+// use).
 VoxelGrid partsUnion(const Assembly& parts);
 VoxelGrid partOnExtent(const Assembly& parts, size_t i);
 
