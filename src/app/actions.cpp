@@ -101,7 +101,7 @@ const Action kActions[] = {
   {ActionId::kPartsScope,     "parts-scope",     nullptr,   "Section, X-ray and mass on",         kNone,                       1, 1,  nullptr,       partsScopeAt,      hasParts,    nullptr},
   {ActionId::kPlacePart,      "place-part",      nullptr,   "Move and turn a part",               kNone,                       4, 7,  nullptr,       placePartAt,       hasParts,    nullptr},
   {ActionId::kTurnPart,       "turn-part",       nullptr,   "Turn a part by 90 degrees",          kNone,                       2, 2,  nullptr,       turnPartAt,        hasParts,    nullptr},
-  {ActionId::kPartColour,     "part-colour",     nullptr,   "Colour of a part",                   kNone,                       2, 4,  nullptr,       partColourAt,      hasParts,    nullptr},
+  {ActionId::kPartColour,     "part-colour",     nullptr,   "Colour of a part",                   kNone,                       2, 5,  nullptr,       partColourAt,      hasParts,    nullptr},
 
   {ActionId::kControls,       "controls",        "Help",    "Mouse and keyboard",                 {GLFW_KEY_F1, 0},            0, 0,  controls,      nullptr,           nullptr,     nullptr},
   {ActionId::kAbout,          "about",           "Help",    "About voxmod",                       kNone,                       0, 0,  about,         nullptr,           nullptr,     nullptr},

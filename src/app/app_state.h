@@ -267,6 +267,11 @@ struct PartsUi {
   glm::dvec3 translation_edit{0.0};
   size_t translation_edit_part = SIZE_MAX;
   uint64_t translation_edit_version = 0;
+  // The colour picker: the part whose swatch was active in the last frame (a drag goes on while it stays so), and the
+  // undo step the last colour change made (setPartColour joins a drag's changes into it) with its part.
+  size_t colour_drag_part = SIZE_MAX;
+  std::shared_ptr<const Assembly> colour_step;
+  size_t colour_step_part = SIZE_MAX;
 };
 
 struct LoadedFile {
@@ -286,12 +291,25 @@ struct Viewport {
   std::unique_ptr<render::PointRenderer> overlay;   // disputed voxels or the core, drawn over the model
   std::unique_ptr<render::PointRenderer> ghost;     // the whole part, faint, around a peeled model
 
-  // One renderer per part of a scene (parts_view.h), on the model's frame; the model version they hold.
-  std::vector<std::unique_ptr<render::PointRenderer>> parts;
+  // One renderer per part of a scene (parts_view.h), each on its placed part's own box; the model version they were
+  // last brought up to date with, and how many times a part renderer was filled (setGrid) so far: a move refills only
+  // the part that moved.
+  struct PartView {
+    std::unique_ptr<render::PointRenderer> renderer;
+    LatticeGrid voxels;  // what it was filled from: the part's voxels as added (sharing the part's layers)
+    PartPlacement placement;
+    Box3i box;  // the placed part's box of lattice voxels: the renderer's voxel (0, 0, 0) is box.min
+  };
+  std::vector<PartView> parts;
   uint64_t parts_version = 0;
+  int64_t part_fills = 0;
 
   render::Framebuffer framebuffer;
-  uint64_t uploaded_version = 0;        // model_version the renderer holds
+  uint64_t uploaded_version = 0;  // model_version the renderer holds
+  // While the parts are drawn, model_bounds come from their renderers: the parts_version and model_version they were
+  // taken for (parts_bounds_version 0: from the model's renderer).
+  uint64_t parts_bounds_version = 0;
+  uint64_t parts_bounds_model = 0;
   uint64_t overlay_key = 0;             // what the overlay holds (see viewport.cpp)
   uint64_t ghost_key = 0;               // base_id of the model the ghost holds while peeled, else 0
   bool dirty = true;                    // draw again on the next frame

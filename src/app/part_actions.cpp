@@ -180,25 +180,29 @@ Status turnPartAt(AppState& s, const ActionArgs& a) {
 Status partColourAt(AppState& s, const ActionArgs& a) {
   auto i = partIndex(s, a.words[0]);
   if (!i) return i.error();
+  // A last word "drag": the colour picker's drag goes on (one undo step for the whole drag).
+  std::vector<std::string> words = a.words;
+  const bool drag = words.back() == "drag";
+  if (drag) words.pop_back();
   glm::vec3 c(0.0f);
-  if (a.words.size() == 2) {
-    const std::string& w = a.words[1];
+  if (words.size() == 2) {
+    const std::string& w = words[1];
     unsigned v = 0;
     if (w.size() != 7 || w[0] != '#' ||
         std::from_chars(w.data() + 1, w.data() + w.size(), v, 16).ptr != w.data() + w.size()) {
       return badValues("part-colour takes N #rrggbb or N R G B (0 to 1), not '" + w + "'");
     }
     c = glm::vec3(float((v >> 16) & 255u), float((v >> 8) & 255u), float(v & 255u)) / 255.0f;
-  } else if (a.words.size() == 4) {
+  } else if (words.size() == 4) {
     for (int k = 0; k < 3; ++k) {
-      if (!parseNumber(a.words[size_t(1 + k)], c[k]) || c[k] < 0.0f || c[k] > 1.0f) {
-        return badValues("part-colour: '" + a.words[size_t(1 + k)] + "' is not a colour component from 0 to 1");
+      if (!parseNumber(words[size_t(1 + k)], c[k]) || c[k] < 0.0f || c[k] > 1.0f) {
+        return badValues("part-colour: '" + words[size_t(1 + k)] + "' is not a colour component from 0 to 1");
       }
     }
   } else {
-    return badValues("part-colour takes N #rrggbb or N R G B (0 to 1)");
+    return badValues("part-colour takes N #rrggbb or N R G B (0 to 1), then drag while the picker is dragged");
   }
-  setPartColour(s, *i, c);
+  setPartColour(s, *i, c, drag);
   return Ok{};
 }
 

@@ -1,6 +1,7 @@
 #include "app/parts.h"
 
 #include <algorithm>
+#include <optional>
 #include <utility>
 
 #include <glm/common.hpp>
@@ -26,16 +27,53 @@ constexpr size_t kMaxComponentParts = 200;
 
 Error partsError(std::string message) { return makeError(ErrorCode::kInvalidArgument, std::move(message)); }
 
-// A new model state holding `parts`: the union as the model, a new base (the skin layers of the union).
-void commitParts(AppState& state, std::shared_ptr<const Assembly> parts, const std::string& label) {
+// A new model state holding `parts`: the union as the model (found here when not given), a new base (the skin layers
+// of the union).
+void commitParts(AppState& state, std::shared_ptr<const Assembly> parts, const std::string& label,
+                 std::optional<VoxelGrid> union_of_parts = std::nullopt) {
   auto origin = std::make_shared<ModelOrigin>();
   const ModelOrigin* prev = state.doc.model ? state.doc.model->origin.get() : nullptr;
   origin->what = std::to_string(parts->size()) + (parts->size() == 1 ? " part" : " parts") + " on one lattice";
   origin->resolution = prev ? prev->resolution : 0;
-  ModelSnapshot snap = newBase(state, partsUnion(*parts), std::move(origin), label);
+  VoxelGrid grid = union_of_parts ? std::move(*union_of_parts) : partsUnion(*parts);
+  ModelSnapshot snap = newBase(state, std::move(grid), std::move(origin), label);
   snap.parts = std::move(parts);
   state.parts_ui.selected.clear();
   setModel(state, std::move(snap), true);
+}
+
+// The union of `after`'s parts, where only part i was placed differently from `before`, whose union is `before_union`
+// (the model's base): made again only over part i's old and new boxes (redoUnionIn), the rest of the union kept.
+// The whole union when `before_union` is not on `before`'s extent.
+VoxelGrid unionAfterPlacing(const Assembly& before, const Assembly& after, size_t i, const VoxelGrid& before_union) {
+  const Box3i old_extent = before.extent(), extent = after.extent();
+  if (Dims{old_extent.size().x, old_extent.size().y, old_extent.size().z} != before_union.dims()) {
+    return partsUnion(after);
+  }
+  const Lattice& lattice = after.lattice();
+  const std::vector<LatticeGrid> placed = after.placedParts();
+  LatticeGrid u{before_union, old_extent.min};
+  if (extent != old_extent) u = reframe(u, extent, lattice);
+  redoUnionIn(u, placed, before.placedVoxels(i).box());
+  redoUnionIn(u, placed, placed[i].box());
+  u.grid.frame() = lattice.frameAt(extent.min);
+  return std::move(u.grid);
+}
+
+// A change of how the parts are shown (colour, visibility) as an undo step of its own: the state before it goes on the
+// undo stack (a cheap copy: the grids share their layers) and the current state takes the new parts. The model version
+// stays: the voxels are the same, so nothing derived from them (the renderers' points, the interference, the mass) is
+// found again, and the document is not unsaved by it (a .vxm file holds voxels only). `merge`: the change is part of
+// the current step (a colour drag), so nothing is pushed.
+void commitLook(AppState& state, std::shared_ptr<const Assembly> parts, std::string label, bool merge) {
+  Document& doc = state.doc;
+  if (!merge) {
+    doc.undo_stack.push_back(*doc.model);
+    doc.redo_stack.clear();
+  }
+  doc.model->parts = std::move(parts);
+  doc.model->label = std::move(label);
+  state.viewport.dirty = true;
 }
 
 // The current model as an assembly of one part (a document that is not a scene yet), or the current parts.
@@ -213,7 +251,8 @@ Status placePart(AppState& state, size_t i, const PartPlacement& placement) {
   scene->setPlacement(i, p);
   const std::string label = (turned ? "turn " : "move ") + scene->part(i).name;
   const std::vector<size_t> selected = state.parts_ui.selected;
-  commitParts(state, std::move(scene), label);
+  VoxelGrid union_of_parts = unionAfterPlacing(*parts, *scene, i, state.doc.model->base);
+  commitParts(state, std::move(scene), label, std::move(union_of_parts));
   state.parts_ui.selected = selected;
   applyPartsScope(state);
   return Ok{};
@@ -232,24 +271,26 @@ PartPlacement placementTurned(const AppState& state, size_t i, int axis) {
   return p;
 }
 
-void setPartColour(AppState& state, size_t i, const glm::vec3& colour) {
+void setPartColour(AppState& state, size_t i, const glm::vec3& colour, bool drag) {
   const Assembly* parts = currentParts(state);
-  if (!parts || i >= parts->size() || parts->part(i).colour == colour) return;
-  // Like visibility: how the scene is shown, edited in place in the current state.
+  const glm::vec3 c = glm::clamp(colour, glm::vec3(0.0f), glm::vec3(1.0f));
+  if (!parts || i >= parts->size() || parts->part(i).colour == c) return;
+  PartsUi& ui = state.parts_ui;
+  // A drag goes on in the step its first change made, as long as that step is still the current state.
+  const bool merge = drag && ui.colour_step_part == i && ui.colour_step == state.doc.model->parts;
   auto scene = std::make_shared<Assembly>(*parts);
-  scene->part(i).colour = glm::clamp(colour, glm::vec3(0.0f), glm::vec3(1.0f));
-  state.doc.model->parts = std::move(scene);
-  state.viewport.dirty = true;
+  scene->part(i).colour = c;
+  commitLook(state, std::move(scene), "colour of " + parts->part(i).name, merge);
+  ui.colour_step = state.doc.model->parts;
+  ui.colour_step_part = i;
 }
 
 void setPartVisible(AppState& state, size_t i, bool visible) {
   const Assembly* parts = currentParts(state);
   if (!parts || i >= parts->size() || parts->part(i).visible == visible) return;
-  // Visibility is how the scene is shown, not the model: the same state, edited in place (undo keeps it).
   auto scene = std::make_shared<Assembly>(*parts);
   scene->part(i).visible = visible;
-  state.doc.model->parts = std::move(scene);
-  state.viewport.dirty = true;
+  commitLook(state, std::move(scene), (visible ? "show " : "hide ") + parts->part(i).name, false);
 }
 
 void selectPart(AppState& state, size_t i, bool additive) {
@@ -328,13 +369,7 @@ const std::vector<int64_t>& partVoxelCounts(AppState& state) {
 }
 
 VoxelGrid partsUnion(const Assembly& parts) {
-  const Box3i ext = parts.extent();
-  const glm::ivec3 size = ext.size();
-  const Lattice& lattice = parts.lattice();
-  LatticeGrid acc{VoxelGrid(Dims{size.x, size.y, size.z}), ext.min};
-  for (size_t i = 0; i < parts.size(); ++i) acc = booleanParts(acc, parts.placedVoxels(i), PartOp::kUnion, lattice);
-  acc.grid.frame() = lattice.frameAt(ext.min);
-  return std::move(acc.grid);
+  return unionOfParts(parts.placedParts(), parts.extent(), parts.lattice()).grid;
 }
 
 VoxelGrid partOnExtent(const Assembly& parts, size_t i) {

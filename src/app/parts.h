@@ -28,7 +28,8 @@ void startAddPart(AppState& state, const std::filesystem::path& path);
 Status partBoolean(AppState& state, PartOp op, size_t a, size_t b);
 // Removes part i (undoable); the last part stays.
 Status removePart(AppState& state, size_t i);
-// Shows or hides part i in the 3D view (not a change of the model).
+// Shows or hides part i in the 3D view: an undo step ("hide body 3") that keeps the model version (the voxels and
+// what is derived from them stay; the model is not unsaved by it).
 void setPartVisible(AppState& state, size_t i, bool visible);
 // Clicking part i: selects it alone, or (additive) adds it to or removes it from the selection.
 void selectPart(AppState& state, size_t i, bool additive);
@@ -39,13 +40,18 @@ void applyPartsScope(AppState& state);
 
 // Moves and turns part i (translation in whole lattice voxels, quarter turns about X, Y, Z; undoable). The model
 // grows or shrinks to the parts' new extent; the selection stays. Fails, saying why, for an index out of range.
+// The union is made again only over the part's old and new boxes (redoUnionIn): O(the words of the parts' rows in
+// those boxes), plus one copy of the union when the extent changes.
 Status placePart(AppState& state, size_t i, const PartPlacement& placement);
 // The placement with part i's translation set from model units (snapped to the nearest whole voxel).
 PartPlacement placementWithTranslation(const AppState& state, size_t i, const glm::dvec3& model_units);
 // The placement with one more quarter turn (+90 degrees) of part i about `axis` (0 X, 1 Y, 2 Z).
 PartPlacement placementTurned(const AppState& state, size_t i, int axis);
-// Sets part i's colour (RGB in [0, 1]); how the scene is shown, like visibility, so not a new model state.
-void setPartColour(AppState& state, size_t i, const glm::vec3& colour);
+// Sets part i's colour (RGB in [0, 1], clamped): an undo step ("colour of body 3") that keeps the model version, like
+// visibility. `drag`: the change continues a drag in the colour picker, so it joins the step the drag's first change
+// made (one undo step for the whole drag) while that step is the current state and was part i's colour; otherwise it
+// is a step of its own.
+void setPartColour(AppState& state, size_t i, const glm::vec3& colour, bool drag = false);
 
 // Writes every part, placed, as a .vxm file into the folder `dir` (created when missing), named by partFileName
 // (numbered as the panel lists them), on the scene's lattice. All the files are written or none (io::saveVoxelFiles).
@@ -89,8 +95,8 @@ void updateClearance(AppState& state);  // (updateParts calls it)
 // Filled voxels of each part, counted once per model version.
 const std::vector<int64_t>& partVoxelCounts(AppState& state);
 
-// The union of all parts, and part i alone, on the frame of the assembly's extent (what the 3D view and the
-// analyses use).
+// The union of all parts (unionOfParts), and part i alone, on the frame of the assembly's extent (what the analyses
+// use).
 VoxelGrid partsUnion(const Assembly& parts);
 VoxelGrid partOnExtent(const Assembly& parts, size_t i);
 

@@ -1,6 +1,9 @@
 #include "app/parts_view.h"
 
 #include <algorithm>
+#include <optional>
+
+#include <glm/common.hpp>
 
 #include "app/messages.h"
 #include "app/parts.h"
@@ -18,6 +21,16 @@ bool isSelected(const PartsUi& ui, size_t i) {
 // A pair or the selected part alone is in focus: the other parts are drawn faint.
 bool inFocus(const PartsUi& ui) { return ui.pair >= 0 || (ui.scope_selected && !ui.selected.empty()); }
 
+// The same voxels: the same box, and every layer shared (a part's grid is never edited in place, so a copy that shares
+// all its layers holds what it holds). O(layers).
+bool sameVoxels(const LatticeGrid& a, const LatticeGrid& b) {
+  if (a.first != b.first || a.grid.dims() != b.grid.dims()) return false;
+  for (int32_t z = 0; z < a.grid.nz(); ++z) {
+    if (!a.grid.sharesLayerWith(b.grid, z)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 void syncPartRenderers(AppState& state) {
@@ -31,18 +44,47 @@ void syncPartRenderers(AppState& state) {
     vp.parts.clear();
     return;
   }
-  vp.parts.resize(parts->size());
+  // A renderer that holds a part as it is now (same voxels, same placement) is kept as it is, wherever the part now
+  // lies in the list (a part removed before it); only the others are filled again, reusing the renderers left over.
+  std::vector<Viewport::PartView> before = std::move(vp.parts);
+  vp.parts = std::vector<Viewport::PartView>(parts->size());
+  std::vector<bool> matched(parts->size(), false);
+  const auto holds = [](const Viewport::PartView& v, const Part& p) {
+    return v.renderer && v.placement == p.placement && sameVoxels(v.voxels, p.voxels);
+  };
   for (size_t i = 0; i < parts->size(); ++i) {
-    if (!vp.parts[i]) {
+    const Part& p = parts->part(i);
+    auto it = i < before.size() && holds(before[i], p)
+                  ? before.begin() + ptrdiff_t(i)
+                  : std::find_if(before.begin(), before.end(), [&](const auto& v) { return holds(v, p); });
+    if (it != before.end()) {
+      vp.parts[i] = std::move(*it);
+      matched[i] = true;
+    }
+  }
+  std::erase_if(before, [](const Viewport::PartView& v) { return !v.renderer; });
+  for (size_t i = 0; i < parts->size(); ++i) {
+    if (matched[i]) continue;
+    Viewport::PartView& v = vp.parts[i];
+    if (!before.empty()) {
+      v.renderer = std::move(before.back().renderer);
+      before.pop_back();
+    } else {
       auto r = render::PointRenderer::create();
       if (!r) {
         reportError(state, "the parts cannot be drawn: " + r.error().message);
         vp.parts.clear();
         return;
       }
-      vp.parts[i] = std::move(r).value();
+      v.renderer = std::move(r).value();
     }
-    vp.parts[i]->setGrid(partOnExtent(*parts, i));
+    const Part& p = parts->part(i);
+    const LatticeGrid placed = parts->placedVoxels(i);
+    v.renderer->setGrid(placed.grid);
+    v.voxels = p.voxels;
+    v.placement = p.placement;
+    v.box = placed.box();
+    ++vp.part_fills;
   }
 }
 
@@ -51,10 +93,32 @@ bool drawsParts(const AppState& state) {
   return parts && state.viewport.parts.size() == parts->size() && state.viewport.parts_version != 0;
 }
 
+std::optional<render::Box3> partsBounds(const AppState& state) {
+  if (!drawsParts(state)) return std::nullopt;
+  const glm::ivec3 first = currentParts(state)->extent().min;
+  const PartsUi& ui = state.parts_ui;
+  std::optional<render::Box3> bounds;
+  for (size_t i = 0; i < state.viewport.parts.size(); ++i) {
+    // The model is the selected part alone when the scope says so: its box, as its own renderer would give.
+    if (ui.scope_selected && !ui.selected.empty() && i != ui.selected.front()) continue;
+    const Viewport::PartView& v = state.viewport.parts[i];
+    const glm::dvec3 offset(v.box.min - first);
+    const render::Box3 b = v.renderer->bounds();
+    if (!bounds) {
+      bounds = render::Box3{b.min + offset, b.max + offset};
+    } else {
+      bounds->min = glm::min(bounds->min, b.min + offset);
+      bounds->max = glm::max(bounds->max, b.max + offset);
+    }
+  }
+  return bounds;
+}
+
 render::DrawStats drawParts(AppState& state, int w, int h, const render::DrawParams& params) {
   const Assembly& parts = *currentParts(state);
   const PartsUi& ui = state.parts_ui;
   const bool focus = inFocus(ui);
+  const glm::ivec3 first = parts.extent().min;
   render::DrawStats total;
   // Opaque parts first, then the faint ones (blended over what is drawn, depth-tested but not written).
   for (int pass = 0; pass < 2; ++pass) {
@@ -63,10 +127,20 @@ render::DrawStats drawParts(AppState& state, int w, int h, const render::DrawPar
       const bool selected = isSelected(ui, i);
       const bool faint = focus && !selected;
       if (!part.visible || faint != (pass == 1)) continue;
+      const Viewport::PartView& v = state.viewport.parts[i];
       render::DrawParams p = params;
       p.colour = part.colour * (!focus && !ui.selected.empty() && !selected ? kDimmed : 1.0f);
       if (faint) p.opacity = kFaintOpacity;
-      const render::DrawStats s = state.viewport.parts[i]->draw(state.view.camera, w, h, p);
+      // The renderer holds the part on its own box, which starts `offset` voxels into the model's frame: the camera
+      // (in the model's voxel-index space) and the section plane are moved the other way.
+      const glm::ivec3 offset = v.box.min - first;
+      render::Camera camera = state.view.camera;
+      camera.target -= glm::dvec3(offset);
+      if (p.section.active()) {
+        const int a = int(p.section.axis) - 1;
+        p.section.index = std::clamp(p.section.index - offset[a], -1, v.box.size()[a]);
+      }
+      const render::DrawStats s = v.renderer->draw(camera, w, h, p);
       total.points_drawn += s.points_drawn;
       total.points_available += s.points_available;
       total.cut_points += s.cut_points;

@@ -92,38 +92,6 @@ render::DrawParams drawParams(const AppState& state, bool coarse) {
   return p;
 }
 
-// Brings the renderers up to date with the model and the overlay choice.
-void syncRenderers(AppState& state) {
-  Viewport& vp = state.viewport;
-  if (vp.uploaded_version != state.model_version) {
-    if (!state.model.empty()) {
-      vp.renderer->setGrid(state.model);
-      state.model_bounds = vp.renderer->bounds();
-    } else {
-      state.model_bounds.reset();
-    }
-    vp.uploaded_version = state.model_version;
-    vp.dirty = true;
-  }
-  // A peeled model is drawn inside a faint ghost of the whole part, so the core never floats alone.
-  const uint64_t ghost = state.doc.model && state.doc.model->peeled > 0 ? state.doc.model->base_id : 0;
-  if (ghost != vp.ghost_key) {
-    if (ghost) vp.ghost->setGrid(state.doc.model->base);
-    vp.ghost_key = ghost;
-    vp.dirty = true;
-  }
-  syncPartRenderers(state);
-  VoxelGrid scratch;
-  const VoxelGrid* overlay = nullptr;
-  const uint64_t key = overlayKey(state, &overlay, scratch);
-  if (key != vp.overlay_key) {
-    if (overlay) vp.overlay->setGrid(*overlay);
-    vp.overlay_key = key;
-    vp.dirty = true;
-  }
-  syncThicknessVolume(state);
-}
-
 void fitIfPending(AppState& state, double aspect) {
   if (!state.view.fit_pending || !state.model_bounds) return;
   state.view.camera.fitToBox(*state.model_bounds, aspect);
@@ -264,6 +232,47 @@ bool handleMouse(AppState& state, ImVec2 pos, int w, int h, double aspect) {
 }
 
 }  // namespace
+
+void syncRenderers(AppState& state) {
+  Viewport& vp = state.viewport;
+  syncPartRenderers(state);
+  if (drawsParts(state)) {
+    // The parts are drawn, not the model (their union): it is uploaded only when it is drawn again (undo to before the
+    // split), so a move of one part costs that part's points alone.
+    if (vp.parts_bounds_version != vp.parts_version || vp.parts_bounds_model != state.model_version) {
+      state.model_bounds = partsBounds(state);
+      vp.parts_bounds_version = vp.parts_version;
+      vp.parts_bounds_model = state.model_version;
+      vp.dirty = true;
+    }
+  } else if (vp.uploaded_version != state.model_version || vp.parts_bounds_version != 0) {
+    if (!state.model.empty()) {
+      vp.renderer->setGrid(state.model);
+      state.model_bounds = vp.renderer->bounds();
+    } else {
+      state.model_bounds.reset();
+    }
+    vp.uploaded_version = state.model_version;
+    vp.parts_bounds_version = 0;
+    vp.dirty = true;
+  }
+  // A peeled model is drawn inside a faint ghost of the whole part, so the core never floats alone.
+  const uint64_t ghost = state.doc.model && state.doc.model->peeled > 0 ? state.doc.model->base_id : 0;
+  if (ghost != vp.ghost_key) {
+    if (ghost) vp.ghost->setGrid(state.doc.model->base);
+    vp.ghost_key = ghost;
+    vp.dirty = true;
+  }
+  VoxelGrid scratch;
+  const VoxelGrid* overlay = nullptr;
+  const uint64_t key = overlayKey(state, &overlay, scratch);
+  if (key != vp.overlay_key) {
+    if (overlay) vp.overlay->setGrid(*overlay);
+    vp.overlay_key = key;
+    vp.dirty = true;
+  }
+  syncThicknessVolume(state);
+}
 
 Status initViewport(AppState& state) {
   auto main_renderer = render::PointRenderer::create();

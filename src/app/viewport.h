@@ -13,6 +13,10 @@ Status initViewport(AppState& state);
 // Destroys the GL objects; call while the context is still current.
 void shutdownViewport(AppState& state);
 
+// Brings the renderers up to date with the model, the parts and the overlay choice (uploads what changed); each frame
+// of drawViewport starts with it. Needs the renderers' GL context current.
+void syncRenderers(AppState& state);
+
 // Panel function: draws the view into the current ImGui window's remaining area.
 void drawViewport(AppState& state);
 

@@ -4,16 +4,21 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <thread>
 
 #include "app/actions.h"
 #include "app/app_state.h"
 #include "app/operations.h"
 #include "app/parts.h"
+#include "app/parts_view.h"
+#include "app/viewport.h"
 #include "support/test_support.h"
 #include "vox/analysis/assembly.h"
 #include "vox/io/stl.h"
 #include "vox/io/voxel_file.h"
+#include "vox/render/context.h"
+#include "vox/render/framebuffer.h"
 #include "vox/voxelize/bodies.h"
 
 namespace vox::app {
@@ -299,18 +304,202 @@ TEST(AppParts, aPartsColourIsSetAndDrawnWithoutANewModelState) {
   AppState state;
   openTwoBlocks(state, dir);
   const uint64_t version = state.doc.model->version;
-  const size_t undo_depth = state.doc.undo_stack.size();
   ASSERT_TRUE(run(state, "part-colour 1 #ff8000").ok());
   EXPECT_EQ(currentParts(state)->part(0).colour, glm::vec3(1.0f, 128.0f / 255.0f, 0.0f));
   ASSERT_TRUE(run(state, "part-colour 2 0 0.5 1").ok());
   EXPECT_EQ(currentParts(state)->part(1).colour, glm::vec3(0.0f, 0.5f, 1.0f));
-  // How the parts are shown, like visibility: the same model state, nothing to undo.
+  // How the parts are shown: the voxels and the model version stay, so the document is not unsaved by it.
   EXPECT_EQ(state.doc.model->version, version);
-  EXPECT_EQ(state.doc.undo_stack.size(), undo_depth);
   EXPECT_FALSE(run(state, "part-colour 1 1.5 0 0").ok());
   EXPECT_FALSE(run(state, "part-colour 1 #12345").ok());
   EXPECT_FALSE(run(state, "part-colour 1 red").ok());
+  EXPECT_FALSE(run(state, "part-colour 1 0 0 drag").ok());
   EXPECT_EQ(currentParts(state)->part(0).colour, glm::vec3(1.0f, 128.0f / 255.0f, 0.0f));
+}
+
+// Colour and visibility are undone and redone like the other changes of the document, one step each; a drag in the
+// colour picker (its changes after the first say "drag", as the panel sends them) is one step; what was found for
+// the voxels (the interference) stays through them, as the voxels do.
+TEST(AppParts, colourAndVisibilityAreUndoneAndRedone) {
+  test::TempDir dir;
+  AppState state;
+  openTwoBlocks(state, dir);
+  const glm::vec3 first = currentParts(state)->part(0).colour;
+  const glm::vec3 second = currentParts(state)->part(1).colour;
+  ASSERT_TRUE(run(state, "interference").ok());
+  ASSERT_TRUE(pump(state, [&] { return currentInterference(state) != nullptr; }));
+  const size_t depth = state.doc.undo_stack.size();
+
+  ASSERT_TRUE(run(state, "part-colour 1 #ff0000").ok());
+  EXPECT_EQ(state.doc.undo_stack.size(), depth + 1);
+  EXPECT_EQ(state.doc.model->label, "colour of a.vxm");
+  undo(state);
+  EXPECT_EQ(currentParts(state)->part(0).colour, first);
+  redo(state);
+  EXPECT_EQ(currentParts(state)->part(0).colour, glm::vec3(1.0f, 0.0f, 0.0f));
+
+  // A drag: the first change a step of its own, the others in it; undo goes back to before the drag.
+  ASSERT_TRUE(run(state, "part-colour 2 0.1 0.2 0.3").ok());
+  for (const char* c : {"0.2 0.2 0.3", "0.3 0.2 0.3", "0.4 0.25 0.3"}) {
+    ASSERT_TRUE(run(state, std::string("part-colour 2 ") + c + " drag").ok());
+  }
+  EXPECT_EQ(currentParts(state)->part(1).colour, glm::vec3(0.4f, 0.25f, 0.3f));
+  EXPECT_EQ(state.doc.undo_stack.size(), depth + 2);
+  // A drag of another part's colour is not the same drag.
+  ASSERT_TRUE(run(state, "part-colour 1 0 1 0 drag").ok());
+  EXPECT_EQ(state.doc.undo_stack.size(), depth + 3);
+  undo(state);
+  EXPECT_EQ(currentParts(state)->part(0).colour, glm::vec3(1.0f, 0.0f, 0.0f));
+  EXPECT_EQ(currentParts(state)->part(1).colour, glm::vec3(0.4f, 0.25f, 0.3f));
+  undo(state);
+  EXPECT_EQ(currentParts(state)->part(1).colour, second);
+  EXPECT_EQ(currentParts(state)->part(0).colour, glm::vec3(1.0f, 0.0f, 0.0f));
+  // After an undo a "drag" change starts a step of its own: the step it would join is gone.
+  ASSERT_TRUE(run(state, "part-colour 2 0 0 1 drag").ok());
+  EXPECT_EQ(state.doc.undo_stack.size(), depth + 2);
+  EXPECT_FALSE(canRedo(state));
+  undo(state);
+  EXPECT_EQ(currentParts(state)->part(1).colour, second);
+
+  // Visibility: hiding is a step, undone and redone; the union (the model) keeps the hidden part.
+  ASSERT_TRUE(run(state, "part-visible 2 off").ok());
+  EXPECT_FALSE(currentParts(state)->part(1).visible);
+  EXPECT_EQ(state.doc.model->label, "hide b.vxm");
+  EXPECT_EQ(state.model.filledCount(), 10 * 4 * 4);
+  undo(state);
+  EXPECT_TRUE(currentParts(state)->part(1).visible);
+  redo(state);
+  EXPECT_FALSE(currentParts(state)->part(1).visible);
+  // The voxels never changed: the interference found before is still the current one.
+  EXPECT_NE(currentInterference(state), nullptr);
+
+  // Undoing a placement brings back the colours and visibility the parts had before it.
+  ASSERT_TRUE(run(state, "place-part 2 3 0 0").ok());
+  ASSERT_TRUE(run(state, "part-visible 2 on").ok());
+  ASSERT_TRUE(run(state, "part-colour 2 #00ff00").ok());
+  undo(state);
+  undo(state);
+  EXPECT_FALSE(currentParts(state)->part(1).visible);
+  EXPECT_EQ(currentParts(state)->part(1).placement.translation, glm::ivec3(3, 0, 0));
+  undo(state);
+  EXPECT_TRUE(currentParts(state)->part(1).placement.identity());
+}
+
+// The parts drawn by renderers on the model's frame, as the 3D view drew them before a part's renderer held the part
+// on its own box: the picture to compare with.
+ImageRgba drawnOnTheModelsFrame(const AppState& state, render::Framebuffer& fb, const render::DrawParams& params) {
+  const Assembly& parts = *currentParts(state);
+  fb.bind();
+  fb.clear(Rgba8{0, 0, 0, 255});
+  for (size_t i = 0; i < parts.size(); ++i) {
+    auto r = render::PointRenderer::create();
+    EXPECT_TRUE(r.ok());
+    if (!r) return {};
+    (*r)->setGrid(partOnExtent(parts, i));
+    render::DrawParams p = params;
+    p.colour = parts.part(i).colour;
+    (*r)->draw(state.view.camera, fb.width(), fb.height(), p);
+  }
+  return fb.readPixels();
+}
+
+ImageRgba drawnByTheView(AppState& state, render::Framebuffer& fb, const render::DrawParams& params) {
+  fb.bind();
+  fb.clear(Rgba8{0, 0, 0, 255});
+  drawParts(state, fb.width(), fb.height(), params);
+  return fb.readPixels();
+}
+
+// Pixels whose channels differ by more than 24 (of 255), and pixels that are not the black background.
+std::pair<int64_t, int64_t> differingAndDrawn(const ImageRgba& a, const ImageRgba& b) {
+  int64_t differing = 0, drawn = 0;
+  for (size_t k = 0; k < a.pixels.size() && k < b.pixels.size(); ++k) {
+    const Rgba8 p = a.pixels[k], q = b.pixels[k];
+    differing += std::abs(p.r - q.r) > 24 || std::abs(p.g - q.g) > 24 || std::abs(p.b - q.b) > 24;
+    drawn += p.r + p.g + p.b > 0;
+  }
+  return {differing, drawn};
+}
+
+// Each part's renderer holds the placed part on its own box and is drawn moved to where that box lies in the model's
+// frame: a move or turn refills the renderer of the part that moved and no other (nor the model's: the union is not
+// drawn), undo refills it again, removing a part refills none; the picture, with a section cut-away too, is the one
+// renderers holding each part on the model's frame draw; the model is the union of the parts where they now are.
+TEST(AppParts, aMoveRefillsOnlyTheMovedPartsRenderer) {
+  setenv("GALLIUM_DRIVER", "llvmpipe", 1);
+  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 1);
+  auto context = render::HeadlessContext::create();
+  if (!context) {
+    if (test::inCI()) FAIL() << "no headless OpenGL in CI: " << context.error().message;
+    GTEST_SKIP() << "no headless OpenGL: " << context.error().message;
+  }
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveStlBinary(threeBodies(), dir / "train.stl").ok());
+  AppState state;
+  ASSERT_TRUE(initViewport(state).ok());
+  openVoxelized(state, dir / "train.stl", 64);
+  ASSERT_TRUE(run(state, "split-bodies").ok());
+  ASSERT_TRUE(pump(state, [&] { return currentParts(state) != nullptr; }));
+  syncRenderers(state);
+  ASSERT_TRUE(drawsParts(state));
+  EXPECT_EQ(state.viewport.part_fills, 3);
+  std::vector<const render::PointRenderer*> held;
+  for (const Viewport::PartView& v : state.viewport.parts) held.push_back(v.renderer.get());
+  const uint64_t model_uploaded = state.viewport.uploaded_version;
+
+  // Body 1 moved (about a voxel and a half along -X, 4 along Y) and turned a quarter about Z at once.
+  ASSERT_TRUE(run(state, "place-part 2 -0.2 0.5 0 0 0 1").ok());
+  syncRenderers(state);
+  EXPECT_EQ(state.viewport.part_fills, 4);
+  EXPECT_EQ(state.viewport.parts[0].renderer.get(), held[0]);
+  EXPECT_EQ(state.viewport.parts[2].renderer.get(), held[2]);
+  const Assembly& parts = *currentParts(state);
+  EXPECT_EQ(state.viewport.parts[1].box, parts.placedVoxels(1).box());
+  EXPECT_EQ(state.viewport.uploaded_version, model_uploaded);
+
+  // The model: the union of the parts where they are now, voxel for voxel (Booleans one part at a time).
+  const Box3i extent = parts.extent();
+  LatticeGrid expected = parts.placedVoxels(0);
+  for (size_t i = 1; i < parts.size(); ++i) {
+    expected = booleanParts(expected, parts.placedVoxels(i), PartOp::kUnion, parts.lattice());
+  }
+  expected = reframe(expected, extent, parts.lattice());
+  EXPECT_EQ(state.model.dims(), (Dims{extent.size().x, extent.size().y, extent.size().z}));
+  EXPECT_EQ(
+      booleanParts(LatticeGrid{state.model, extent.min}, expected, PartOp::kXor, parts.lattice()).grid.filledCount(),
+      0);
+  EXPECT_GT(state.model.filledCount(), 0);
+
+  // The picture: the same as renderers on the model's frame give, whole and cut by a section.
+  ASSERT_TRUE(state.model_bounds.has_value());
+  state.view.camera.fitToBox(*state.model_bounds, 1.0);
+  render::Framebuffer fb;
+  ASSERT_TRUE(fb.resize(200, 200).ok());
+  render::DrawParams params;
+  params.lut = render::Lut::kLit;
+  for (int cut = 0; cut < 2; ++cut) {
+    if (cut) {
+      params.section.axis = render::SectionAxis::kX;
+      params.section.index = state.model.nx() / 2;
+    }
+    const auto [differing, drawn] =
+        differingAndDrawn(drawnByTheView(state, fb, params), drawnOnTheModelsFrame(state, fb, params));
+    EXPECT_GT(drawn, 2000) << cut;
+    EXPECT_LE(differing, drawn / 200) << cut;  // the same points: at most a pixel's rounding here and there
+  }
+
+  // Undo: the part's renderer is filled again for where it was; removing a part keeps the others' renderers.
+  undo(state);
+  syncRenderers(state);
+  EXPECT_EQ(state.viewport.part_fills, 5);
+  EXPECT_EQ(state.viewport.parts[0].renderer.get(), held[0]);
+  ASSERT_TRUE(run(state, "remove-part 1").ok());
+  syncRenderers(state);
+  EXPECT_EQ(state.viewport.part_fills, 5);
+  ASSERT_EQ(state.viewport.parts.size(), 2u);
+  EXPECT_EQ(state.viewport.parts[1].renderer.get(), held[2]);
+  shutdownViewport(state);
+  state.viewport.parts.clear();  // GL objects go while the context is current
 }
 
 TEST(AppParts, eachPartIsSavedToAFolderOnTheLattice) {

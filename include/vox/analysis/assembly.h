@@ -49,6 +49,17 @@ std::optional<PartOp> parsePartOp(const std::string& s);
 // operations on shifted rows; when the boxes are equal, layers only one operand has are shared, not copied.
 LatticeGrid booleanParts(const LatticeGrid& a, const LatticeGrid& b, PartOp op, const Lattice& lattice);
 
+// ---- The union of many parts ----
+// The union of `parts` over `box` (lattice voxels), on the lattice's frame at box.min: each part's voxels inside the
+// box ORed in row by row over the part's own box. O(words of the parts' rows inside the box), in parallel over layers;
+// layers no part reaches stay unallocated. (Booleans one part at a time would write the whole box once per part.)
+LatticeGrid unionOfParts(std::span<const LatticeGrid> parts, const Box3i& box, const Lattice& lattice);
+// `acc`'s voxels inside `region` (clipped to acc's box) made the union of `parts` there again, the others left as
+// they are: when `acc` was the union of the parts and they changed only inside `region` (a part moved: call it for
+// its old box and its new one), `acc` is their union again. Only the layers the region reaches are written (copied
+// first when they are shared with another grid). O(region rows + words of the parts' rows inside the region).
+void redoUnionIn(LatticeGrid& acc, std::span<const LatticeGrid> parts, const Box3i& region);
+
 // ---- Interference ----
 struct InterferencePair {
   int32_t a = 0, b = 0;  // part indices, a < b

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <imgui.h>
 
@@ -62,18 +63,27 @@ void drawSplit(AppState& state) {
 
 void drawPartRow(AppState& state, const Assembly& parts, size_t i, int64_t voxels) {
   const Part& p = parts.part(i);
-  const PartsUi& ui = state.parts_ui;
+  PartsUi& ui = state.parts_ui;
   const bool selected = std::find(ui.selected.begin(), ui.selected.end(), i) != ui.selected.end();
   ImGui::TableNextRow();
   ImGui::PushID(int(i));
   ImGui::TableSetColumnIndex(0);
-  // The swatch opens a colour picker; the part's points are drawn in the colour as it is picked.
+  // The swatch opens a colour picker; the part's points are drawn in the colour as it is picked. A change while the
+  // picker was already active in the last frame continues its drag ("drag"): the whole drag is one undo step.
   float colour[3] = {p.colour.x, p.colour.y, p.colour.z};
-  if (ImGui::ColorEdit3("##colour", colour,
-                        ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_NoLabel | ImGuiColorEditFlags_NoTooltip)) {
-    dispatchValues(
-        state, ActionId::kPartColour,
-        {std::to_string(i + 1), std::to_string(colour[0]), std::to_string(colour[1]), std::to_string(colour[2])});
+  const bool changed = ImGui::ColorEdit3(
+      "##colour", colour, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_NoLabel | ImGuiColorEditFlags_NoTooltip);
+  const bool dragging = ui.colour_drag_part == i;
+  if (ImGui::IsItemActive()) {
+    ui.colour_drag_part = i;
+  } else if (dragging) {
+    ui.colour_drag_part = SIZE_MAX;
+  }
+  if (changed) {
+    std::vector<std::string> values = {std::to_string(i + 1), std::to_string(colour[0]), std::to_string(colour[1]),
+                                       std::to_string(colour[2])};
+    if (dragging) values.emplace_back("drag");
+    dispatchValues(state, ActionId::kPartColour, values);
   }
   if (i == 0) markWidget("part_colour_first");
   ImGui::SameLine();

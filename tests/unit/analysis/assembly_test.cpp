@@ -128,6 +128,71 @@ TEST(PartBoolean, equalBoxesAndXorOnBooleanOp) {
   EXPECT_EQ(r.grid.filledCount(), x.filledCount());
 }
 
+// Parts whose boxes start at columns on and off the 64-voxel word boundaries, overlapping and apart, some with empty
+// layers: their union over a box that cuts some of them, voxel by voxel.
+std::vector<LatticeGrid> scatteredParts() {
+  return {randomPart({0, 0, 0}, {70, 9, 8}, 6, 1), randomPart({63, 4, 2}, {130, 7, 9}, 8, 2),
+          randomPart({-37, -3, 5}, {45, 12, 6}, 5, 3), randomPart({150, 1, -4}, {9, 5, 20}, 3, 4),
+          randomPart({5, 2, 1}, {1, 3, 3}, 1, 5)};
+}
+
+void expectUnionOf(const LatticeGrid& u, const std::vector<LatticeGrid>& parts, const Box3i& box) {
+  ASSERT_EQ(u.box(), box);
+  int64_t filled = 0;
+  for (int32_t z = box.min.z; z < box.max.z; ++z) {
+    for (int32_t y = box.min.y; y < box.max.y; ++y) {
+      for (int32_t x = box.min.x; x < box.max.x; ++x) {
+        bool any = false;
+        for (const LatticeGrid& p : parts) any = any || at(p, {x, y, z});
+        ASSERT_EQ(at(u, {x, y, z}), any) << x << " " << y << " " << z;
+        filled += any;
+      }
+    }
+  }
+  EXPECT_EQ(u.grid.filledCount(), filled);
+}
+
+TEST(PartUnion, manyPartsAtOnceMatchVoxelByVoxel) {
+  const std::vector<LatticeGrid> parts = scatteredParts();
+  Box3i extent;
+  for (const LatticeGrid& p : parts) extent = unite(extent, p.box());
+  const LatticeGrid u = unionOfParts(parts, extent, Lattice{});
+  expectUnionOf(u, parts, extent);
+  // The same as Booleans one part at a time.
+  LatticeGrid chain = parts[0];
+  for (size_t i = 1; i < parts.size(); ++i) chain = booleanParts(chain, parts[i], PartOp::kUnion, Lattice{});
+  EXPECT_EQ(reframe(chain, extent, Lattice{}).grid.filledCount(), u.grid.filledCount());
+  // A box that cuts parts on columns inside a word keeps only what lies in it.
+  const Box3i cut{{-20, 1, 0}, {100, 8, 7}};
+  expectUnionOf(unionOfParts(parts, cut, Lattice{}), parts, cut);
+}
+
+// A part moved: the union made again over its old and new boxes is the union of the parts in their new places, and
+// the layers neither box reaches are still shared with the union it was copied from.
+TEST(PartUnion, redoneOverAMovedPartsBoxesIsTheNewUnion) {
+  std::vector<LatticeGrid> parts = scatteredParts();
+  Box3i extent;
+  for (const LatticeGrid& p : parts) extent = unite(extent, p.box());
+  const LatticeGrid before = unionOfParts(parts, extent, Lattice{});
+  const Box3i old_box = parts[1].box();
+  parts[1].first += glm::ivec3(-29, 1, 0);  // still inside the extent, over part 0 and part 2
+  LatticeGrid u = before;
+  redoUnionIn(u, parts, old_box);
+  redoUnionIn(u, parts, parts[1].box());
+  expectUnionOf(u, parts, extent);
+  for (int32_t z = 0; z < extent.size().z; ++z) {
+    const int32_t Z = extent.min.z + z;
+    const bool reached =
+        (Z >= old_box.min.z && Z < old_box.max.z) || (Z >= parts[1].box().min.z && Z < parts[1].box().max.z);
+    if (!reached) {
+      EXPECT_TRUE(u.grid.sharesLayerWith(before.grid, z)) << Z;
+    }
+  }
+  // A region outside the grid changes nothing.
+  redoUnionIn(u, parts, Box3i{{1000, 0, 0}, {1010, 5, 5}});
+  expectUnionOf(u, parts, extent);
+}
+
 TEST(Interference, twoBoxesOverlapInAKnownBlock) {
   Lattice lattice{glm::dvec3(0.0), 0.5, "model"};
   const LatticeGrid a{test::boxGrid(Dims{10, 10, 10}, {0, 0, 0}, {10, 10, 10}), {0, 0, 0}};
