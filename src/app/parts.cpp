@@ -87,18 +87,20 @@ Assembly sceneOfModel(const AppState& state) {
   return scene;
 }
 
-// The bodies of a mesh, each voxelized on the lattice of `model` (the mesh's own grid, as shown).
-PartsResult splitMesh(const TriangleMesh& mesh, VoxelizeParams params, const VoxelGrid& model,
+// The bodies of a mesh, each voxelized on the lattice of `model` (the mesh's own grid, as shown): the file's own
+// bodies, named as the file names them (a CAD file's solids, the objects of a file with several), else its shells.
+PartsResult splitMesh(const MeshSource& source, VoxelizeParams params, const VoxelGrid& model,
                       const ProgressFn& progress) {
   params.placement = placeGridOnLattice(model.frame(), glm::ivec3(0), model.dims());
   params.units = model.frame().units;
-  auto bodies = voxelizeBodies(mesh, params, progress);
+  const auto given = io::fileBodies(source.bodies, source.mesh.triangles.size(), source.cad != nullptr);
+  auto bodies = voxelizeBodies(source.mesh, params, progress, given ? &given->bodies : nullptr);
   if (!bodies) return bodies.error();
   auto scene = std::make_shared<Assembly>(bodies->lattice);
   for (size_t i = 0; i < bodies->bodies.size(); ++i) {
     BodyVoxels& b = bodies->bodies[i];
     if (b.filled == 0) continue;  // a body too thin for this lattice has no voxels to show
-    const size_t k = scene->addPart(std::move(b.voxels), "body " + std::to_string(i));
+    const size_t k = scene->addPart(std::move(b.voxels), given ? given->names[i] : "body " + std::to_string(i));
     scene->part(k).colour = partColour(k);
   }
   if (scene->size() == 0) return partsError("no body of the mesh has a voxel at this resolution");
@@ -191,7 +193,7 @@ void startSplitBodies(AppState& state) {
     VoxelizeParams params = state.voxelize_job_params;
     startPartsJob(
         state, "Splitting into bodies", "split into bodies",
-        [mesh, params, model](const ProgressFn& progress) { return splitMesh(mesh->mesh, params, model, progress); });
+        [mesh, params, model](const ProgressFn& progress) { return splitMesh(*mesh, params, model, progress); });
   } else {
     const Connectivity c = state.parts_ui.connectivity;
     startPartsJob(state, "Finding connected components", "split into components",

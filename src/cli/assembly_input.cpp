@@ -78,6 +78,7 @@ Status addVoxelInput(Input& in, const GridPlacement& whole, const Lattice& latti
   if (!bodies) {
     out.parts.push_back(std::move(part));
     out.names.push_back(in.name);
+    out.body_names.emplace_back();
     out.triangles.push_back(-1);
     return Ok{};
   }
@@ -87,12 +88,14 @@ Status addVoxelInput(Input& in, const GridPlacement& whole, const Lattice& latti
     LatticeGrid body{componentGrid(part.grid, comps, i), part.first};
     out.parts.push_back(reframe(body, Box3i{part.first + c.box_min, part.first + c.box_max + glm::ivec3(1)}, lattice));
     out.names.push_back((several ? in.name + " " : std::string()) + "body " + std::to_string(i));
+    out.body_names.emplace_back();
     out.triangles.push_back(-1);
   }
   return Ok{};
 }
 
-// A mesh as one part over its own box of `whole`, or its bodies as parts.
+// A mesh as one part over its own box of `whole`, or its bodies as parts: the file's own (a CAD file's solids, the
+// objects of a file with several), else its shells.
 Status addMeshInput(const Input& in, const GridPlacement& whole, const VoxelizeParams& params, bool bodies,
                     bool several, bool clamp, PartsOnLattice& out, Output& log) {
   VoxelizeParams p = params;
@@ -112,12 +115,14 @@ Status addMeshInput(const Input& in, const GridPlacement& whole, const VoxelizeP
       out.frame, Box3i{p.placement->first, p.placement->first + glm::ivec3(p.placement->dims.nx, p.placement->dims.ny,
                                                                            p.placement->dims.nz)});
   if (bodies) {
-    auto r = voxelizeBodies(mesh, p, terminalProgress("voxelizing bodies"));
+    const auto given = io::fileBodies(in.mesh->bodies, mesh.triangles.size(), io::isCadFormat(in.mesh->format));
+    auto r = voxelizeBodies(mesh, p, terminalProgress("voxelizing bodies"), given ? &given->bodies : nullptr);
     if (!r) return makeError(r.error().code, in.name + ": " + r.error().message);
     for (const std::string& w : r->warnings) log.warn(in.name + ": " + w);
     for (size_t i = 0; i < r->bodies.size(); ++i) {
       out.parts.push_back(std::move(r->bodies[i].voxels));
       out.names.push_back((several ? in.name + " " : std::string()) + "body " + std::to_string(i));
+      out.body_names.push_back(given ? given->names[i] : std::string());
       out.triangles.push_back(r->bodies[i].triangles);
     }
     return Ok{};
@@ -127,6 +132,7 @@ Status addMeshInput(const Input& in, const GridPlacement& whole, const VoxelizeP
   for (const std::string& w : r->warnings) log.warn(in.name + ": " + w);
   out.parts.push_back(LatticeGrid{std::move(r->grid), p.placement->first});
   out.names.push_back(in.name);
+  out.body_names.emplace_back();
   out.triangles.push_back(int64_t(mesh.triangles.size()));
   return Ok{};
 }

@@ -18,6 +18,9 @@ struct PartsOnLattice {
   Box3i frame;  // the grid the inputs share: the meshes' fitted grid, or the union of the voxel files' boxes
   std::vector<LatticeGrid> parts;
   std::vector<std::string> names;  // file names, or "body N" ("FILE body N" with several files)
+  // Per part: the name the file gives the body (a CAD solid's "solid 3", a 3MF object's name); empty when the file
+  // names none (an STL's shells, a voxel file's components, a whole file).
+  std::vector<std::string> body_names;
   std::vector<int64_t> triangles;  // per part; -1 for a part from a voxel file
   int64_t input_triangles = 0;     // over all mesh inputs
   double load_s = 0.0, voxelize_s = 0.0;

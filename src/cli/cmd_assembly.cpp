@@ -108,6 +108,7 @@ int runBodies(const BodiesOptions& o) {
     const int64_t filled = p.parts[i].grid.filledCount();
     nlohmann::ordered_json b;
     b["index"] = i;
+    if (!p.body_names[i].empty()) b["name"] = p.body_names[i];
     b["triangles"] = p.triangles[i] >= 0 ? nlohmann::ordered_json(p.triangles[i]) : nlohmann::ordered_json(nullptr);
     b["filled"] = filled;
     b["volume"] = volumeOf(filled, p.lattice);

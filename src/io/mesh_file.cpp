@@ -266,4 +266,25 @@ Result<MeshFileLoad> parseMeshFile(std::span<const uint8_t> bytes, const std::st
   return read(bytes, nullptr, name, options);
 }
 
+std::optional<FileBodies> fileBodies(std::span<const MeshBody> bodies, size_t triangle_count, bool cad) {
+  if (!cad && bodies.size() < 2) return std::nullopt;
+  FileBodies out;
+  out.bodies.body_of.resize(triangle_count);
+  uint64_t next = 0;
+  for (const MeshBody& b : bodies) {
+    if (b.first_triangle != next || b.triangle_count > triangle_count - next) return std::nullopt;
+    next += b.triangle_count;
+    if (b.triangle_count == 0) continue;
+    const auto index = uint32_t(out.bodies.triangles.size());
+    std::vector<uint32_t>& tris = out.bodies.triangles.emplace_back(b.triangle_count);
+    for (uint64_t t = 0; t < b.triangle_count; ++t) {
+      tris[t] = uint32_t(b.first_triangle + t);
+      out.bodies.body_of[b.first_triangle + t] = index;
+    }
+    out.names.push_back(b.name);
+  }
+  if (next != triangle_count || out.bodies.count() == 0) return std::nullopt;
+  return out;
+}
+
 }  // namespace vox::io

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/cad_parts.h"
 #include "support/test_support.h"
 #include "vox/core/mesh.h"
 #include "vox/io/stl.h"
@@ -130,6 +131,46 @@ TEST_F(AssemblyCli, bodiesWritesEveryBodyOnOneLattice) {
                       path("i.binvox"), "--json"});
   ASSERT_EQ(i.exit_code, 0) << i.err;
   EXPECT_EQ(parse(i)["filled"], 120);
+}
+
+// A STEP file's solids are its bodies, named as the reader names them, even where they touch: two boxes sharing the
+// face x = 10 have equal vertices there, and splitting by welded shells would make them one body.
+TEST_F(AssemblyCli, aStepFilesTouchingSolidsStayTwoBodies) {
+  using test::CadShape;
+  test::writeStep(tmp_ / "pair.step",
+                  {{CadShape::kBox, {0, 0, 0}, {10, 10, 10}}, {CadShape::kBox, {10, 0, 0}, {10, 10, 10}}});
+  auto r = runVoxmod({"bodies", path("pair.step"), "--res", "20", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = parse(r);
+  ASSERT_EQ(j["bodies"].size(), 2u);
+  for (int i = 0; i < 2; ++i) {
+    const json& b = j["bodies"][size_t(i)];
+    EXPECT_EQ(b["name"], "solid " + std::to_string(i + 1));
+    EXPECT_EQ(b["filled"], 1000) << i;  // h = 1: each box is 10 x 10 x 10 voxels
+    EXPECT_DOUBLE_EQ(b["bbox"]["min"][0].get<double>(), 10.0 * i);
+  }
+  auto f = runVoxmod({"interfere", path("pair.step"), "--bodies", "--res", "20", "--json"});
+  ASSERT_EQ(f.exit_code, 0) << f.err;
+  const json k = parse(f);
+  EXPECT_EQ(k["parts"], json::array({"body 0", "body 1"}));
+  EXPECT_TRUE(k["pairs"].empty());  // touching, not overlapping
+}
+
+// The shared assembly's 18 solids (brackets with the bolts and nuts that touch them) stay 18 bodies and 18 parts.
+TEST_F(AssemblyCli, theSharedStepAssemblyKeepsItsEighteenSolids) {
+  VOX_REQUIRE_SHARED(shared);
+  const std::string as1 = (shared / "meshes/cad/as1-oc-214.stp").string();
+  auto r = runVoxmod({"bodies", as1, "--res", "200", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = parse(r);
+  ASSERT_EQ(j["bodies"].size(), 18u);
+  for (size_t i = 0; i < 18; ++i) {
+    EXPECT_EQ(j["bodies"][i]["name"], "solid " + std::to_string(i + 1));
+    EXPECT_GT(j["bodies"][i]["filled"].get<int64_t>(), 0) << i;
+  }
+  auto f = runVoxmod({"interfere", as1, "--bodies", "--res", "200", "--json"});
+  ASSERT_EQ(f.exit_code, 0) << f.err;
+  EXPECT_EQ(parse(f)["parts"].size(), 18u);
 }
 
 TEST_F(AssemblyCli, clearanceBetweenSeparateBoxes) {

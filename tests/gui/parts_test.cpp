@@ -13,6 +13,7 @@
 #include "app/parts.h"
 #include "app/parts_view.h"
 #include "app/viewport.h"
+#include "support/cad_parts.h"
 #include "support/test_support.h"
 #include "vox/analysis/assembly.h"
 #include "vox/io/stl.h"
@@ -154,6 +155,27 @@ void openTwoBlocks(AppState& state, const test::TempDir& dir) {
   ASSERT_EQ(state.model.filledCount(), 10 * 4 * 4);
 }
 
+// A STEP file splits into its solids, named as the file's reader names them, though they touch: the two boxes share
+// the face x = 10, where welding by position would join them into one shell.
+TEST(AppParts, aStepFileSplitsIntoItsSolidsThoughTheyTouch) {
+  test::TempDir dir;
+  using test::CadShape;
+  test::writeStep(dir / "pair.step",
+                  {{CadShape::kBox, {0, 0, 0}, {10, 10, 10}}, {CadShape::kBox, {10, 0, 0}, {10, 10, 10}}});
+  AppState state;
+  openVoxelized(state, dir / "pair.step", 20);
+  ASSERT_TRUE(state.doc.mesh != nullptr);
+  ASSERT_EQ(state.doc.mesh->bodies.size(), 2u);
+  ASSERT_TRUE(run(state, "split-bodies").ok());
+  ASSERT_TRUE(pump(state, [&] { return currentParts(state) != nullptr; }));
+  const Assembly& parts = *currentParts(state);
+  ASSERT_EQ(parts.size(), 2u);
+  for (size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(parts.part(i).name, "solid " + std::to_string(i + 1));
+    EXPECT_EQ(parts.part(i).voxels.grid.filledCount(), 1000) << i;  // h = 1: 10 x 10 x 10 voxels each
+  }
+  EXPECT_EQ(state.model.filledCount(), 2000);
+}
 TEST(AppParts, booleansAreNewPartsAndUndoable) {
   test::TempDir dir;
   AppState state;

@@ -8,11 +8,13 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "vox/core/mesh.h"
+#include "vox/core/mesh_bodies.h"
 #include "vox/core/progress.h"
 #include "vox/core/result.h"
 
@@ -56,6 +58,19 @@ struct MeshBody {
   uint64_t first_triangle = 0;
   uint64_t triangle_count = 0;
 };
+
+// The bodies a file names, as vox/core/mesh_bodies.h's MeshBodies (for voxelizeBodies) with their names: a CAD
+// file's solids, or the objects / meshes of a file that has several. Solids that touch stay apart, where splitting
+// by welded shells would join them. Bodies without triangles are left out.
+struct FileBodies {
+  MeshBodies bodies;
+  std::vector<std::string> names;  // per body of `bodies`
+};
+
+// The file's own bodies when `cad` or there are several of them; nullopt for a file that is one mesh (every STL, a
+// one-object OBJ), whose bodies are its shells (splitBodies), and when the ranges do not tile
+// [0, triangle_count) in order.
+std::optional<FileBodies> fileBodies(std::span<const MeshBody> bodies, size_t triangle_count, bool cad);
 
 struct MeshFileLoad {
   TriangleMesh mesh;             // every body, in file order; mesh.name is the file name as given
