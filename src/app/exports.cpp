@@ -55,7 +55,7 @@ bool exportSurface(AppState& state, const std::filesystem::path& path, bool smoo
     return false;
   }
   mesh->name = state.doc.path.empty() ? std::string("model") : state.doc.path.stem().string();
-  if (Status s = io::saveMesh(*mesh, path); !s) {
+  if (Status s = io::saveMesh(*mesh, path, state.model.frame().units); !s) {
     reportError(state, describe(s.error(), path), path);
     return false;
   }

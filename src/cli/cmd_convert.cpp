@@ -47,7 +47,7 @@ Status writeSurface(const ConvertOptions& o, const VoxelGrid& grid, Output& out)
   const double h = grid.voxelSize();
   d["volume"] = double(grid.filledCount()) * h * h * h;  // of the voxels (a smooth surface encloses a little less)
   d["smooth_iterations"] = params.smooth_iterations;
-  return io::saveMesh(*mesh, o.out);
+  return io::saveMesh(*mesh, o.out, grid.frame().units);
 }
 
 // A volume OUT (.nrrd, .vti, .vdb, .vox: io/volume_export.h): the model's voxels with their placement.

@@ -26,7 +26,7 @@ Status writeGridAs(const VoxelGrid& grid, const std::filesystem::path& out, cons
   auto mesh = extractSurfaceMesh(grid, SurfaceMeshParams{});
   if (!mesh) return mesh.error();
   mesh->name = std::filesystem::path(source).stem().string();  // as convert names it
-  return io::saveMesh(*mesh, out);
+  return io::saveMesh(*mesh, out, grid.frame().units);
 }
 
 }  // namespace vox::cli

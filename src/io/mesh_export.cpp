@@ -1,9 +1,8 @@
-// Surface meshes out: STL through io/stl.cpp, PLY, OBJ and 3MF through assimp's exporters (docs/dependencies.md).
+// Surface meshes out: STL through io/stl.cpp, PLY and OBJ through assimp's exporters, 3MF written here and zipped
+// with minizip (docs/dependencies.md).
 #include "vox/io/mesh_export.h"
 
-#include <unistd.h>
-
-#include <cstdlib>
+#include <charconv>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -11,6 +10,7 @@
 #include <assimp/Exporter.hpp>
 #include <assimp/scene.h>
 
+#include "io/zip_package.h"
 #include "vox/io/file_util.h"
 #include "vox/io/stl.h"
 
@@ -21,12 +21,11 @@ namespace {
 const char* exporterFor(const std::string& ext) {
   if (ext == ".ply") return "plyb";
   if (ext == ".obj") return "objnomtl";
-  if (ext == ".3mf") return "3mf";
   return nullptr;
 }
 
-// One mesh in a child of the root node (the 3MF exporter writes the root's children only), with the one default
-// material the exporters expect. The scene owns what it points to (aiScene's destructor frees it).
+// One mesh in a child of the root node, with the one default material the exporters expect. The scene owns what it
+// points to (aiScene's destructor frees it).
 std::unique_ptr<aiScene> sceneOf(const IndexedMesh& mesh) {
   auto scene = std::make_unique<aiScene>();
   scene->mRootNode = new aiNode("voxmod");
@@ -58,41 +57,110 @@ std::unique_ptr<aiScene> sceneOf(const IndexedMesh& mesh) {
   return scene;
 }
 
-// assimp's 3MF exporter writes its zip straight to a file name (it ignores the export-to-memory I/O system): it
-// writes into a private temporary directory, and the bytes are then saved atomically like every other format.
-Status export3mf(Assimp::Exporter& exporter, const aiScene& scene, const std::filesystem::path& path) {
-  std::error_code ec;
-  const auto dir = std::filesystem::temp_directory_path(ec) /
-                   ("voxmod-3mf-" + std::to_string(::getpid()) + "-" + std::to_string(std::rand()));
-  if (ec || !std::filesystem::create_directory(dir, ec)) {
-    return makeError(ErrorCode::kIo, path.string() + ": cannot make a temporary directory for the 3MF exporter");
+// 3MF's name for voxmod's unit; millimeter (3MF's default) for a model without a unit, its numbers unchanged.
+const char* threeMfUnit(const std::string& units) {
+  if (units == "cm") return "centimeter";
+  if (units == "m") return "meter";
+  if (units == "in" || units == "inch") return "inch";
+  return "millimeter";
+}
+
+void appendNumber(std::string& out, double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);  // the shortest text that reads back as this double
+  out.append(buf, r.ptr);
+}
+
+void appendEscaped(std::string& out, const std::string& text) {
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
   }
-  const auto tmp = dir / "model.3mf";
-  Status result = Ok{};
-  if (exporter.Export(&scene, "3mf", tmp.string()) != AI_SUCCESS) {
-    result = makeError(ErrorCode::kIo, path.string() + ": " + exporter.GetErrorString());
-  } else if (auto bytes = readFileBytes(tmp); !bytes) {
-    result =
-        makeError(ErrorCode::kIo, path.string() + ": the 3MF exporter wrote nothing (" + bytes.error().message + ")");
-  } else {
-    result = writeFileAtomic(path, *bytes);
+}
+
+std::vector<uint8_t> bytesOf(const std::string& text) { return std::vector<uint8_t>(text.begin(), text.end()); }
+
+// The 3MF core model: one object, one build item. assimp's 3MF exporter prints 6 significant digits (which moves
+// vertices split 1/256 of a voxel apart onto each other on large coordinates) and always says millimeter, so the
+// model part is written here (docs/dependencies.md).
+std::string threeMfModel(const IndexedMesh& mesh, const std::string& units) {
+  std::string out;
+  out.reserve(64 + mesh.vertices.size() * 64 + mesh.triangles.size() * 40);
+  out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<model unit=\"";
+  out += threeMfUnit(units);
+  out += "\" xml:lang=\"en-US\" xmlns=\"http://schemas.microsoft.com/3dmanufacturing/core/2015/02\">\n";
+  out += " <resources>\n  <object id=\"1\" type=\"model\" name=\"";
+  appendEscaped(out, mesh.name.empty() ? std::string("surface") : mesh.name);
+  out += "\">\n   <mesh>\n    <vertices>\n";
+  for (const glm::dvec3& v : mesh.vertices) {
+    out += "     <vertex x=\"";
+    appendNumber(out, v.x);
+    out += "\" y=\"";
+    appendNumber(out, v.y);
+    out += "\" z=\"";
+    appendNumber(out, v.z);
+    out += "\"/>\n";
   }
-  std::filesystem::remove_all(dir, ec);
-  return result;
+  out += "    </vertices>\n    <triangles>\n";
+  for (const auto& t : mesh.triangles) {
+    out += "     <triangle v1=\"" + std::to_string(t[0]) + "\" v2=\"" + std::to_string(t[1]) + "\" v3=\"" +
+           std::to_string(t[2]) + "\"/>\n";
+  }
+  out += "    </triangles>\n   </mesh>\n  </object>\n </resources>\n <build>\n  <item objectid=\"1\"/>\n </build>\n";
+  out += "</model>\n";
+  return out;
+}
+
+// A 3MF package (3MF Core Specification 1.2): content types, the root relationship, the model part; deflated.
+Status save3mf(const IndexedMesh& mesh, const std::filesystem::path& path, const std::string& units) {
+  std::vector<ZipEntry> entries;
+  entries.push_back(
+      {"[Content_Types].xml", bytesOf("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                                      "<Types xmlns=\"http://schemas.openxmlformats.org/package/2006/content-types\">\n"
+                                      " <Default Extension=\"rels\" "
+                                      "ContentType=\"application/vnd.openxmlformats-package.relationships+xml\"/>\n"
+                                      " <Default Extension=\"model\" "
+                                      "ContentType=\"application/vnd.ms-package.3dmanufacturing-3dmodel+xml\"/>\n"
+                                      "</Types>\n")});
+  entries.push_back(
+      {"_rels/.rels", bytesOf("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                              "<Relationships xmlns=\"http://schemas.openxmlformats.org/package/2006/relationships\">\n"
+                              " <Relationship Target=\"/3D/3dmodel.model\" Id=\"rel0\" "
+                              "Type=\"http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel\"/>\n"
+                              "</Relationships>\n")});
+  entries.push_back({"3D/3dmodel.model", bytesOf(threeMfModel(mesh, units))});
+  auto zip = writeZip(entries, path.string(), true);
+  if (!zip) return zip.error();
+  return writeFileAtomic(path, *zip);
 }
 
 }  // namespace
 
 bool isMeshExportFile(const std::filesystem::path& path) {
   const std::string ext = lowerExtension(path);
-  return ext == ".stl" || exporterFor(ext) != nullptr;
+  return ext == ".stl" || ext == ".3mf" || exporterFor(ext) != nullptr;
 }
 
 std::string meshExportExtensions() { return "stl, ply, obj, 3mf"; }
 
-Status saveMesh(const IndexedMesh& mesh, const std::filesystem::path& path) {
+Status saveMesh(const IndexedMesh& mesh, const std::filesystem::path& path, const std::string& units) {
   const std::string ext = lowerExtension(path);
   if (ext == ".stl") return saveStlBinary(mesh, path);
+  if (ext == ".3mf") return save3mf(mesh, path, units);
   const char* id = exporterFor(ext);
   if (!id) {
     return makeError(ErrorCode::kInvalidArgument,
@@ -103,7 +171,6 @@ Status saveMesh(const IndexedMesh& mesh, const std::filesystem::path& path) {
   }
   const std::unique_ptr<aiScene> scene = sceneOf(mesh);
   Assimp::Exporter exporter;
-  if (ext == ".3mf") return export3mf(exporter, *scene, path);
   const aiExportDataBlob* blob = exporter.ExportToBlob(scene.get(), id);
   if (!blob) return makeError(ErrorCode::kIo, path.string() + ": " + exporter.GetErrorString());
   if (blob->next) {

@@ -74,10 +74,7 @@ zlib_filefunc64_def memoryFunctions(MemoryFile& file) {
   return f;
 }
 
-struct Entry {
-  std::string name;
-  std::vector<uint8_t> bytes;
-};
+using Entry = ZipEntry;
 
 // The entry's unpacked size. minizip 1.1 as Debian 12 ships it compares the 32-bit size fields with
 // (unsigned long)-1, which on LP64 is not 0xffffffff, so it never reads a ZIP64 extra field (APPNOTE 4.5.3) and
@@ -166,26 +163,32 @@ Result<std::vector<Entry>> readEntries(std::span<const uint8_t> bytes, const std
   return entries;
 }
 
-// Every entry stored (no compression, no ZIP64 fields).
-Result<std::vector<uint8_t>> writeStoredZip(const std::vector<Entry>& entries, const std::string& name) {
+}  // namespace
+
+Result<std::vector<uint8_t>> writeZip(const std::vector<ZipEntry>& entries, const std::string& name, bool deflate) {
   std::vector<uint8_t> out;
   MemoryFile file;
   file.out = &out;
   zlib_filefunc64_def functions = memoryFunctions(file);
-  zipFile zip = zipOpen2_64("3mf", APPEND_STATUS_CREATE, nullptr, &functions);
-  if (zip == nullptr) return makeError(ErrorCode::kIo, name + ": could not repack the 3MF package");
+  zipFile zip = zipOpen2_64("zip", APPEND_STATUS_CREATE, nullptr, &functions);
+  if (zip == nullptr) return makeError(ErrorCode::kIo, name + ": could not start the zip package");
   bool ok = true;
-  for (const Entry& e : entries) {
+  for (const ZipEntry& e : entries) {
     zip_fileinfo info{};
     ok = ok && e.bytes.size() < 0xffffffffu &&
-         zipOpenNewFileInZip64(zip, e.name.c_str(), &info, nullptr, 0, nullptr, 0, nullptr, 0, 0, 0) == ZIP_OK &&
+         zipOpenNewFileInZip64(zip, e.name.c_str(), &info, nullptr, 0, nullptr, 0, nullptr, deflate ? Z_DEFLATED : 0,
+                               deflate ? Z_DEFAULT_COMPRESSION : 0, 0) == ZIP_OK &&
          (e.bytes.empty() || zipWriteInFileInZip(zip, e.bytes.data(), unsigned(e.bytes.size())) == ZIP_OK) &&
          zipCloseFileInZip(zip) == ZIP_OK;
   }
   ok = zipClose(zip, nullptr) == ZIP_OK && ok;
-  if (!ok) return makeError(ErrorCode::kLimit, name + ": could not repack the 3MF package (an entry over 4 GiB?)");
+  if (!ok || out.size() >= 0xffffffffu) {
+    return makeError(ErrorCode::kLimit, name + ": could not write the zip package (an entry or the zip over 4 GiB?)");
+  }
   return out;
 }
+
+namespace {
 
 // ---- expat: the first element with a given name, and its attributes ----
 
@@ -284,8 +287,8 @@ Result<ThreeMfPackage> read3mfPackage(std::span<const uint8_t> bytes, const std:
   }
   out.unit = attribute(s, "unit");
   if (out.unit.empty()) out.unit = "millimeter";
-  auto zip = writeStoredZip(*entries, name);
-  if (!zip) return zip.error();
+  auto zip = writeZip(*entries, name, false);
+  if (!zip) return makeError(zip.error().code, name + ": could not repack the 3MF package (an entry over 4 GiB?)");
   out.zip = std::move(zip).value();
   return out;
 }

@@ -1,5 +1,6 @@
 #pragma once
-// A 3MF package (a zip, 3MF Core Specification 1.2, "Package") made ready for assimp, and its length unit.
+// A 3MF package (a zip, 3MF Core Specification 1.2, "Package") made ready for assimp, and its length unit; and zips
+// written in memory (the 3MF files voxmod writes, io/mesh_export.cpp).
 //
 // assimp 5.2 opens 3MF entries through minizip's 32-bit calls, which report the sizes of entries written with ZIP64
 // fields (streaming zip writers do so, e.g. ../shared/meshes/cad/pyramids.3mf) as 4 GiB: it then reads nothing and
@@ -23,5 +24,14 @@ struct ThreeMfPackage {
 // Fails (kParse) on bytes that are not a zip, a zip without a 3D model part; (kLimit) when the entries unpack to
 // more than `max_bytes`.
 Result<ThreeMfPackage> read3mfPackage(std::span<const uint8_t> bytes, const std::string& name, uint64_t max_bytes);
+
+struct ZipEntry {
+  std::string name;  // its path in the package, e.g. "3D/3dmodel.model"
+  std::vector<uint8_t> bytes;
+};
+
+// A zip of `entries` in memory, in order: each deflated (zlib's default level) or, with `deflate` false, stored; no
+// ZIP64 fields, so fails (kLimit) for an entry or a zip past 4 GiB. `name` names the file in messages.
+Result<std::vector<uint8_t>> writeZip(const std::vector<ZipEntry>& entries, const std::string& name, bool deflate);
 
 }  // namespace vox::io

@@ -8,9 +8,13 @@
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
 
+#include "support/grids.h"
 #include "support/test_support.h"
+#include "vox/analysis/surface_mesh.h"
 #include "vox/io/mesh_export.h"
+#include "vox/io/mesh_file.h"
 #include "vox/io/stl.h"
+#include "vox/voxelize/voxelize.h"
 
 namespace vox::io {
 namespace {
@@ -65,6 +69,88 @@ TEST(MeshExport, plyObjAnd3mfKeepTheSharedVerticesAndTriangles) {
     }
   }
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 4);  // no temporary left behind
+}
+
+// The surface of `g` written as `ext` and read back by loadMeshFile.
+MeshFileLoad roundTrip(const VoxelGrid& g, const std::filesystem::path& path) {
+  auto mesh = extractSurfaceMesh(g, SurfaceMeshParams{});
+  EXPECT_TRUE(mesh.ok());
+  EXPECT_TRUE(saveMesh(*mesh, path, g.frame().units).ok());
+  auto read = loadMeshFile(path);
+  EXPECT_TRUE(read.ok()) << read.error().message;
+  return read.ok() ? std::move(read).value() : MeshFileLoad{};
+}
+
+// Voxels touching along an edge and at a corner far from the origin (x about 100, h = 0.1): the surface's vertices
+// split 1/256 of a voxel apart there must stay apart in the file, or the mesh read back has non-manifold edges.
+TEST(MeshExport, threeMfKeepsTheSplitVerticesOfEdgeAndCornerContactsFarFromTheOrigin) {
+  const test::TempDir dir;
+  VoxelGrid g(Dims{3, 3, 3});
+  g.set(0, 0, 0);
+  g.set(1, 1, 0);  // along an edge
+  g.set(2, 2, 1);  // at a corner
+  g.frame().origin = glm::dvec3(100.3, 100.7, 100.1);
+  g.frame().voxel_size = 0.1;
+  g.frame().units = "mm";
+  for (const std::string ext : {".3mf", ".stl"}) {  // STL stores floats: the reference
+    SCOPED_TRACE(ext);
+    const MeshFileLoad read = roundTrip(g, dir.path() / ("contacts" + ext));
+    EXPECT_EQ(read.topology.boundary_edges, 0);
+    EXPECT_EQ(read.topology.nonmanifold_edges, 0);
+    EXPECT_EQ(read.topology.inconsistent_edges, 0);
+  }
+}
+
+// The model's unit is the 3MF model's unit, read back as the same unit; a model without one is millimetres (3MF's
+// default), its numbers unchanged.
+TEST(MeshExport, threeMfWritesTheModelsUnit) {
+  const test::TempDir dir;
+  const std::pair<const char*, const char*> cases[] = {
+      {"in", "inch"}, {"cm", "centimeter"}, {"m", "meter"}, {"mm", "millimeter"}, {"model", "millimeter"}};
+  for (const auto& [units, file_units] : cases) {
+    SCOPED_TRACE(units);
+    const auto path = dir.path() / (std::string("cube_") + units + ".3mf");
+    ASSERT_TRUE(saveMesh(cube(), path, units).ok());
+    auto read = loadMeshFile(path);
+    ASSERT_TRUE(read.ok()) << read.error().message;
+    EXPECT_EQ(read->file_units, file_units);
+    EXPECT_EQ(read->units, std::string(units) == "model" ? "mm" : units);
+    EXPECT_NEAR(signedVolume(read->mesh), 1.0, 1e-6);  // the numbers as they were
+    EXPECT_EQ(read->mesh.bounds().min.x, 1.25f);
+  }
+}
+
+// Voxels to a 3MF surface and back, far from the origin: voxelized on the grid's lattice, the same grid voxel for
+// voxel; and the very triangles an STL of the surface gives (both float), so any grid voxelizes them alike (6
+// significant digits moved the mesh's box, and the grid fitted to it at the same voxel size grew a layer).
+TEST(MeshExport, voxelsThroughThreeMfAndVoxelizedAgainAreTheSameVoxels) {
+  const test::TempDir dir;
+  VoxelGrid g = test::randomGrid(Dims{31, 31, 64}, 0.6, 7);
+  for (int c = 0; c < 8; ++c) g.set((c & 1) * 30, ((c >> 1) & 1) * 30, (c >> 2) * 63);  // the box is the grid's
+  g.frame().origin = glm::dvec3(96.55, 101.35, 93.95);
+  g.frame().voxel_size = 0.1;
+  g.frame().units = "mm";
+  const MeshFileLoad three = roundTrip(g, dir.path() / "random.3mf");
+  const MeshFileLoad stl = roundTrip(g, dir.path() / "random.stl");
+  ASSERT_EQ(three.mesh.triangles.size(), stl.mesh.triangles.size());
+  int64_t moved = 0;
+  for (size_t i = 0; i < stl.mesh.triangles.size(); ++i)
+    for (int c = 0; c < 3; ++c) moved += three.mesh.triangles[i].v[c] != stl.mesh.triangles[i].v[c];
+  EXPECT_EQ(moved, 0);
+  EXPECT_EQ(three.topology.boundary_edges, 0);
+  EXPECT_EQ(three.topology.nonmanifold_edges, 0);
+
+  VoxelizeParams p;
+  p.mode = FillMode::kNonzero;
+  p.placement = placeGridOnLattice(g.frame(), glm::ivec3(0), g.dims());
+  auto again = voxelizeSolid(three.mesh, p);
+  ASSERT_TRUE(again.ok());
+  ASSERT_EQ(again->grid.dims(), g.dims());
+  int64_t mismatches = 0;
+  for (int z = 0; z < g.nz(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x) mismatches += again->grid.get(x, y, z) != g.get(x, y, z);
+  EXPECT_EQ(mismatches, 0);
 }
 
 TEST(MeshExport, stlIsTheSoupOfTheSameTriangles) {
