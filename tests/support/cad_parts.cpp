@@ -65,15 +65,17 @@ TopoDS_Compound compoundOf(const std::vector<CadPart>& parts) {
 
 }  // namespace
 
-void writeStep(const std::filesystem::path& path, const std::vector<CadPart>& parts, const char* unit) {
+void writeStep(const std::filesystem::path& path, const std::vector<CadPart>& parts, const char* unit,
+               const char* schema) {
   quietWriters();
   STEPControl_Controller::Init();  // defines the write.step.* settings
-  ASSERT_TRUE(Interface_Static::SetCVal("write.step.schema", "AP214IS"));
+  ASSERT_TRUE(Interface_Static::SetCVal("write.step.schema", schema));
   ASSERT_TRUE(Interface_Static::SetCVal("write.step.unit", unit));  // read when the writer makes its model
   STEPControl_Writer writer;
   ASSERT_EQ(writer.Transfer(compoundOf(parts), STEPControl_AsIs), IFSelect_RetDone);
   ASSERT_EQ(writer.Write(path.c_str()), IFSelect_RetDone) << path;
   Interface_Static::SetCVal("write.step.unit", "MM");
+  Interface_Static::SetCVal("write.step.schema", "AP214IS");
 }
 
 void writeIgesFaces(const std::filesystem::path& path, const std::vector<CadPart>& parts) {

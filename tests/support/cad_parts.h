@@ -20,9 +20,11 @@ struct CadPart {
   glm::dvec3 size{1.0};
 };
 
-// Writes the parts as one STEP file (AP214, each part its own solid), lengths in `unit` ("MM", "INCH", "M"; the
-// parts' numbers are millimetres and the writer converts them). Fails the calling test on an error.
-void writeStep(const std::filesystem::path& path, const std::vector<CadPart>& parts, const char* unit = "MM");
+// Writes the parts as one STEP file (each part its own solid), lengths in `unit` ("MM", "INCH", "M"; the parts'
+// numbers are millimetres and the writer converts them), in `schema` (Open CASCADE's write.step.schema: "AP214IS",
+// "AP203", "AP242DIS"). Fails the calling test on an error.
+void writeStep(const std::filesystem::path& path, const std::vector<CadPart>& parts, const char* unit = "MM",
+               const char* schema = "AP214IS");
 // Writes the parts as an IGES surface model: trimmed surfaces only, no solid entity (IGES "faces" mode), mm.
 void writeIgesFaces(const std::filesystem::path& path, const std::vector<CadPart>& parts);
 

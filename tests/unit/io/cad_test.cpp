@@ -97,6 +97,34 @@ TEST(CadFile, stepBoxIsOneClosedSolidInMillimetres) {
   EXPECT_EQ(m.cad->solids(), 1);
 }
 
+// AP203 and AP242 files (the schemas besides AP214 that CAD systems write) read as the AP214 file does: the same
+// solids, the same exact corners, the schema named in the format.
+TEST(CadFile, stepAp203AndAp242FilesReadAsAp214Does) {
+  test::TempDir tmp;
+  const std::pair<const char*, const char*> schemas[] = {{"AP203", "CONFIG_CONTROL_DESIGN"},
+                                                         {"AP242DIS", "AP242_MANAGED_MODEL_BASED_3D_ENGINEERING"}};
+  for (const auto& [schema, name] : schemas) {
+    SCOPED_TRACE(schema);
+    const auto path = tmp / (std::string(schema) + ".step");
+    test::writeStep(path, {{CadShape::kBox, {1, 2, 3}, {10, 20, 30}}, {CadShape::kCylinder, {30, 0, 0}, {5, 0, 10}}},
+                    "MM", schema);
+    const std::string text = test::readFile(path);
+    EXPECT_NE(text.find(name), std::string::npos) << "FILE_SCHEMA not " << name;
+    MeshFileOptions options;
+    options.resolution = 100;
+    const MeshFileLoad m = loadOk(path, options);
+    EXPECT_EQ(m.format, MeshFormat::kStep);
+    EXPECT_NE(m.format_detail.find(name), std::string::npos) << m.format_detail;
+    EXPECT_EQ(m.units, "mm");
+    ASSERT_EQ(m.bodies.size(), 2u);
+    EXPECT_TRUE(m.topology.watertight());
+    const TriangleMesh box = bodyMesh(m.mesh, fileBodies(m.bodies, m.mesh.triangles.size(), true)->bodies, 0);
+    EXPECT_EQ(box.bounds().min, glm::dvec3(1, 2, 3));
+    EXPECT_EQ(box.bounds().max, glm::dvec3(11, 22, 33));
+    EXPECT_NEAR(signedVolume(box), 6000.0, 1e-9 * 6000.0);
+  }
+}
+
 TEST(CadFile, inchFileIsConvertedToMillimetresAndSaysItsUnit) {
   test::TempDir tmp;
   test::writeStep(tmp / "inch.step", {{CadShape::kBox, {0, 0, 0}, {25.4, 50.8, 12.7}}}, "INCH");
