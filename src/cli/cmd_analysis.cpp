@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "cli/model_input.h"
 #include "cli/stream_readers.h"
+#include "cli/write_grid.h"
 #include "vox/analysis/analysis.h"
 #include "vox/analysis/distance.h"
 #include "vox/analysis/scalar_fields.h"
@@ -93,13 +94,17 @@ struct PeelOptions {
   std::string depth_out;  // --depth: every voxel's skin layer as a volume
 };
 
-// -o and --depth together, written as one: the remaining voxels (.vxm or .binvox) and the depth volume.
+// -o and --depth together: the remaining voxels and the depth volume, written as one when -o is a voxel file (.vxm
+// or .binvox); any other output convert writes (a volume, a surface mesh) is written first, then the depth volume.
 Status writePeelFiles(const PeelOptions& o, const DepthMap& depth, const VoxelGrid& grid, const VoxelGrid& remaining) {
   std::vector<io::PendingFile> files;
   if (!o.out.empty()) {
     const std::string ext = io::lowerExtension(o.out);
-    if (ext != ".vxm" && ext != ".binvox") return io::saveVoxelFile(remaining, o.out);  // its error names the types
-    files.push_back({o.out, ext == ".vxm" ? io::encodeVxm(remaining) : io::encodeBinvox(remaining)});
+    if (ext == ".vxm" || ext == ".binvox") {
+      files.push_back({o.out, ext == ".vxm" ? io::encodeVxm(remaining) : io::encodeBinvox(remaining)});
+    } else if (Status s = writeGridAs(remaining, o.out, o.c.file); !s) {
+      return s;
+    }
   }
   auto bytes = encodeFieldFile("depth", depthField(depth, grid), o.depth_out);
   if (!bytes) return bytes.error();
@@ -113,7 +118,7 @@ int runPeelByDistance(const PeelOptions& o, const LoadedModel& model, Output& ou
   auto r = peelByDistance(model.grid, o.distance, terminalProgress("distance"));
   if (!r) return out.fail(r.error());
   if (!o.out.empty()) {
-    if (auto s = io::saveVoxelFile(*r, o.out); !s) return out.fail(s.error());
+    if (auto s = writeGridAs(*r, o.out, o.c.file); !s) return out.fail(kExitIo, s.error().message);
   }
   const int64_t left = r->filledCount();
   auto& d = out.data();
@@ -128,6 +133,7 @@ int runPeelByDistance(const PeelOptions& o, const LoadedModel& model, Output& ou
 
 int runPeel(const PeelOptions& o) {
   Output out(o.c.json);
+  if (!o.out.empty() && !isGridOutput(o.out)) return out.fail(kExitUsage, gridOutputFormats(o.out));  // before work
   if (!o.depth_out.empty()) {
     if (o.distance >= 0.0) return out.fail(kExitUsage, "--depth goes with --layers or --all, not --distance");
     if (const std::string why = fieldOutputProblem(o.depth_out); !why.empty()) return out.fail(kExitUsage, why);
@@ -144,9 +150,13 @@ int runPeel(const PeelOptions& o) {
   const PeelResult result = depth->peeled(p.all ? depth->layers() : p.layers);
   const PeelResult* r = &result;
   if (!o.depth_out.empty()) {
-    if (auto s = writePeelFiles(o, *depth, model->grid, r->remaining); !s) return out.fail(s.error());
+    if (auto s = writePeelFiles(o, *depth, model->grid, r->remaining); !s) {
+      // An empty remainder has no surface to write: an output error (exit 2), as for boolean.
+      if (s.error().code == ErrorCode::kInvalidArgument) return out.fail(kExitIo, s.error().message);
+      return out.fail(s.error());
+    }
   } else if (!o.out.empty()) {
-    if (auto s = io::saveVoxelFile(r->remaining, o.out); !s) return out.fail(s.error());
+    if (auto s = writeGridAs(r->remaining, o.out, o.c.file); !s) return out.fail(kExitIo, s.error().message);
   }
   auto& d = out.data();
   d["removed_per_layer"] = r->removed_per_layer;
@@ -353,7 +363,9 @@ void addPeelCommand(CLI::App& sub, CommandContext& ctx) {
                        ->check(CLI::NonNegativeNumber);
   layers->excludes(all);
   distance->excludes(layers)->excludes(all);
-  sub.add_option("-o,--output", o->out, "Write the remaining voxels to this voxel file");
+  sub.add_option("-o,--output", o->out,
+                 "Write the remaining voxels: any output convert writes (voxels .vxm .binvox, a volume .nrrd .vti .vdb "
+                 ".vox, the surface .stl .ply .obj .3mf)");
   sub.add_option("--depth", o->depth_out,
                  "Write every voxel's skin layer (1 = the outer skin, the core last; 0 = empty or deeper than the "
                  "layers peeled) as a volume: .nrrd, .vti or .vdb");

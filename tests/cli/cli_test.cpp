@@ -1,5 +1,6 @@
 // The command line as scripts use it (docs/conventions.md, "Command line"): exit codes, JSON keys, images, error
 // messages.
+#include <cmath>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -7,6 +8,7 @@
 #include "support/test_support.h"
 #include "vox/core/mesh.h"
 #include "vox/io/image_io.h"
+#include "vox/io/mesh_file.h"
 #include "vox/io/stl.h"
 
 namespace vox {
@@ -102,6 +104,78 @@ TEST_F(Cli, peelAllOfABoxRemovesShellsDownToTheCore) {
   EXPECT_EQ(j["removed_per_layer"], json::array({488, 296, 152, 56, 8}));
   EXPECT_EQ(j["remaining"], 0);
   EXPECT_EQ(j["core_voxels"], 8);
+}
+
+// peel -o takes every output convert writes: a volume is the bytes convert writes from the peel's voxel file, a
+// surface mesh reads back closed around the remaining voxels; an unknown extension is a usage error before any
+// work, and an empty remainder has no surface (exit 2, nothing written).
+TEST_F(Cli, peelWritesAnyFormatConvertWrites) {
+  ASSERT_EQ(runVoxmod({"peel", box_stl(), "--res", "10", "--layers", "1", "-o", path("p.vxm")}).exit_code, 0);
+  std::filesystem::create_directories(path("converted"));
+  for (const char* ext : {".binvox", ".nrrd", ".vti", ".vox", ".vdb"}) {
+    const std::string direct = path(std::string("p") + ext);
+    auto r = runVoxmod({"peel", box_stl(), "--res", "10", "--layers", "1", "-o", direct});
+    ASSERT_EQ(r.exit_code, 0) << ext << ": " << r.err;
+    const std::string converted = path(std::string("converted/p") + ext);
+    ASSERT_EQ(runVoxmod({"convert", path("p.vxm"), converted}).exit_code, 0) << ext;
+    if (std::string(ext) == ".vdb") {  // OpenVDB writes a fresh UUID into every file: the same size
+      EXPECT_EQ(test::readFile(direct).size(), test::readFile(converted).size());
+    } else {
+      EXPECT_TRUE(test::readFile(direct) == test::readFile(converted)) << ext;
+    }
+  }
+  for (const char* ext : {".stl", ".ply", ".obj", ".3mf"}) {
+    const std::string out = path(std::string("p") + ext);
+    for (const char* how : {"--layers", "--distance"}) {  // 1 layer, or within 0.15: both leave the 8^3 inside
+      auto r = runVoxmod({"peel", box_stl(), "--res", "10", how, how[2] == 'l' ? "1" : "0.15", "-o", out});
+      ASSERT_EQ(r.exit_code, 0) << ext << ": " << r.err;
+      auto m = io::loadMeshFile(out);
+      ASSERT_TRUE(m.ok()) << ext << ": " << m.error().message;
+      EXPECT_TRUE(m->topology.watertight()) << ext;
+      EXPECT_NEAR(signedVolume(m->mesh), 512 * 1e-3, 1e-6) << ext;  // 8^3 voxels of 0.1
+      EXPECT_EQ(glm::dvec3(m->mesh.bounds().min), glm::dvec3(glm::vec3(0.1f))) << ext;
+    }
+  }
+  auto bad = runVoxmod({"peel", box_stl(), "--res", "10", "--layers", "1", "-o", path("p.xyz")});
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("surface: stl, ply, obj, 3mf"), std::string::npos) << bad.err;
+  auto empty = runVoxmod({"peel", box_stl(), "--res", "10", "--all", "-o", path("none.stl")});
+  EXPECT_EQ(empty.exit_code, 2);
+  EXPECT_NE(empty.err.find("no filled voxels"), std::string::npos) << empty.err;
+  EXPECT_FALSE(std::filesystem::exists(path("none.stl")));
+}
+
+// convert from a voxel file to each surface format, blocky and --smooth: exit 0, the file reads back closed and
+// manifold with the triangles the JSON reports, in the voxel file's unit (3MF carries it).
+TEST_F(Cli, convertWritesTheSurfaceInEveryMeshFormat) {
+  ASSERT_EQ(runVoxmod({"voxelize", box_stl(), "--res", "10", "--units", "in", "-o", path("box.vxm")}).exit_code, 0);
+  for (const char* ext : {".stl", ".ply", ".obj", ".3mf"}) {
+    for (bool smooth : {false, true}) {
+      SCOPED_TRACE(std::string(ext) + (smooth ? " smooth" : ""));
+      const std::string out = path(std::string(smooth ? "smooth" : "box") + ext);
+      std::vector<std::string> args = {"convert", path("box.vxm"), out, "--json"};
+      if (smooth) args.push_back("--smooth");
+      auto r = runVoxmod(args);
+      ASSERT_EQ(r.exit_code, 0) << r.err;
+      const json j = parse(r);
+      auto m = io::loadMeshFile(out);
+      ASSERT_TRUE(m.ok()) << m.error().message;
+      EXPECT_EQ(int64_t(m->mesh.triangles.size()), j["triangles"].get<int64_t>());
+      EXPECT_EQ(m->topology.boundary_edges, 0);
+      EXPECT_EQ(m->topology.nonmanifold_edges, 0);
+      EXPECT_EQ(m->topology.inconsistent_edges, 0);
+      const double v = signedVolume(m->mesh);
+      if (smooth) {  // a rounded block within half a voxel of the blocky surface (area 6)
+        EXPECT_NEAR(v, 1.0, 6 * 0.05);
+        EXPECT_GT(std::abs(v - 1.0), 1e-3);
+      } else {
+        EXPECT_NEAR(v, 1.0, 1e-6);  // the 10^3 voxels of 0.1
+      }
+      if (std::string(ext) == ".3mf") {
+        EXPECT_EQ(m->units, "in");
+      }
+    }
+  }
 }
 
 TEST_F(Cli, peelNeedsLayersOrAll) { EXPECT_EQ(runVoxmod({"peel", box_stl(), "--res", "10"}).exit_code, 1); }
