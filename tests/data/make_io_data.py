@@ -6,6 +6,7 @@ tests/data/quirks/ holds valid files in unusual shapes that must load.
 The .vxm files are written here from docs/file-format.md, independently of src/io/vxm.cpp, so the test
 also checks that the document and the code agree. Run from anywhere; the output is deterministic.
 """
+import json
 import os
 import struct
 import zlib
@@ -276,6 +277,12 @@ write(BAD, "glb_then_zip.glb", glb_chunks(b'{"asset": {"version": "2.0"}, "scene
 GLB_TOO_LONG = bytearray(glb())
 struct.pack_into("<I", GLB_TOO_LONG, 12, 0xFFF00000)
 write(BAD, "glb_chunk_too_long.glb", bytes(GLB_TOO_LONG))
+# A .gltf cut short in the middle of its JSON (a download that stopped), and one whose index accessor points past
+# the buffer views: JSON that parses, a document that does not hold together.
+write(BAD, "gltf_truncated.gltf", gltf_embedded()[:400])
+GLTF_BAD_VIEW, _ = gltf_parts()
+GLTF_BAD_VIEW["accessors"][1]["bufferView"] = 7
+write(BAD, "gltf_bad_buffer_view.gltf", json.dumps(GLTF_BAD_VIEW) + "\n")
 write(BAD, "not_zip.3mf", '<?xml version="1.0"?>\n<model unit="millimeter"></model>\n')
 write(BAD, "zip_without_model.3mf", zip_bytes([("[Content_Types].xml", "<Types/>\n")]))
 STEP_START = ("ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION(('a truncated file'),'2;1');\n"

@@ -139,6 +139,11 @@ const Refusal kRefusals[] = {
      "glb_then_zip.glb: not a readable GLB file (assimp's GLB importers do not recognise its content)"},
     {"glb_chunk_too_long.glb", ErrorCode::kParse,
      "glb_chunk_too_long.glb: GLB chunk 1 says 4293918720 bytes where 708 remain"},
+    {"gltf_truncated.gltf", ErrorCode::kParse,
+     "gltf_truncated.gltf: not a readable glTF file (assimp's glTF importers do not recognise its content)"},
+    {"gltf_bad_buffer_view.gltf", ErrorCode::kParse,
+     "gltf_bad_buffer_view.gltf: not a readable glTF file (assimp: 'GLTF: Array index 7 is out of bounds (2) for "
+     "\"bufferViews\"')"},
     {"not_zip.3mf", ErrorCode::kParse, "not_zip.3mf: not a 3MF file: it does not start with a zip signature ('PK')"},
     {"zip_without_model.3mf", ErrorCode::kParse,
      "zip_without_model.3mf: not a 3MF file: the zip holds no 3D model part (3D/3dmodel.model)"},
