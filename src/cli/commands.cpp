@@ -11,7 +11,9 @@ namespace vox::cli {
 // The explicit table: name, one-line summary, the function that adds its options (cmd_<name>.cpp).
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
-      {"voxelize", "Voxelize an STL mesh into a .vxm or .binvox file", addVoxelizeCommand},
+      {"voxelize",
+       "Voxelize a mesh or CAD file (STL, OBJ, PLY, 3MF, glTF, OFF, STEP, IGES) into a .vxm or .binvox file",
+       addVoxelizeCommand},
       {"info", "Describe a mesh or voxel file (dims, voxel size, filled and surface voxels)", addInfoCommand},
       {"section", "Write the section normal to X, Y or Z at an index as a PNG", addSectionCommand},
       {"peel", "Remove skin layers (one, N, or all down to the core)", addPeelCommand},

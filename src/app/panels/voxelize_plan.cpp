@@ -5,6 +5,7 @@
 #include "app/operations.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
+#include "vox/core/units.h"
 
 namespace vox::app {
 
@@ -16,7 +17,7 @@ bool drawVoxelizePlan(const AppState& state, const VoxelizeDialog& d, const Mesh
   if (plan) {
     const GridPlacement& g = plan->placement;
     ImGui::Text("Grid: %d x %d x %d = %s voxels", g.dims.nx, g.dims.ny, g.dims.nz, groupDigits(g.dims.count()).c_str());
-    ImGui::Text("Voxel size: %.6g model units", g.frame.voxel_size);
+    ImGui::Text("Voxel size: %.6g %s", g.frame.voxel_size, unitsLabel(p.units).c_str());
     ImGui::Text("Memory: up to %s (limit %s)", formatBytes(plan->bytes).c_str(),
                 formatBytes(plan->limit_bytes).c_str());
     if (!d.proposal_note.empty()) ImGui::TextColored(kWarningColour, "%s", d.proposal_note.c_str());
