@@ -47,7 +47,7 @@ namespace {
 // being faulted in again page by page.
 class LayerPool {
  public:
-  static constexpr size_t kMinWords = 4096;           // 32 KiB: smaller layers are malloc's business
+  static constexpr size_t kMinWords = 4096;  // 32 KiB: smaller layers are malloc's business
   static constexpr size_t kCapBytes = size_t(256) << 20;
   uint64_t* take(size_t words) {
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -103,8 +103,8 @@ uint64_t* VoxelGrid::allocateLayerWords(size_t words, LayerFill fill) {
       return p;
     }
   }
-  void* p = fill == LayerFill::kOverwritten ? std::malloc(words * sizeof(uint64_t))
-                                            : std::calloc(words, sizeof(uint64_t));
+  void* p =
+      fill == LayerFill::kOverwritten ? std::malloc(words * sizeof(uint64_t)) : std::calloc(words, sizeof(uint64_t));
   if (!p) throw std::bad_alloc();
   return static_cast<uint64_t*>(p);
 }
