@@ -1,6 +1,12 @@
 // The analysis subcommands (docs/conventions.md, "Command line"): section, peel, xray, mass. Each binds its flags to
 // the same params struct the GUI edits (vox/analysis/analysis.h) and FILE may be a mesh, voxelized on the fly.
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
+#include <string>
+#include <system_error>
+#include <vector>
 #include <optional>
 
 #include <CLI/CLI.hpp>
@@ -94,16 +100,33 @@ struct PeelOptions {
   std::string depth_out;  // --depth: every voxel's skin layer as a volume
 };
 
-// -o and --depth together: the remaining voxels and the depth volume, written as one when -o is a voxel file (.vxm
-// or .binvox); any other output convert writes (a volume, a surface mesh) is written first, then the depth volume.
+// -o and --depth together: the remaining voxels and the depth volume, written as one (writeFilesAtomic: both files
+// complete under temporary names before either replaces its target). An -o that is not a voxel file (a volume, a
+// surface mesh) is first written by writeGridAs beside its target under a hidden temporary name and taken from there.
 Status writePeelFiles(const PeelOptions& o, const DepthMap& depth, const VoxelGrid& grid, const VoxelGrid& remaining) {
   std::vector<io::PendingFile> files;
   if (!o.out.empty()) {
+    const std::filesystem::path out(o.out);
     const std::string ext = io::lowerExtension(o.out);
     if (ext == ".vxm" || ext == ".binvox") {
       files.push_back({o.out, ext == ".vxm" ? io::encodeVxm(remaining) : io::encodeBinvox(remaining)});
-    } else if (Status s = writeGridAs(remaining, o.out, o.c.file); !s) {
-      return s;
+    } else {
+      const std::filesystem::path staged =
+          out.parent_path() / ("." + out.stem().string() + ".voxmod-" + std::to_string(::getpid()) + ext);
+      Status s = writeGridAs(remaining, staged, o.c.file);
+      auto bytes = s.ok() ? io::readFileBytes(staged) : Result<std::vector<uint8_t>>(s.error());
+      std::error_code ec;
+      std::filesystem::remove(staged, ec);
+      if (!s) {
+        std::string message = s.error().message;  // it names the temporary file: name the output instead
+        for (size_t at = message.find(staged.string()); at != std::string::npos;
+             at = message.find(staged.string(), at + o.out.size())) {
+          message.replace(at, staged.string().size(), o.out);
+        }
+        return makeError(s.error().code, message);
+      }
+      if (!bytes) return bytes.error();
+      files.push_back({o.out, std::move(bytes).value()});
     }
   }
   auto bytes = encodeFieldFile("depth", depthField(depth, grid), o.depth_out);

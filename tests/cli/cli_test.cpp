@@ -145,6 +145,27 @@ TEST_F(Cli, peelWritesAnyFormatConvertWrites) {
   EXPECT_FALSE(std::filesystem::exists(path("none.stl")));
 }
 
+// -o in any format and --depth are written as one: both, or neither (the old -o stays, no temporary file is left).
+TEST_F(Cli, peelWritesASurfaceAndItsDepthTogetherOrNeither) {
+  const std::string out = path("inner.stl"), depth = path("depth.nrrd");
+  test::writeFile(out, "the user's own file");
+  test::writeFile(path("blocker"), "a file where the depth volume's directory would be");
+  auto failed =
+      runVoxmod({"peel", box_stl(), "--res", "10", "--layers", "1", "-o", out, "--depth", path("blocker/depth.nrrd")});
+  EXPECT_NE(failed.exit_code, 0);
+  EXPECT_NE(failed.err.find("blocker"), std::string::npos) << failed.err;
+  EXPECT_EQ(test::readFile(out), "the user's own file");
+  auto ok = runVoxmod({"peel", box_stl(), "--res", "10", "--layers", "1", "-o", out, "--depth", depth});
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  auto m = io::loadMeshFile(out);
+  ASSERT_TRUE(m.ok()) << m.error().message;
+  EXPECT_NEAR(signedVolume(m->mesh), 512 * 1e-3, 1e-6);  // the 8^3 inside
+  EXPECT_TRUE(std::filesystem::exists(depth));
+  for (const auto& e : std::filesystem::directory_iterator(tmp_.path())) {
+    EXPECT_EQ(e.path().filename().string().find(".voxmod"), std::string::npos) << e.path();
+  }
+}
+
 // convert from a voxel file to each surface format, blocky and --smooth: exit 0, the file reads back closed and
 // manifold with the triangles the JSON reports, in the voxel file's unit (3MF carries it).
 TEST_F(Cli, convertWritesTheSurfaceInEveryMeshFormat) {
