@@ -27,25 +27,36 @@ TEST(VoxelGrid, newGridIsEmptyAndAllocatesNoLayers) {
   EXPECT_FALSE(g.get(10, 20, 30));
 }
 
+// A grid of these dims whose every layer word (padding included) was set, then freed: its layers' memory is left
+// dirty for the next grid. `fresh`: the layers taken as freshLayerWords takes them, else as mutableLayerWords does.
+void dirtyAndFree(Dims d, bool fresh) {
+  VoxelGrid dirty(d);
+  for (int32_t z = 0; z < d.nz; ++z) {
+    uint64_t* w = fresh ? dirty.freshLayerWords(z) : dirty.mutableLayerWords(z);
+    std::fill(w, w + dirty.wordsPerLayer(), ~uint64_t(0));
+  }
+}
+
+// Every word of every layer of g, taken as freshLayerWords or mutableLayerWords takes it, is zero.
+::testing::AssertionResult layersAreZero(VoxelGrid& g, bool fresh) {
+  for (int32_t z = 0; z < g.nz(); ++z) {
+    const uint64_t* w = fresh ? g.freshLayerWords(z) : g.mutableLayerWords(z);
+    if (!std::all_of(w, w + g.wordsPerLayer(), [](uint64_t x) { return x == 0; })) {
+      return ::testing::AssertionFailure() << g.nx() << " x " << g.ny() << ", layer " << z << " is not zero";
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
 // Layers come from calloc without being written (so untouched pages are never faulted in): a new layer must read
 // as zero even where its memory was just used and freed by another grid, at small sizes (reused heap chunks) and
 // large ones (whole layers handed back by the allocator).
 TEST(VoxelGrid, newLayersAreZeroEvenInReusedMemory) {
   for (const Dims d : {Dims{40, 30, 6}, Dims{1000, 700, 4}}) {
     for (int round = 0; round < 3; ++round) {
-      {
-        VoxelGrid dirty(d);
-        for (int32_t z = 0; z < d.nz; ++z) {
-          uint64_t* w = dirty.mutableLayerWords(z);
-          std::fill(w, w + dirty.wordsPerLayer(), ~uint64_t(0));
-        }
-      }
+      dirtyAndFree(d, false);
       VoxelGrid fresh(d);
-      for (int32_t z = 0; z < d.nz; ++z) {
-        const uint64_t* w = fresh.mutableLayerWords(z);
-        ASSERT_TRUE(std::all_of(w, w + fresh.wordsPerLayer(), [](uint64_t x) { return x == 0; }))
-            << d.nx << " x " << d.ny << ", layer " << z << ", round " << round;
-      }
+      ASSERT_TRUE(layersAreZero(fresh, false)) << "round " << round;
       EXPECT_EQ(fresh.filledCount(), 0);
     }
   }
@@ -145,26 +156,10 @@ TEST(VoxelGrid, neighbourAtAndCellDistances) {
 TEST(VoxelGrid, layersMadeFromFreedLayersHoldOnlyTheirOwnWords) {
   const Dims d{1000, 700, 4};  // 16 words x 702 rows a layer
   for (int round = 0; round < 3; ++round) {
-    {
-      VoxelGrid dirty(d);
-      for (int32_t z = 0; z < d.nz; ++z) {
-        uint64_t* w = dirty.freshLayerWords(z);
-        std::fill(w, w + dirty.wordsPerLayer(), ~uint64_t(0));
-      }
-    }
+    dirtyAndFree(d, true);
     VoxelGrid fresh(d);
-    for (int32_t z = 0; z < d.nz; ++z) {
-      const uint64_t* w = fresh.freshLayerWords(z);
-      ASSERT_TRUE(std::all_of(w, w + fresh.wordsPerLayer(), [](uint64_t x) { return x == 0; }))
-          << "layer " << z << ", round " << round;
-    }
-    {
-      VoxelGrid dirty(d);
-      for (int32_t z = 0; z < d.nz; ++z) {
-        uint64_t* w = dirty.freshLayerWords(z);
-        std::fill(w, w + dirty.wordsPerLayer(), ~uint64_t(0));
-      }
-    }
+    ASSERT_TRUE(layersAreZero(fresh, true)) << "round " << round;
+    dirtyAndFree(d, true);
     VoxelGrid a = box(d, {3, 5, 0}, {900, 600, 4});
     VoxelGrid b = a;
     b.reset(10, 10, 2);  // copy on write of layer 2, into storage another grid freed
