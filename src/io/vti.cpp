@@ -10,6 +10,7 @@
 #include <mutex>
 #include <string>
 
+#include <oneapi/tbb/global_control.h>
 #include <vtkCallbackCommand.h>
 #include <vtkFieldData.h>
 #include <vtkFloatArray.h>
@@ -124,6 +125,10 @@ Result<std::vector<uint8_t>> encodeVti(const VolumeContent& content, const Progr
   if (const std::string why = volumeContentProblem(content, VolumeFormat::kVti); !why.empty()) {
     return makeError(ErrorCode::kInvalidArgument, why);
   }
+  // VTK's parallel loops (its SMP tools, on TBB) stay on the calling thread, as OpenVDB's do in encodeVdb: the
+  // window runs the export as a background job beside its own threads, and the thread sanitizer cannot follow TBB's
+  // synchronisation between its workers (memory a VTK worker freed, reused by an OpenVDB export, reads as a race).
+  const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
   silenceVtk();
   vtkNew<vtkImageData> image;
   addContent(image, content);
