@@ -8,6 +8,7 @@
 // Threads own layers of nodes (16 voxel slices, round robin) and each has its own block words, so every word is
 // written by one thread: paint(t, ...) touches only thread t's voxels.
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -42,11 +43,52 @@ class OpenVoxels {
   size_t blockIndex(int64_t kx, int64_t ky, int64_t kz) const { return size_t(kx + k_.nx * (ky + k_.ny * kz)); }
   static int bit(int64_t x, int64_t y, int64_t z) { return int((x & 3) + 4 * (y & 3) + 16 * (z & 3)); }
 
+  // One axis of a ball: for the blocks its box meets, the squared distance from the centre's coordinate c to each
+  // block, node and brick along the axis (nearest voxel; farthest too for bricks) and to each voxel, filled once per
+  // ball so that the walk reads the four values of a cell as one vector.
+  struct Reach {
+    int64_t k0 = 0, k1 = -1;  // blocks k0..k1
+    std::vector<int32_t> blocks, node_near, brick_near, brick_far, voxels;
+    void set(int64_t c, int64_t r, int64_t n) {
+      k0 = std::max<int64_t>(0, c - r) >> 6;
+      k1 = std::min<int64_t>(n - 1, c + r) >> 6;
+      const auto count = size_t(k1 - k0 + 1);
+      blocks.resize(count);
+      node_near.resize(count * 4);
+      brick_near.resize(count * 16);
+      brick_far.resize(count * 16);
+      voxels.resize(count * 64);
+      auto near = [c](int64_t a, int64_t b) {
+        const int64_t d = c < a ? a - c : c > b ? c - b : 0;
+        return int32_t(d * d);
+      };
+      for (size_t i = 0; i < count; ++i) blocks[i] = near((k0 + int64_t(i)) * 64, (k0 + int64_t(i)) * 64 + 63);
+      for (size_t i = 0; i < count * 4; ++i)
+        node_near[i] = near(k0 * 64 + int64_t(i) * 16, k0 * 64 + int64_t(i) * 16 + 15);
+      for (size_t i = 0; i < count * 16; ++i) {
+        const int64_t a = k0 * 64 + int64_t(i) * 4, b = a + 3;
+        brick_near[i] = near(a, b);
+        brick_far[i] = int32_t(std::max((c - a) * (c - a), (b - c) * (b - c)));
+      }
+      for (size_t i = 0; i < count * 64; ++i)
+        voxels[i] = int32_t((k0 * 64 + int64_t(i) - c) * (k0 * 64 + int64_t(i) - c));
+    }
+    int64_t block(int64_t k) const { return blocks[size_t(k - k0)]; }
+    const int32_t* nodeNear(int64_t node) const { return node_near.data() + (node - k0 * 4); }
+    const int32_t* brickNear(int64_t brick) const { return brick_near.data() + (brick - k0 * 16); }
+    const int32_t* brickFar(int64_t brick) const { return brick_far.data() + (brick - k0 * 16); }
+    const int32_t* voxel(int64_t v) const { return voxels.data() + (v - k0 * 64); }
+  };
+
   Dims box_, b_, n_, k_;  // voxels, bricks, nodes, blocks
   int threads_;
   std::vector<uint64_t> bricks_, nodes_;
   std::vector<std::vector<uint64_t>> blocks_;  // per thread
   std::vector<int64_t> open_;                  // open bricks per thread
+  struct alignas(64) ThreadReach {
+    std::array<Reach, 3> axis;
+  };
+  std::vector<ThreadReach> reach_;  // per thread, each on its own cache lines
 };
 
 template <class Filled>
@@ -59,7 +101,8 @@ OpenVoxels::OpenVoxels(Dims box, int threads, Filled&& filled)
       bricks_(size_t(b_.count()), 0),
       nodes_(size_t(n_.count()), 0),
       blocks_(size_t(threads), std::vector<uint64_t>(size_t(k_.count()), 0)),
-      open_(size_t(threads), 0) {
+      open_(size_t(threads), 0),
+      reach_(size_t(threads)) {
   parallelChunks(0, b_.nz, 1, threadsFor(box.count() / 4), [&](int, int64_t bz0, int64_t bz1) {
     for (int64_t z = bz0 * 4; z < std::min<int64_t>(box.nz, bz1 * 4); ++z)
       for (int64_t y = 0; y < box.ny; ++y)
@@ -79,20 +122,20 @@ OpenVoxels::OpenVoxels(Dims box, int threads, Filled&& filled)
 
 // The bits (i + 4j + 16k) of a 4 x 4 x 4 cell for which ax[i] + ay[j] + az[k] < s, without branches. Every value
 // is a squared distance within a box of at most kMaxDim voxels a side, so 32-bit lanes hold it.
-inline uint64_t cellMask(const int64_t ax[4], const int64_t ay[4], const int64_t az[4], int64_t s) {
+inline uint64_t cellMask(const int32_t* ax, const int32_t* ay, const int32_t* az, int32_t s) {
   uint64_t m = 0;
 #if defined(__SSE2__)
-  const __m128i x = _mm_set_epi32(int32_t(ax[3]), int32_t(ax[2]), int32_t(ax[1]), int32_t(ax[0]));
+  const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(ax));
   for (int k = 0; k < 4; ++k)
     for (int j = 0; j < 4; ++j) {
-      const __m128i rem = _mm_set1_epi32(int32_t(s - ay[j] - az[k]));
+      const __m128i rem = _mm_set1_epi32(s - ay[j] - az[k]);
       const auto row = uint64_t(uint32_t(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpgt_epi32(rem, x)))));
       m |= row << (4 * j + 16 * k);
     }
 #else
   for (int k = 0; k < 4; ++k)
     for (int j = 0; j < 4; ++j) {
-      const int64_t rem = s - ay[j] - az[k];
+      const int32_t rem = s - ay[j] - az[k];
       const uint64_t row =
           uint64_t(ax[0] < rem) | uint64_t(ax[1] < rem) << 1 | uint64_t(ax[2] < rem) << 2 | uint64_t(ax[3] < rem) << 3;
       m |= row << (4 * j + 16 * k);
@@ -119,45 +162,32 @@ inline int64_t nearestBitBox(uint64_t bits, int64_t cx, int64_t cy, int64_t cz, 
   return axis(xm, cx, x0) + axis(ym, cy, y0) + axis(zm, cz, z0);
 }
 
-// For the four cells of `size` voxels from `lo` on one axis: the squared distance from c to their nearest voxel
-// centre (near) and to their farthest (far).
-inline void axisReach(int64_t c, int64_t lo, int64_t size, int64_t near[4], int64_t far[4]) {
-  for (int i = 0; i < 4; ++i) {
-    const int64_t a = lo + i * size, b = a + size - 1;
-    const int64_t dn = c < a ? a - c : c > b ? c - b : 0;
-    near[i] = dn * dn;
-    far[i] = std::max((c - a) * (c - a), (b - c) * (b - c));
-  }
-}
-
 template <class Paint>
 void OpenVoxels::paintBall(int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, Paint&& paint) {
   std::vector<uint64_t>& blocks = blocks_[size_t(t)];
   int64_t r = int64_t(std::sqrt(double(s)));  // the ball reaches r < sqrt(s) voxels from its centre
   while (r > 0 && r * r >= s) --r;
   while ((r + 1) * (r + 1) < s) ++r;
-  const int64_t k0x = std::max<int64_t>(0, cx - r) >> 6, k1x = std::min<int64_t>(box_.nx - 1, cx + r) >> 6;
-  const int64_t k0y = std::max<int64_t>(0, cy - r) >> 6, k1y = std::min<int64_t>(box_.ny - 1, cy + r) >> 6;
-  const int64_t k0z = std::max<int64_t>(0, cz - r) >> 6, k1z = std::min<int64_t>(box_.nz - 1, cz + r) >> 6;
-  int64_t nx[4], ny[4], nz[4], fx[4], fy[4], fz[4];
-  for (int64_t kz = k0z; kz <= k1z; ++kz)
-    for (int64_t ky = k0y; ky <= k1y; ++ky)
-      for (int64_t kx = k0x; kx <= k1x; ++kx) {
+  Reach& ax = reach_[size_t(t)].axis[0];
+  Reach& ay = reach_[size_t(t)].axis[1];
+  Reach& az = reach_[size_t(t)].axis[2];
+  ax.set(cx, r, box_.nx);
+  ay.set(cy, r, box_.ny);
+  az.set(cz, r, box_.nz);
+  const auto s32 = int32_t(s);
+  for (int64_t kz = az.k0; kz <= az.k1; ++kz)
+    for (int64_t ky = ay.k0; ky <= ay.k1; ++ky)
+      for (int64_t kx = ax.k0; kx <= ax.k1; ++kx) {
         uint64_t& block = blocks[blockIndex(kx, ky, kz)];
-        if (!block) continue;
-        axisReach(cx, kx * 64, 16, nx, fx);
-        axisReach(cy, ky * 64, 16, ny, fy);
-        axisReach(cz, kz * 64, 16, nz, fz);
-        for (uint64_t nb = block & cellMask(nx, ny, nz, s); nb; nb &= nb - 1) {
+        if (!block || ax.block(kx) + ay.block(ky) + az.block(kz) >= s) continue;
+        for (uint64_t nb = block & cellMask(ax.nodeNear(kx * 4), ay.nodeNear(ky * 4), az.nodeNear(kz * 4), s32); nb;
+             nb &= nb - 1) {
           const int i = std::countr_zero(nb);
           const int64_t ix = kx * 4 + (i & 3), iy = ky * 4 + ((i >> 2) & 3), iz = kz * 4 + (i >> 4);
           uint64_t& node = nodes_[nodeIndex(ix, iy, iz)];
-          int64_t bnx[4], bny[4], bnz[4], bfx[4], bfy[4], bfz[4];
-          axisReach(cx, ix * 16, 4, bnx, bfx);
-          axisReach(cy, iy * 16, 4, bny, bfy);
-          axisReach(cz, iz * 16, 4, bnz, bfz);
-          const uint64_t met = node & cellMask(bnx, bny, bnz, s);
-          const uint64_t whole = met ? cellMask(bfx, bfy, bfz, s) : 0;  // bricks the ball holds entirely
+          const uint64_t met = node & cellMask(ax.brickNear(ix * 4), ay.brickNear(iy * 4), az.brickNear(iz * 4), s32);
+          const uint64_t whole =  // bricks the ball holds entirely
+              met ? cellMask(ax.brickFar(ix * 4), ay.brickFar(iy * 4), az.brickFar(iz * 4), s32) : 0;
           for (uint64_t bb = met; bb; bb &= bb - 1) {
             const int j = std::countr_zero(bb);
             const int64_t bx = ix * 4 + (j & 3), by = iy * 4 + ((j >> 2) & 3), bz = iz * 4 + (j >> 4);
@@ -165,13 +195,7 @@ void OpenVoxels::paintBall(int t, int64_t cx, int64_t cy, int64_t cz, int64_t s,
             uint64_t taken = brick;
             if (!(whole >> j & 1)) {
               if (nearestBitBox(brick, cx, cy, cz, bx * 4, by * 4, bz * 4) >= s) continue;
-              int64_t vx[4], vy[4], vz[4];
-              for (int q = 0; q < 4; ++q) {
-                vx[q] = sq(bx * 4 + q - cx);
-                vy[q] = sq(by * 4 + q - cy);
-                vz[q] = sq(bz * 4 + q - cz);
-              }
-              taken &= cellMask(vx, vy, vz, s);
+              taken &= cellMask(ax.voxel(bx * 4), ay.voxel(by * 4), az.voxel(bz * 4), s32);
             }
             if (!taken) continue;
             for (uint64_t v = taken; v; v &= v - 1) {
