@@ -58,20 +58,24 @@ class OpenVoxels {
       brick_near.resize(count * 16);
       brick_far.resize(count * 16);
       voxels.resize(count * 64);
-      auto near = [c](int64_t a, int64_t b) {
-        const int64_t d = c < a ? a - c : c > b ? c - b : 0;
-        return int32_t(d * d);
+      // Only what the walk can read is filled: every block and node of the box's blocks, the bricks of the nodes
+      // within r of c and the voxels within r + 3 (a brick the ball meets). 32-bit: coordinates are below 2^15.
+      const auto c32 = int32_t(c), base = int32_t(k0 * 64);
+      auto near = [c32](int32_t a, int32_t b) {
+        const int32_t d = std::max({a - c32, c32 - b, 0});
+        return d * d;
       };
-      for (size_t i = 0; i < count; ++i) blocks[i] = near((k0 + int64_t(i)) * 64, (k0 + int64_t(i)) * 64 + 63);
-      for (size_t i = 0; i < count * 4; ++i)
-        node_near[i] = near(k0 * 64 + int64_t(i) * 16, k0 * 64 + int64_t(i) * 16 + 15);
-      for (size_t i = 0; i < count * 16; ++i) {
-        const int64_t a = k0 * 64 + int64_t(i) * 4, b = a + 3;
-        brick_near[i] = near(a, b);
-        brick_far[i] = int32_t(std::max((c - a) * (c - a), (b - c) * (b - c)));
+      for (int32_t i = 0; i < int32_t(count); ++i) blocks[size_t(i)] = near(base + 64 * i, base + 64 * i + 63);
+      for (int32_t i = 0; i < int32_t(count) * 4; ++i) node_near[size_t(i)] = near(base + 16 * i, base + 16 * i + 15);
+      const int64_t b0 = (std::max<int64_t>(0, c - r) >> 4) * 4, b1 = (std::min<int64_t>(n - 1, c + r) >> 4) * 4 + 3;
+      for (auto i = int32_t(b0 - k0 * 16); i <= int32_t(b1 - k0 * 16); ++i) {
+        const int32_t a = base + 4 * i, b = a + 3;
+        brick_near[size_t(i)] = near(a, b);
+        const int32_t f = std::max(c32 - a, b - c32);
+        brick_far[size_t(i)] = f * f;
       }
-      for (size_t i = 0; i < count * 64; ++i)
-        voxels[i] = int32_t((k0 * 64 + int64_t(i) - c) * (k0 * 64 + int64_t(i) - c));
+      const auto v0 = int32_t(std::max(k0 * 64, c - r - 3)), v1 = int32_t(std::min(k1 * 64 + 63, c + r + 3));
+      for (int32_t v = v0; v <= v1; ++v) voxels[size_t(v - base)] = (v - c32) * (v - c32);
     }
     int64_t block(int64_t k) const { return blocks[size_t(k - k0)]; }
     const int32_t* nodeNear(int64_t node) const { return node_near.data() + (node - k0 * 4); }
@@ -175,11 +179,19 @@ void OpenVoxels::paintBall(int t, int64_t cx, int64_t cy, int64_t cz, int64_t s,
   ay.set(cy, r, box_.ny);
   az.set(cz, r, box_.nz);
   const auto s32 = int32_t(s);
-  for (int64_t kz = az.k0; kz <= az.k1; ++kz)
-    for (int64_t ky = ay.k0; ky <= ay.k1; ++ky)
-      for (int64_t kx = ax.k0; kx <= ax.k1; ++kx) {
+  for (int64_t kz = az.k0; kz <= az.k1; ++kz) {
+    if (az.block(kz) >= s) continue;
+    for (int64_t ky = ay.k0; ky <= ay.k1; ++ky) {
+      const int64_t rest = s - az.block(kz) - ay.block(ky);  // the row of blocks meets the ball where dx^2 < rest
+      if (rest <= 0) continue;
+      int64_t w = int64_t(std::sqrt(double(rest)));
+      while (w > 0 && w * w >= rest) --w;
+      while ((w + 1) * (w + 1) < rest) ++w;
+      const int64_t kx0 = std::max(ax.k0, std::max<int64_t>(0, cx - w) >> 6);
+      const int64_t kx1 = std::min(ax.k1, (cx + w) >> 6);
+      for (int64_t kx = kx0; kx <= kx1; ++kx) {
         uint64_t& block = blocks[blockIndex(kx, ky, kz)];
-        if (!block || ax.block(kx) + ay.block(ky) + az.block(kz) >= s) continue;
+        if (!block) continue;
         for (uint64_t nb = block & cellMask(ax.nodeNear(kx * 4), ay.nodeNear(ky * 4), az.nodeNear(kz * 4), s32); nb;
              nb &= nb - 1) {
           const int i = std::countr_zero(nb);
@@ -210,6 +222,8 @@ void OpenVoxels::paintBall(int t, int64_t cx, int64_t cy, int64_t cz, int64_t s,
           if (!node) block &= ~(uint64_t(1) << i);
         }
       }
+    }
+  }
 }
 
 }  // namespace vox::analysis_detail

@@ -105,12 +105,12 @@ class LatticeCover {
 // the gradient, so a list holds the offsets within kConeDeg of one of the directions (a, b, c), components in
 // -kSteps..kSteps, and the centre tries the list of its rounded gradient (all offsets where the gradient is zero).
 // Any offset left out only keeps a ball that could have been dropped: the result is the same. (igea at R = 512: a
-// 25 degree cone about the 728 directions keeps 5 balls more than a 70 degree cone about 124, and tries a sixth of
-// the offsets.)
+// 15 degree cone about the 2,196 directions keeps 0.13% more balls than a 70 degree cone about 124, and tries about
+// a sixteenth of the offsets.)
 class RidgeOffsets {
  public:
-  static constexpr int kSteps = 4;
-  static constexpr double kConeDeg = 25.0;
+  static constexpr int kSteps = 6;
+  static constexpr double kConeDeg = 15.0;
   // nx and plane: the strides of the field, for each offset's step in memory (Offset::delta).
   RidgeOffsets(const LatticeCover& cover, int64_t nx, int64_t plane) {
     const int K = LatticeCover::kReach;
@@ -239,55 +239,76 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
     std::vector<std::vector<Centre>> buckets(static_cast<size_t>(nz));
     const int threads = threadsFor(d.count() / 4);
     std::atomic<int64_t> done{0};
-    // 1. The centres whose ball is not inside a neighbour's larger ball, by slice.
+    // 1. The centres whose ball is not inside a neighbour's larger ball, by slice, in columns kTile voxels wide: the
+    // rows the offsets read for one row of a column stay in the second-level cache (19 x 19 rows of 82 voxels).
+    constexpr int64_t kTile = 64;
     parallelChunks(0, nz, 1, threads, [&](int, int64_t zb, int64_t ze) {
       for (int64_t z = zb; z < ze; ++z) {
         if (gate.cancelled()) return;
         std::vector<Centre>& bucket = buckets[size_t(z)];
-        for (int64_t y = 0; y < ny; ++y) {
-          const uint32_t* row = data + plane * z + nx * y;
-          for (int64_t x = 0; x < nx; ++x) {
-            const int64_t s = row[x];
-            if (!s) continue;
-            bool inside = false;
-            const int64_t gx = at(x + 1, y, z) - at(x - 1, y, z), gy = at(x, y + 1, z) - at(x, y - 1, z),
-                          gz = at(x, y, z + 1) - at(x, y, z - 1);
-            const int64_t K = LatticeCover::kReach;
-            if (x >= K && y >= K && z >= K && x < nx - K && y < ny - K && z < nz - K) {  // no offset leaves the box
-              const uint32_t* here = row + x;
-              for (const Offset& o : ridge.forGradient(gx, gy, gz)) {
-                if (cover.inside(s, here[o.delta], o)) {
-                  inside = true;
-                  break;
+        for (int64_t x0 = 0; x0 < nx; x0 += kTile)
+          for (int64_t y = 0; y < ny; ++y) {
+            const uint32_t* row = data + plane * z + nx * y;
+            for (int64_t x = x0; x < std::min(nx, x0 + kTile); ++x) {
+              const int64_t s = row[x];
+              if (!s) continue;
+              bool inside = false;
+              const int64_t gx = at(x + 1, y, z) - at(x - 1, y, z), gy = at(x, y + 1, z) - at(x, y - 1, z),
+                            gz = at(x, y, z + 1) - at(x, y, z - 1);
+              const int64_t K = LatticeCover::kReach;
+              if (x >= K && y >= K && z >= K && x < nx - K && y < ny - K && z < nz - K) {  // no offset leaves the box
+                const uint32_t* here = row + x;
+                for (const Offset& o : ridge.forGradient(gx, gy, gz)) {
+                  if (cover.inside(s, here[o.delta], o)) {
+                    inside = true;
+                    break;
+                  }
+                }
+              } else {
+                for (const Offset& o : ridge.forGradient(gx, gy, gz)) {
+                  if (cover.inside(s, at(x + o.dx, y + o.dy, z + o.dz), o)) {
+                    inside = true;
+                    break;
+                  }
                 }
               }
-            } else {
-              for (const Offset& o : ridge.forGradient(gx, gy, gz)) {
-                if (cover.inside(s, at(x + o.dx, y + o.dy, z + o.dz), o)) {
-                  inside = true;
-                  break;
-                }
-              }
+              if (!inside) bucket.push_back(Centre{uint32_t(s), uint16_t(x), uint16_t(y), uint16_t(z)});
             }
-            if (!inside) bucket.push_back(Centre{uint32_t(s), uint16_t(x), uint16_t(y), uint16_t(z)});
           }
-        }
         gate.report(0.3 * double(done.fetch_add(1) + 1) / double(nz));
       }
     });
     if (gate.cancelled()) return cancelled();
-    // All centres, largest ball first (a counting sort by s; slices in order within a value: deterministic).
+    // All centres, largest ball first (a counting sort by s), balls of one size in Morton order: the order among
+    // equal balls does not change the result, and neighbours in space walk the same bricks while they are cached.
     std::vector<Centre> centres;
     {
       std::vector<int64_t> start(size_t(f.maxSquared()) + 2, 0);
       for (const auto& b : buckets)
         for (const Centre& c : b) ++start[size_t(f.maxSquared() - c.s) + 1];
       for (size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+      const std::vector<int64_t> first = start;
       centres.resize(size_t(start.back()));
       for (auto& b : buckets) {
         for (const Centre& c : b) centres[size_t(start[size_t(f.maxSquared() - c.s)]++)] = c;
         std::vector<Centre>().swap(b);
       }
+      auto morton = [](const Centre& c) {
+        auto spread = [](uint64_t v) {  // bits of a 16-bit value to every third bit
+          v = (v | v << 16) & 0x0000FF0000FFull;
+          v = (v | v << 8) & 0x00F00F00F00F00Full;
+          v = (v | v << 4) & 0x0C30C30C30C30C3ull;
+          return (v | v << 2) & 0x249249249249249ull;
+        };
+        return spread(c.x) | spread(c.y) << 1 | spread(c.z) << 2;
+      };
+      const int64_t values = int64_t(first.size()) - 1;
+      parallelChunks(0, values, 1, threadsFor(int64_t(centres.size())), [&](int, int64_t vb, int64_t ve) {
+        for (int64_t v = vb; v < ve; ++v) {
+          std::sort(centres.begin() + first[size_t(v)], centres.begin() + first[size_t(v) + 1],
+                    [&](const Centre& a, const Centre& b) { return morton(a) < morton(b); });
+        }
+      });
     }
     out.ball_centres = int64_t(centres.size());
 
