@@ -54,13 +54,15 @@ class LatticeCover {
   // every ball dropped here saves painting it (igea at R = 512: reach 2 leaves 4.5 times as many balls as reach 5,
   // reach 5 1.5 times as many as reach 9; reach 13 drops 2% more).
   static constexpr int kReach = 9;
+  // far - s below 2 r |d| + |d|^2 with r <= 512 and |d| <= sqrt(3) kReach < 2 kReach: 16 bits hold it
+  static_assert(2 * 512 * (2 * kReach) + 3 * kReach * kReach < INT16_MAX);
   explicit LatticeCover(int64_t max_s) : limit_(std::min(max_s, kMaxTable)) {
     const int K = kReach;
     for (int a = 1; a <= K; ++a)
       for (int b = 0; b <= a; ++b)
         for (int c = 0; c <= b; ++c) cls_.push_back({a, b, c});
     const size_t n = cls_.size();
-    far_.assign((size_t(limit_) + 1) * n, INT32_MIN);
+    far_.assign((size_t(limit_) + 1) * n, INT16_MIN);
     parallelChunks(0, int64_t(n), 1, threadsFor(limit_ * int64_t(n)), [&](int, int64_t kb, int64_t ke) {
       std::vector<int64_t> f;
       for (int64_t k = kb; k < ke; ++k) {
@@ -75,7 +77,7 @@ class LatticeCover {
               f[size_t(m) + 1] = std::max(f[size_t(m) + 1], a * a + b * b + c * c);
             }
         for (size_t i = 1; i < f.size(); ++i) f[i] = std::max(f[i], f[i - 1]);
-        for (size_t i = 0; i < f.size(); ++i) far_[i * n + size_t(k)] = int32_t(std::max<int64_t>(f[i], INT32_MIN));
+        for (size_t i = 1; i < f.size(); ++i) far_[i * n + size_t(k)] = int16_t(f[i] - int64_t(i));
       }
     });
   }
@@ -89,14 +91,17 @@ class LatticeCover {
   // True when every voxel of ball(c) (squared radius sc) lies in ball(n) (sn), n at offset o from c.
   bool inside(int64_t sc, int64_t sn, const Offset& o) const {
     if (sn <= sc) return false;
-    if (sc <= limit_) return far_[size_t(sc) * cls_.size() + size_t(o.cls)] < sn;
+    if (sc <= limit_) return far_[size_t(sc) * cls_.size() + size_t(o.cls)] + sc < sn;
     return ballInside(sc, sn, o.d2);
   }
 
  private:
   int64_t limit_;
   std::vector<std::array<int, 3>> cls_;
-  std::vector<int32_t> far_;  // far[s][class], classes adjacent: one centre's tests share cache lines
+  // far[s][class] - s, classes adjacent: one centre's tests share cache lines. The difference fits 16 bits: it lies
+  // between -3 (the gap from s down to the lattice shell below it) and 2 r |d| + |d|^2 <= 2 * 512 * 15.6 + 243 for
+  // the tabled balls (r <= 512) and offsets up to 9 voxels on each axis.
+  std::vector<int16_t> far_;
 };
 
 // Neighbours within kReach voxels on each axis, nearest first (the face neighbour in the direction of the gradient
@@ -253,11 +258,11 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
               const int64_t s = row[x];
               if (!s) continue;
               bool inside = false;
-              const int64_t gx = at(x + 1, y, z) - at(x - 1, y, z), gy = at(x, y + 1, z) - at(x, y - 1, z),
-                            gz = at(x, y, z + 1) - at(x, y, z - 1);
               const int64_t K = LatticeCover::kReach;
               if (x >= K && y >= K && z >= K && x < nx - K && y < ny - K && z < nz - K) {  // no offset leaves the box
                 const uint32_t* here = row + x;
+                const int64_t gx = int64_t(here[1]) - here[-1], gy = int64_t(here[nx]) - here[-nx],
+                              gz = int64_t(here[plane]) - here[-plane];
                 for (const Offset& o : ridge.forGradient(gx, gy, gz)) {
                   if (cover.inside(s, here[o.delta], o)) {
                     inside = true;
@@ -265,6 +270,8 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
                   }
                 }
               } else {
+                const int64_t gx = at(x + 1, y, z) - at(x - 1, y, z), gy = at(x, y + 1, z) - at(x, y - 1, z),
+                              gz = at(x, y, z + 1) - at(x, y, z - 1);
                 for (const Offset& o : ridge.forGradient(gx, gy, gz)) {
                   if (cover.inside(s, at(x + o.dx, y + o.dy, z + o.dz), o)) {
                     inside = true;
