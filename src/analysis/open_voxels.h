@@ -5,7 +5,8 @@
 // per open node of its 4 x 4 x 4 nodes (64^3 voxels). A ball descends only into blocks, nodes and bricks that hold
 // open voxels and meet it, so a ball inside material already painted costs a few words.
 //
-// Threads own layers of blocks (64 voxel slices, round robin) and each has its own block words, so every word is
+// Threads own blocks in a checkerboard (block (kx, ky, kz) belongs to thread (kx + ky + kz) mod threads, so that the
+// work is shared whatever the part's shape and orientation), and each has its own block words, so every word is
 // written by one thread: paint(t, ...) touches only thread t's voxels, and a block is walked by one thread only (a
 // ball that meets no open block of thread t costs that thread one look at the block words of its box).
 #include <algorithm>
@@ -35,7 +36,8 @@ class OpenVoxels {
   void paintBall(int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, Paint&& paint);
 
   bool anyOpen(int t) const { return open_[size_t(t)] > 0; }
-  int owner(int64_t node_z) const { return int((node_z >> 2) % threads_); }  // by the node's block layer
+  // The thread that owns block (kx, ky, kz) and every node, brick and voxel in it.
+  int owner(int64_t kx, int64_t ky, int64_t kz) const { return int((kx + ky + kz) % threads_); }
 
  private:
   static int64_t sq(int64_t v) { return v * v; }
@@ -118,7 +120,7 @@ OpenVoxels::OpenVoxels(Dims box, int threads, Filled&& filled)
     for (int64_t by = 0; by < b_.ny; ++by)
       for (int64_t bx = 0; bx < b_.nx; ++bx) {
         if (!bricks_[brickIndex(bx, by, bz)]) continue;
-        const int t = owner(bz >> 2);
+        const int t = owner(bx >> 4, by >> 4, bz >> 4);
         ++open_[size_t(t)];
         nodes_[nodeIndex(bx >> 2, by >> 2, bz >> 2)] |= uint64_t(1) << bit(bx, by, bz);
         blocks_[size_t(t)][blockIndex(bx >> 4, by >> 4, bz >> 4)] |= uint64_t(1) << bit(bx >> 2, by >> 2, bz >> 2);
@@ -173,13 +175,12 @@ void OpenVoxels::paintBall(int t, int64_t cx, int64_t cy, int64_t cz, int64_t s,
   int64_t r = int64_t(std::sqrt(double(s)));  // the ball reaches r < sqrt(s) voxels from its centre
   while (r > 0 && r * r >= s) --r;
   while ((r + 1) * (r + 1) < s) ++r;
-  {  // nothing to do when the thread has no open voxel in the blocks of the ball's box (or none of their layers)
+  {  // nothing to do when the thread has no open voxel in the blocks of the ball's box
     const int64_t k0x = std::max<int64_t>(0, cx - r) >> 6, k1x = std::min<int64_t>(box_.nx - 1, cx + r) >> 6;
     const int64_t k0y = std::max<int64_t>(0, cy - r) >> 6, k1y = std::min<int64_t>(box_.ny - 1, cy + r) >> 6;
     const int64_t k0z = std::max<int64_t>(0, cz - r) >> 6, k1z = std::min<int64_t>(box_.nz - 1, cz + r) >> 6;
     uint64_t any = 0;
     for (int64_t kz = k0z; kz <= k1z; ++kz) {
-      if (owner(kz * 4) != t) continue;
       for (int64_t ky = k0y; ky <= k1y; ++ky)
         for (int64_t kx = k0x; kx <= k1x; ++kx) any |= blocks[blockIndex(kx, ky, kz)];
     }
@@ -193,7 +194,7 @@ void OpenVoxels::paintBall(int t, int64_t cx, int64_t cy, int64_t cz, int64_t s,
   az.set(cz, r, box_.nz);
   const auto s32 = int32_t(s);
   for (int64_t kz = az.k0; kz <= az.k1; ++kz) {
-    if (az.block(kz) >= s || owner(kz * 4) != t) continue;
+    if (az.block(kz) >= s) continue;
     for (int64_t ky = ay.k0; ky <= ay.k1; ++ky) {
       const int64_t rest = s - az.block(kz) - ay.block(ky);  // the row of blocks meets the ball where dx^2 < rest
       if (rest <= 0) continue;

@@ -34,7 +34,7 @@ TEST(OpenVoxels, paintsEveryOpenVoxelOfEachBallOnceAndOnlyByItsOwner) {
         open.paintBall(t, cx, cy, cz, s, [&](int64_t x, int64_t y, int64_t z) {
           const size_t i = index(x, y, z);
           EXPECT_EQ(got[i], -1) << x << " " << y << " " << z << " painted twice";
-          EXPECT_EQ(open.owner(z / 16), t);
+          EXPECT_EQ(open.owner(x / 64, y / 64, z / 64), t);
           got[i] = ball;
         });
     }
