@@ -5,10 +5,12 @@
 // per open node of its 4 x 4 x 4 nodes (64^3 voxels). A ball descends only into blocks, nodes and bricks that hold
 // open voxels and meet it, so a ball inside material already painted costs a few words.
 //
-// Threads own blocks in a checkerboard (block (kx, ky, kz) belongs to thread (kx + ky + kz) mod threads, so that the
-// work is shared whatever the part's shape and orientation), and each has its own block words, so every word is
-// written by one thread: paint(t, ...) touches only thread t's voxels, and a block is walked by one thread only (a
-// ball that meets no open block of thread t costs that thread one look at the block words of its box).
+// Threads own layers of blocks (64 voxel slices, round robin) across Z, or across Y when the box has more blocks
+// along Y (a part thinner than a block layer along Z is still shared), and each has its own block words, so every
+// word is written by one thread: paint(t, ...) touches only thread t's voxels, and a block is walked by one thread
+// only (a ball that meets no open block of thread t costs that thread one look at the block words of its box). Whole
+// layers keep each thread's words and voxels in runs of memory of their own: owning blocks in a checkerboard instead
+// took 30% more time at R = 1000, the threads writing the same cache lines where blocks meet.
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -37,7 +39,7 @@ class OpenVoxels {
 
   bool anyOpen(int t) const { return open_[size_t(t)] > 0; }
   // The thread that owns block (kx, ky, kz) and every node, brick and voxel in it.
-  int owner(int64_t kx, int64_t ky, int64_t kz) const { return int((kx + ky + kz) % threads_); }
+  int owner(int64_t, int64_t ky, int64_t kz) const { return int((layers_in_y_ ? ky : kz) % threads_); }
 
  private:
   static int64_t sq(int64_t v) { return v * v; }
@@ -89,6 +91,7 @@ class OpenVoxels {
 
   Dims box_, b_, n_, k_;  // voxels, bricks, nodes, blocks
   int threads_;
+  bool layers_in_y_;
   std::vector<uint64_t> bricks_, nodes_;
   std::vector<std::vector<uint64_t>> blocks_;  // per thread
   std::vector<int64_t> open_;                  // open bricks per thread
@@ -105,6 +108,7 @@ OpenVoxels::OpenVoxels(Dims box, int threads, Filled&& filled)
       n_{(b_.nx + 3) / 4, (b_.ny + 3) / 4, (b_.nz + 3) / 4},
       k_{(n_.nx + 3) / 4, (n_.ny + 3) / 4, (n_.nz + 3) / 4},
       threads_(threads),
+      layers_in_y_(k_.ny > k_.nz),
       bricks_(size_t(b_.count()), 0),
       nodes_(size_t(n_.count()), 0),
       blocks_(size_t(threads), std::vector<uint64_t>(size_t(k_.count()), 0)),
@@ -197,7 +201,7 @@ void OpenVoxels::paintBall(int t, int64_t cx, int64_t cy, int64_t cz, int64_t s,
     if (az.block(kz) >= s) continue;
     for (int64_t ky = ay.k0; ky <= ay.k1; ++ky) {
       const int64_t rest = s - az.block(kz) - ay.block(ky);  // the row of blocks meets the ball where dx^2 < rest
-      if (rest <= 0) continue;
+      if (rest <= 0 || owner(0, ky, kz) != t) continue;
       int64_t w = int64_t(std::sqrt(double(rest)));
       while (w > 0 && w * w >= rest) --w;
       while ((w + 1) * (w + 1) < rest) ++w;

@@ -10,36 +10,38 @@ namespace vox::analysis_detail {
 namespace {
 
 // Balls painted through the bit pyramid reach exactly the open voxels a plain scan finds, each once, by the first
-// ball that covers it, whatever the box (not a multiple of the brick, node or block) and however many owners.
+// ball that covers it, whatever the box (not a multiple of the brick, node or block; owners by layers across Z, and
+// across Y where the box has more blocks along Y) and however many owners.
 TEST(OpenVoxels, paintsEveryOpenVoxelOfEachBallOnceAndOnlyByItsOwner) {
-  for (const int threads : {1, 2, 3}) {
-    const Dims box{70, 37, 133};
-    std::mt19937 rng(uint32_t(11 + threads));
-    std::vector<uint8_t> filled(size_t(box.count()));
-    for (auto& f : filled) f = rng() % 5 != 0;
-    auto index = [&](int64_t x, int64_t y, int64_t z) { return size_t(x + box.nx * (y + int64_t(box.ny) * z)); };
-    OpenVoxels open(box, threads, [&](int64_t x, int64_t y, int64_t z) { return filled[index(x, y, z)] != 0; });
-    std::vector<int32_t> got(filled.size(), -1), want(filled.size(), -1);
-    for (int ball = 0; ball < 60; ++ball) {
-      const int64_t cx = int64_t(rng() % 90) - 10, cy = int64_t(rng() % 50) - 6, cz = int64_t(rng() % 150) - 8;
-      const int64_t s = 1 + int64_t(rng() % 700);
-      for (int64_t z = 0; z < box.nz; ++z)
-        for (int64_t y = 0; y < box.ny; ++y)
-          for (int64_t x = 0; x < box.nx; ++x) {
+  for (const Dims box : {Dims{70, 37, 133}, Dims{45, 140, 30}})
+    for (const int threads : {1, 2, 3}) {
+      std::mt19937 rng(uint32_t(11 + threads));
+      std::vector<uint8_t> filled(size_t(box.count()));
+      for (auto& f : filled) f = rng() % 5 != 0;
+      auto index = [&](int64_t x, int64_t y, int64_t z) { return size_t(x + box.nx * (y + int64_t(box.ny) * z)); };
+      OpenVoxels open(box, threads, [&](int64_t x, int64_t y, int64_t z) { return filled[index(x, y, z)] != 0; });
+      std::vector<int32_t> got(filled.size(), -1), want(filled.size(), -1);
+      for (int ball = 0; ball < 60; ++ball) {
+        const int64_t cx = int64_t(rng() % uint32_t(box.nx + 20)) - 10, cy = int64_t(rng() % uint32_t(box.ny + 12)) - 6,
+                      cz = int64_t(rng() % uint32_t(box.nz + 16)) - 8;
+        const int64_t s = 1 + int64_t(rng() % 700);
+        for (int64_t z = 0; z < box.nz; ++z)
+          for (int64_t y = 0; y < box.ny; ++y)
+            for (int64_t x = 0; x < box.nx; ++x) {
+              const size_t i = index(x, y, z);
+              if (filled[i] && want[i] < 0 && (x - cx) * (x - cx) + (y - cy) * (y - cy) + (z - cz) * (z - cz) < s)
+                want[i] = ball;
+            }
+        for (int t = 0; t < threads; ++t)
+          open.paintBall(t, cx, cy, cz, s, [&](int64_t x, int64_t y, int64_t z) {
             const size_t i = index(x, y, z);
-            if (filled[i] && want[i] < 0 && (x - cx) * (x - cx) + (y - cy) * (y - cy) + (z - cz) * (z - cz) < s)
-              want[i] = ball;
-          }
-      for (int t = 0; t < threads; ++t)
-        open.paintBall(t, cx, cy, cz, s, [&](int64_t x, int64_t y, int64_t z) {
-          const size_t i = index(x, y, z);
-          EXPECT_EQ(got[i], -1) << x << " " << y << " " << z << " painted twice";
-          EXPECT_EQ(open.owner(x / 64, y / 64, z / 64), t);
-          got[i] = ball;
-        });
+            EXPECT_EQ(got[i], -1) << x << " " << y << " " << z << " painted twice";
+            EXPECT_EQ(open.owner(x / 64, y / 64, z / 64), t);
+            got[i] = ball;
+          });
+      }
+      EXPECT_EQ(got, want) << threads << " owners, box " << box.nx << " x " << box.ny << " x " << box.nz;
     }
-    EXPECT_EQ(got, want) << threads << " owners";
-  }
 }
 
 }  // namespace
