@@ -145,7 +145,12 @@ class RidgeOffsets {
   const std::vector<Offset>& forGradient(int64_t gx, int64_t gy, int64_t gz) const {
     const int64_t m = std::max({std::abs(gx), std::abs(gy), std::abs(gz)});
     if (m == 0) return all_;
-    auto q = [m](int64_t g) { return int((2 * kSteps * g + (g < 0 ? -m : m)) / (2 * m)); };  // round(kSteps g / m)
+    // round(kSteps g / m), one division for the three (which list a centre tries only changes how soon it is dropped)
+    const double scale = double(kSteps) / double(m);
+    auto q = [scale](int64_t g) {
+      const double v = double(g) * scale;
+      return int(v + (v < 0 ? -0.5 : 0.5));
+    };
     return lists_[size_t(key(q(gx), q(gy), q(gz)))];
   }
 
