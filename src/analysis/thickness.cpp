@@ -183,38 +183,63 @@ ThicknessStats statistics(const DistanceField& r, int32_t bins) {
   st.counts.assign(size_t(bins), 0);
   const Dims d = r.boxDims();
   if (d.count() == 0) return st;
-  struct Slice {
-    int64_t count = 0;
-    double sum = 0.0;
-    uint32_t min = UINT32_MAX;
-    std::vector<int64_t> counts;
-  };
-  std::vector<Slice> slices(size_t(d.nz));
   const int threads = threadsFor(d.count() / 4);
   const int64_t plane = int64_t(d.nx) * d.ny;
-  parallelChunks(0, d.nz, 1, threads, [&](int, int64_t zb, int64_t ze) {
-    for (int64_t z = zb; z < ze; ++z) {
-      Slice& sl = slices[size_t(z)];
-      sl.counts.assign(size_t(bins), 0);
-      const uint32_t* v = r.data() + z * plane;
-      for (int64_t i = 0; i < plane; ++i) {
-        if (!v[i]) continue;
-        const double t = 2.0 * std::sqrt(double(v[i])) * h;
-        ++sl.count;
-        sl.sum += t;
-        sl.min = std::min(sl.min, v[i]);
-        const int64_t b = max_t > 0 ? int64_t(t / max_t * bins) : 0;
-        ++sl.counts[size_t(std::clamp<int64_t>(b, 0, bins - 1))];
-      }
-    }
-  });
+  auto binOf = [&](double t) {
+    const int64_t b = max_t > 0 ? int64_t(t / max_t * bins) : 0;
+    return size_t(std::clamp<int64_t>(b, 0, bins - 1));
+  };
   uint32_t mn = UINT32_MAX;
   double sum = 0.0;
-  for (const Slice& sl : slices) {  // in order: the sums do not depend on the thread split
-    st.voxels += sl.count;
-    sum += sl.sum;
-    mn = std::min(mn, sl.min);
-    for (int32_t b = 0; b < bins; ++b) st.counts[size_t(b)] += sl.counts[size_t(b)];
+  if (r.maxSquared() <= (uint32_t(1) << 22)) {
+    // The voxels counted by value, each thread on its own (4 MiB at most), then every value's thickness once, in
+    // order: exact counts, and sums that do not depend on the thread split.
+    std::vector<std::vector<int64_t>> per(static_cast<size_t>(threads),
+                                          std::vector<int64_t>(size_t(r.maxSquared()) + 1, 0));
+    parallelChunks(0, d.nz, 1, threads, [&](int t, int64_t zb, int64_t ze) {
+      std::vector<int64_t>& count = per[size_t(t)];
+      const uint32_t* v = r.data() + zb * plane;
+      for (int64_t i = 0; i < (ze - zb) * plane; ++i) ++count[v[i]];
+    });
+    for (size_t value = 1; value <= r.maxSquared(); ++value) {
+      int64_t n = 0;
+      for (const auto& count : per) n += count[value];
+      if (!n) continue;
+      const double t = 2.0 * std::sqrt(double(value)) * h;
+      st.voxels += n;
+      sum += double(n) * t;
+      mn = std::min(mn, uint32_t(value));
+      st.counts[binOf(t)] += n;
+    }
+  } else {
+    struct Slice {
+      int64_t count = 0;
+      double sum = 0.0;
+      uint32_t min = UINT32_MAX;
+      std::vector<int64_t> counts;
+    };
+    std::vector<Slice> slices(size_t(d.nz));
+    parallelChunks(0, d.nz, 1, threads, [&](int, int64_t zb, int64_t ze) {
+      for (int64_t z = zb; z < ze; ++z) {
+        Slice& sl = slices[size_t(z)];
+        sl.counts.assign(size_t(bins), 0);
+        const uint32_t* v = r.data() + z * plane;
+        for (int64_t i = 0; i < plane; ++i) {
+          if (!v[i]) continue;
+          const double t = 2.0 * std::sqrt(double(v[i])) * h;
+          ++sl.count;
+          sl.sum += t;
+          sl.min = std::min(sl.min, v[i]);
+          ++sl.counts[binOf(t)];
+        }
+      }
+    });
+    for (const Slice& sl : slices) {  // in order: the sums do not depend on the thread split
+      st.voxels += sl.count;
+      sum += sl.sum;
+      mn = std::min(mn, sl.min);
+      for (int32_t b = 0; b < bins; ++b) st.counts[size_t(b)] += sl.counts[size_t(b)];
+    }
   }
   if (st.voxels > 0) {
     st.min = 2.0 * std::sqrt(double(mn)) * h;

@@ -123,6 +123,24 @@ TEST(Thickness, largeGridMatchesNaivePainting) {
       for (int x = 0; x < g.nx(); ++x)
         if (t->radius.squared(x, y, z) != expect[size_t(g.index(x, y, z))]) ++mismatches;
   EXPECT_EQ(mismatches, 0);
+  // The statistics of a field large enough to be counted on several threads.
+  int64_t voxels = 0;
+  double sum = 0;
+  uint32_t mn = UINT32_MAX, mx = 0;
+  for (const uint32_t e : expect) {
+    if (!e) continue;
+    ++voxels;
+    sum += 2 * std::sqrt(double(e));
+    mn = std::min(mn, e);
+    mx = std::max(mx, e);
+  }
+  EXPECT_EQ(t->stats.voxels, voxels);
+  EXPECT_NEAR(t->stats.mean, sum / double(voxels), 1e-9);
+  EXPECT_DOUBLE_EQ(t->stats.min, 2 * std::sqrt(double(mn)));
+  EXPECT_DOUBLE_EQ(t->stats.max, 2 * std::sqrt(double(mx)));
+  int64_t total = 0;
+  for (const int64_t c : t->stats.counts) total += c;
+  EXPECT_EQ(total, voxels);
 }
 
 // An axis-aligned plate n voxels thick reads n when n is even, n + 1 when n is odd (docs/accuracy.md).
