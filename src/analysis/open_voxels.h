@@ -49,11 +49,12 @@ class OpenVoxels {
   static int bit(int64_t x, int64_t y, int64_t z) { return int((x & 3) + 4 * (y & 3) + 16 * (z & 3)); }
 
   // One axis of a ball: for the blocks its box meets, the squared distance from the centre's coordinate c to each
-  // block, node and brick along the axis (nearest voxel; farthest too for bricks) and to each voxel, filled once per
-  // ball so that the walk reads the four values of a cell as one vector.
+  // block, node and brick along the axis (nearest voxel; farthest too for bricks), filled once per ball so that the
+  // walk reads the four values of a cell as one vector. (A brick's voxels are worked out when it is tested: a table
+  // of them cost more than the bricks a ball tests.)
   struct Reach {
     int64_t k0 = 0, k1 = -1;  // blocks k0..k1
-    std::vector<int32_t> blocks, node_near, brick_near, brick_far, voxels;
+    std::vector<int32_t> blocks, node_near, brick_near, brick_far;
     void set(int64_t c, int64_t r, int64_t n) {
       k0 = std::max<int64_t>(0, c - r) >> 6;
       k1 = std::min<int64_t>(n - 1, c + r) >> 6;
@@ -62,9 +63,8 @@ class OpenVoxels {
       node_near.resize(count * 4);
       brick_near.resize(count * 16);
       brick_far.resize(count * 16);
-      voxels.resize(count * 64);
-      // Only what the walk can read is filled: every block and node of the box's blocks, the bricks of the nodes
-      // within r of c and the voxels within r + 3 (a brick the ball meets). 32-bit: coordinates are below 2^15.
+      // Only what the walk can read is filled: every block and node of the box's blocks and the bricks of the nodes
+      // within r of c. 32-bit: coordinates are below 2^15.
       const auto c32 = int32_t(c), base = int32_t(k0 * 64);
       auto near = [c32](int32_t a, int32_t b) {
         const int32_t d = std::max({a - c32, c32 - b, 0});
@@ -79,14 +79,11 @@ class OpenVoxels {
         const int32_t f = std::max(c32 - a, b - c32);
         brick_far[size_t(i)] = f * f;
       }
-      const auto v0 = int32_t(std::max(k0 * 64, c - r - 3)), v1 = int32_t(std::min(k1 * 64 + 63, c + r + 3));
-      for (int32_t v = v0; v <= v1; ++v) voxels[size_t(v - base)] = (v - c32) * (v - c32);
     }
     int64_t block(int64_t k) const { return blocks[size_t(k - k0)]; }
     const int32_t* nodeNear(int64_t node) const { return node_near.data() + (node - k0 * 4); }
     const int32_t* brickNear(int64_t brick) const { return brick_near.data() + (brick - k0 * 16); }
     const int32_t* brickFar(int64_t brick) const { return brick_far.data() + (brick - k0 * 16); }
-    const int32_t* voxel(int64_t v) const { return voxels.data() + (v - k0 * 64); }
   };
 
   Dims box_, b_, n_, k_;  // voxels, bricks, nodes, blocks
@@ -225,7 +222,13 @@ void OpenVoxels::paintBall(int t, int64_t cx, int64_t cy, int64_t cz, int64_t s,
             uint64_t taken = brick;
             if (!(whole >> j & 1)) {
               if (nearestBitBox(brick, cx, cy, cz, bx * 4, by * 4, bz * 4) >= s) continue;
-              taken &= cellMask(ax.voxel(bx * 4), ay.voxel(by * 4), az.voxel(bz * 4), s32);
+              int32_t vx[4], vy[4], vz[4];
+              for (int q = 0; q < 4; ++q) {
+                vx[q] = int32_t((bx * 4 + q - cx) * (bx * 4 + q - cx));
+                vy[q] = int32_t((by * 4 + q - cy) * (by * 4 + q - cy));
+                vz[q] = int32_t((bz * 4 + q - cz) * (bz * 4 + q - cz));
+              }
+              taken &= cellMask(vx, vy, vz, s32);
             }
             if (!taken) continue;
             for (uint64_t v = taken; v; v &= v - 1) {
