@@ -284,6 +284,7 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
         for (int64_t x0 = 0; x0 < nx; x0 += kTile)
           for (int64_t y = 0; y < ny; ++y) {
             const uint32_t* row = data + plane * z + nx * y;
+            const Offset* last = nullptr;  // the offset that held the previous voxel's ball: often this one's too
             for (int64_t x = x0; x < std::min(nx, x0 + kTile); ++x) {
               const int64_t s = row[x];
               if (!s) continue;
@@ -291,11 +292,13 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
               const int64_t K = LatticeCover::kReach;
               if (x >= K && y >= K && z >= K && x < nx - K && y < ny - K && z < nz - K) {  // no offset leaves the box
                 const uint32_t* here = row + x;
+                if (last && cover.inside(s, here[last->delta], *last)) continue;
                 const int64_t gx = int64_t(here[1]) - here[-1], gy = int64_t(here[nx]) - here[-nx],
                               gz = int64_t(here[plane]) - here[-plane];
                 for (const Offset& o : ridge.forGradient(gx, gy, gz)) {
                   if (cover.inside(s, here[o.delta], o)) {
                     inside = true;
+                    last = &o;
                     break;
                   }
                 }
