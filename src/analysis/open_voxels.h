@@ -224,9 +224,9 @@ void OpenVoxels::paintBall(int t, int64_t cx, int64_t cy, int64_t cz, int64_t s,
               if (nearestBitBox(brick, cx, cy, cz, bx * 4, by * 4, bz * 4) >= s) continue;
               int32_t vx[4], vy[4], vz[4];
               for (int q = 0; q < 4; ++q) {
-                vx[q] = int32_t((bx * 4 + q - cx) * (bx * 4 + q - cx));
-                vy[q] = int32_t((by * 4 + q - cy) * (by * 4 + q - cy));
-                vz[q] = int32_t((bz * 4 + q - cz) * (bz * 4 + q - cz));
+                vx[q] = int32_t(sq(bx * 4 + q - cx));
+                vy[q] = int32_t(sq(by * 4 + q - cy));
+                vz[q] = int32_t(sq(bz * 4 + q - cz));
               }
               taken &= cellMask(vx, vy, vz, s32);
             }

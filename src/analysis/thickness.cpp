@@ -191,7 +191,7 @@ ThicknessStats statistics(const DistanceField& r, int32_t bins) {
   };
   uint32_t mn = UINT32_MAX;
   double sum = 0.0;
-  if (r.maxSquared() <= (uint32_t(1) << 22)) {
+  if (r.maxSquared() <= (uint32_t(1) << 19)) {
     // The voxels counted by value, each thread on its own (4 MiB at most), then every value's thickness once, in
     // order: exact counts, and sums that do not depend on the thread split.
     std::vector<std::vector<int64_t>> per(static_cast<size_t>(threads),
