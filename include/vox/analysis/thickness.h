@@ -44,10 +44,12 @@ struct Thickness {
 };
 
 // Local thickness of every filled voxel from its distance field. A ball that lies inside the larger ball of a voxel
-// within two voxels (tested exactly on the voxel centres) is skipped; the rest are painted largest first, each voxel
-// once, threads owning slices. Cost: about the sum of the painted balls' cross-sections (rows), which on bulky parts
-// is large (docs/accuracy.md); memory: a copy of the field, 1 bit per box voxel and 12 bytes per ball painted (the
-// rvalue overload reuses the field: pass std::move(field) when it is not needed afterwards; it is lost on error).
+// within nine voxels on each axis (tested exactly on the voxel centres) is skipped; the rest are painted largest
+// first, each voxel once, threads owning layers of 64-voxel blocks. Cost: about the open voxels' bricks along each
+// kept ball's boundary, which on bulky parts at high resolution is large (docs/performance.md); memory: a copy of the
+// field, about 1 bit per box voxel, 12 bytes per kept ball and a table of 438 bytes per squared radius up to the
+// largest (the rvalue overload reuses the field: pass std::move(field) when it is not needed afterwards; it is lost
+// on error).
 Result<Thickness> computeThickness(const DistanceField& distance, const ThicknessParams& params = {},
                                    const ProgressFn& progress = {});
 Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessParams& params = {},
