@@ -61,6 +61,9 @@ class NameWalk {
         } else if (pos_ > at + 1) {  // a reference
           if (Status st = afterValue(name); !st.ok()) return st;
         }
+      } else if (c == ',' || c == '(') {
+        if (Status st = afterSeparator(name, c); !st.ok()) return st;
+        ++pos_;
       } else if (c == '$' || c == '*') {
         ++pos_;
         if (Status st = afterValue(name); !st.ok()) return st;
@@ -112,6 +115,36 @@ class NameWalk {
                                                                           : "byte " + std::to_string(uint8_t(c)));
         return makeError(ErrorCode::kParse, name + ":" + std::to_string(line) + ": malformed STEP file: " + what +
                                                 " follows a value where ',' or ')' belongs");
+      }
+    }
+    return Ok{};
+  }
+
+  // After ',' (and after '(' ) a parameter must come, $ when it is left out: ",," ",)" and "(," are syntax errors.
+  // Open CASCADE 7.6 reads some files with such holes into a model that holds a null entity and crashes taking it
+  // (found by tests/fuzz/fuzz_mesh_file.cpp). "()" (an empty list) is allowed.
+  Status afterSeparator(const std::string& name, char sep) const {
+    size_t k = pos_ + 1;
+    uint64_t line = line_;
+    while (k < text_.size()) {
+      const char c = text_[k];
+      if (c == '\n') {
+        ++line;
+        ++k;
+      } else if (isBlank(uint8_t(c))) {
+        ++k;
+      } else if (c == '/' && k + 1 < text_.size() && text_[k + 1] == '*') {
+        const size_t end = text_.find("*/", k + 2);
+        const size_t stop = end == std::string_view::npos ? text_.size() : end + 2;
+        line += uint64_t(std::count(text_.begin() + std::ptrdiff_t(k), text_.begin() + std::ptrdiff_t(stop), '\n'));
+        k = stop;
+      } else {
+        if (c == ',' || (sep == ',' && c == ')')) {
+          return makeError(ErrorCode::kParse, name + ":" + std::to_string(line) +
+                                                  ": malformed STEP file: a parameter is missing after '" +
+                                                  std::string(1, sep) + "' (write $ for one left out)");
+        }
+        return Ok{};
       }
     }
     return Ok{};

@@ -378,6 +378,27 @@ TEST(CadFile, aValueWithoutItsCommaIsRefusedBeforeOpenCascadeRecoversFromIt) {
                                    ": malformed STEP file: byte 171 follows a value where ',' or ')' belongs");
 }
 
+TEST(CadFile, aMissingParameterIsRefusedBeforeOpenCascadeTakesANullEntity) {
+  // Found by the fuzzer: with parameters left out (",,") Open CASCADE 7.6 can read a null entity into the model and
+  // crash adding it. Refused at the line; an empty list "()" stays allowed (the box itself has them).
+  test::TempDir tmp;
+  test::writeStep(tmp / "box.step", {{CadShape::kBox, {0, 0, 0}, {1, 1, 1}}});
+  const std::string step = test::readFile(tmp / "box.step");
+  ASSERT_TRUE(loadMeshFile(tmp / "box.step").ok());
+  for (const std::string& hole : {std::string("(1.5,,2.5)"), std::string("(1.5,2.5,)"), std::string("(,1.5,2.5)")}) {
+    std::string holed = step;
+    holed.insert(holed.rfind("ENDSEC;"), "#999999 = CARTESIAN_POINT('',\n" + hole + ");\n");
+    test::writeFile(tmp / "holed.step", holed);
+    auto r = loadMeshFile(tmp / "holed.step");
+    ASSERT_FALSE(r.ok()) << hole;
+    const std::string sep = hole[1] == ',' ? "(" : ",";
+    EXPECT_EQ(r.error().message, (tmp / "holed.step").string() + ":" + std::to_string(lineOf(holed, "#999999") + 1) +
+                                     ": malformed STEP file: a parameter is missing after '" + sep +
+                                     "' (write $ for one left out)")
+        << hole;
+  }
+}
+
 TEST(CadFile, anOrientedEdgeLeadingRoundToItselfIsRefused) {
   // Found by the fuzzer: Open CASCADE follows oriented edges by recursion and overflows the stack on a cycle.
   test::TempDir tmp;

@@ -149,6 +149,9 @@ const Refusal kRefusals[] = {
      "zip_without_model.3mf: not a 3MF file: the zip holds no 3D model part (3D/3dmodel.model)"},
     {"truncated.step", ErrorCode::kParse,
      "truncated.step: STEP file truncated: it does not end with 'END-ISO-10303-21;'"},
+    {"step_missing_parameter.step", ErrorCode::kParse,
+     "step_missing_parameter.step:474: malformed STEP file: a parameter is missing after ',' (write $ for one left "
+     "out)"},
     {"step_named.ply", ErrorCode::kParse,
      "step_named.ply: not a PLY file: it looks like a STEP file (name it .step to read it as one)"},
     {"off_bad_index.off", ErrorCode::kParse, "off_bad_index.off:16: OFF face 6 refers to vertex '8' of 8"},
