@@ -88,12 +88,9 @@ class NameWalk {
            c == '-';
   }
 
-  // After a value (number, enumeration, string, reference, $ or *), past blank space and comments, comes ',', ')' or
-  // ';'. Anything else is a syntax error, which Open CASCADE recovers from at a cost growing with the square of the
-  // values that follow (numbers separated by spaces: 40,000 of them took 7.6 s and 5.2 GB).
-  Status afterValue(const std::string& name) const {
-    size_t k = pos_;
-    uint64_t line = line_;
+  // The first character from k on that is neither blank space nor in a comment (text_.size() at the end), and the
+  // line it is on, counted from `line` at k.
+  size_t nextToken(size_t k, uint64_t& line) const {
     while (k < text_.size()) {
       const char c = text_[k];
       if (c == '\n') {
@@ -106,46 +103,40 @@ class NameWalk {
         const size_t stop = end == std::string_view::npos ? text_.size() : end + 2;
         line += uint64_t(std::count(text_.begin() + std::ptrdiff_t(k), text_.begin() + std::ptrdiff_t(stop), '\n'));
         k = stop;
-      } else if (c == ',' || c == ')' || c == ';') {
-        return Ok{};
       } else {
-        std::string what = isWord(uint8_t(c)) || c == '\'' || c == '#' || c == '"'
-                               ? "another value"
-                               : (uint8_t(c) >= 0x20 && uint8_t(c) < 0x7f ? "'" + std::string(1, c) + "'"
-                                                                          : "byte " + std::to_string(uint8_t(c)));
-        return makeError(ErrorCode::kParse, name + ":" + std::to_string(line) + ": malformed STEP file: " + what +
-                                                " follows a value where ',' or ')' belongs");
+        return k;
       }
     }
-    return Ok{};
+    return k;
+  }
+
+  // After a value (number, enumeration, string, reference, $ or *), past blank space and comments, comes ',', ')' or
+  // ';'. Anything else is a syntax error, which Open CASCADE recovers from at a cost growing with the square of the
+  // values that follow (numbers separated by spaces: 40,000 of them took 7.6 s and 5.2 GB).
+  Status afterValue(const std::string& name) const {
+    uint64_t line = line_;
+    const size_t k = nextToken(pos_, line);
+    if (k >= text_.size()) return Ok{};
+    const char c = text_[k];
+    if (c == ',' || c == ')' || c == ';') return Ok{};
+    std::string what = isWord(uint8_t(c)) || c == '\'' || c == '#' || c == '"'
+                           ? "another value"
+                           : (uint8_t(c) >= 0x20 && uint8_t(c) < 0x7f ? "'" + std::string(1, c) + "'"
+                                                                      : "byte " + std::to_string(uint8_t(c)));
+    return makeError(ErrorCode::kParse, name + ":" + std::to_string(line) + ": malformed STEP file: " + what +
+                                            " follows a value where ',' or ')' belongs");
   }
 
   // After ',' (and after '(' ) a parameter must come, $ when it is left out: ",," ",)" and "(," are syntax errors.
   // Open CASCADE 7.6 reads some files with such holes into a model that holds a null entity and crashes taking it
   // (found by tests/fuzz/fuzz_mesh_file.cpp). "()" (an empty list) is allowed.
   Status afterSeparator(const std::string& name, char sep) const {
-    size_t k = pos_ + 1;
     uint64_t line = line_;
-    while (k < text_.size()) {
-      const char c = text_[k];
-      if (c == '\n') {
-        ++line;
-        ++k;
-      } else if (isBlank(uint8_t(c))) {
-        ++k;
-      } else if (c == '/' && k + 1 < text_.size() && text_[k + 1] == '*') {
-        const size_t end = text_.find("*/", k + 2);
-        const size_t stop = end == std::string_view::npos ? text_.size() : end + 2;
-        line += uint64_t(std::count(text_.begin() + std::ptrdiff_t(k), text_.begin() + std::ptrdiff_t(stop), '\n'));
-        k = stop;
-      } else {
-        if (c == ',' || (sep == ',' && c == ')')) {
-          return makeError(ErrorCode::kParse, name + ":" + std::to_string(line) +
-                                                  ": malformed STEP file: a parameter is missing after '" +
-                                                  std::string(1, sep) + "' (write $ for one left out)");
-        }
-        return Ok{};
-      }
+    const size_t k = nextToken(pos_ + 1, line);
+    if (k < text_.size() && (text_[k] == ',' || (sep == ',' && text_[k] == ')'))) {
+      return makeError(ErrorCode::kParse, name + ":" + std::to_string(line) +
+                                              ": malformed STEP file: a parameter is missing after '" +
+                                              std::string(1, sep) + "' (write $ for one left out)");
     }
     return Ok{};
   }
