@@ -21,31 +21,86 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+// The AVX-512 walk is built with GCC or Clang for x86-64 and taken only where the processor has AVX-512.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define VOX_OPEN_VOXELS_AVX512 1
+#include <immintrin.h>
+#else
+#define VOX_OPEN_VOXELS_AVX512 0
+#endif
 
 #include "vox/core/voxel_grid.h"
 #include "vox/core/parallel.h"
 
 namespace vox::analysis_detail {
 
+class OpenVoxels;
+// The ball's walk for each kind of processor (analysis/open_voxels_walk.inc); OpenVoxels::paintBall picks one.
+#if VOX_OPEN_VOXELS_AVX512
+#define VOX_WALK_AVX512_ATTRIBUTE __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq,popcnt,bmi,bmi2,lzcnt")))
+#else
+#define VOX_WALK_AVX512_ATTRIBUTE
+#endif
+namespace open_voxels_sse2 {
+template <class Paint>
+void paintBall(OpenVoxels& o, int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, Paint&& paint);
+}
+namespace open_voxels_avx512 {
+template <class Paint>
+VOX_WALK_AVX512_ATTRIBUTE void paintBall(OpenVoxels& o, int t, int64_t cx, int64_t cy, int64_t cz, int64_t s,
+                                         Paint&& paint);
+}
+
 class OpenVoxels {
  public:
-  // Opens every voxel of the box (nx, ny, nz) for which filled(x, y, z) is true; `threads` owners.
+  // Which walk paintBall takes: AVX-512 where the processor has it (kAuto), or the SSE2 one on any processor.
+  enum class Simd { kAuto, kSse2, kAvx512 };
+  static bool avx512Available() {
+#if VOX_OPEN_VOXELS_AVX512
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+           __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("bmi2") &&
+           __builtin_cpu_supports("popcnt");
+#else
+    return false;
+#endif
+  }
+
+  // Opens every voxel of the box (nx, ny, nz) for which filled(x, y, z) is true; `threads` owners. kAvx512 where
+  // the processor lacks it takes the SSE2 walk.
   template <class Filled>
-  OpenVoxels(Dims box, int threads, Filled&& filled);
+  OpenVoxels(Dims box, int threads, Filled&& filled, Simd simd = Simd::kAuto);
 
   // Calls paint(x, y, z) once for every open voxel of thread t with |p - c|^2 < s and closes it.
   template <class Paint>
-  void paintBall(int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, Paint&& paint);
+  void paintBall(int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, Paint&& paint) {
+    if (avx512_) {
+      open_voxels_avx512::paintBall(*this, t, cx, cy, cz, s, paint);
+    } else {
+      open_voxels_sse2::paintBall(*this, t, cx, cy, cz, s, paint);
+    }
+  }
+  bool usesAvx512() const { return avx512_; }
 
   bool anyOpen(int t) const { return open_[size_t(t)] > 0; }
   // The thread that owns block (kx, ky, kz) and every node, brick and voxel in it.
   int owner(int64_t, int64_t ky, int64_t kz) const { return int((layers_in_y_ ? ky : kz) % threads_); }
 
  private:
-  static int64_t sq(int64_t v) { return v * v; }
-  size_t brickIndex(int64_t bx, int64_t by, int64_t bz) const { return size_t(bx + b_.nx * (by + b_.ny * bz)); }
-  size_t nodeIndex(int64_t nx, int64_t ny, int64_t nz) const { return size_t(nx + n_.nx * (ny + n_.ny * nz)); }
+  template <class Paint>
+  friend void open_voxels_sse2::paintBall(OpenVoxels&, int, int64_t, int64_t, int64_t, int64_t, Paint&&);
+  template <class Paint>
+  friend VOX_WALK_AVX512_ATTRIBUTE void open_voxels_avx512::paintBall(OpenVoxels&, int, int64_t, int64_t, int64_t,
+                                                                      int64_t, Paint&&);
+
+  // Words are stored block by block: a block's 64 node words together, and a node's 64 brick words together (the
+  // bricks of one node are what a ball's walk reads after testing the node, 512 bytes in a row).
   size_t blockIndex(int64_t kx, int64_t ky, int64_t kz) const { return size_t(kx + k_.nx * (ky + k_.ny * kz)); }
+  size_t nodeIndex(int64_t nx, int64_t ny, int64_t nz) const {
+    return blockIndex(nx >> 2, ny >> 2, nz >> 2) * 64 + size_t(bit(nx, ny, nz));
+  }
+  size_t brickIndex(int64_t bx, int64_t by, int64_t bz) const {
+    return nodeIndex(bx >> 2, by >> 2, bz >> 2) * 64 + size_t(bit(bx, by, bz));
+  }
   static int bit(int64_t x, int64_t y, int64_t z) { return int((x & 3) + 4 * (y & 3) + 16 * (z & 3)); }
 
   // One axis of a ball: for the blocks its box meets, the squared distance from the centre's coordinate c to each
@@ -89,6 +144,7 @@ class OpenVoxels {
   Dims box_, b_, n_, k_;  // voxels, bricks, nodes, blocks
   int threads_;
   bool layers_in_y_;
+  bool avx512_;
   std::vector<uint64_t> bricks_, nodes_;
   std::vector<std::vector<uint64_t>> blocks_;  // per thread
   std::vector<int64_t> open_;                  // open bricks per thread
@@ -99,15 +155,16 @@ class OpenVoxels {
 };
 
 template <class Filled>
-OpenVoxels::OpenVoxels(Dims box, int threads, Filled&& filled)
+OpenVoxels::OpenVoxels(Dims box, int threads, Filled&& filled, Simd simd)
     : box_(box),
       b_{(box.nx + 3) / 4, (box.ny + 3) / 4, (box.nz + 3) / 4},
       n_{(b_.nx + 3) / 4, (b_.ny + 3) / 4, (b_.nz + 3) / 4},
       k_{(n_.nx + 3) / 4, (n_.ny + 3) / 4, (n_.nz + 3) / 4},
       threads_(threads),
       layers_in_y_(k_.ny > k_.nz),
-      bricks_(size_t(b_.count()), 0),
-      nodes_(size_t(n_.count()), 0),
+      avx512_(simd != Simd::kSse2 && avx512Available()),
+      bricks_(size_t(k_.count()) * 64 * 64, 0),
+      nodes_(size_t(k_.count()) * 64, 0),
       blocks_(size_t(threads), std::vector<uint64_t>(size_t(k_.count()), 0)),
       open_(size_t(threads), 0),
       reach_(size_t(threads)) {
@@ -128,123 +185,29 @@ OpenVoxels::OpenVoxels(Dims box, int threads, Filled&& filled)
       }
 }
 
-// The bits (i + 4j + 16k) of a 4 x 4 x 4 cell for which ax[i] + ay[j] + az[k] < s, without branches. Every value
-// is a squared distance within a box of at most kMaxDim voxels a side, so 32-bit lanes hold it.
-inline uint64_t cellMask(const int32_t* ax, const int32_t* ay, const int32_t* az, int32_t s) {
-  uint64_t m = 0;
-#if defined(__SSE2__)
-  const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(ax));
-  for (int k = 0; k < 4; ++k)
-    for (int j = 0; j < 4; ++j) {
-      const __m128i rem = _mm_set1_epi32(s - ay[j] - az[k]);
-      const auto row = uint64_t(uint32_t(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpgt_epi32(rem, x)))));
-      m |= row << (4 * j + 16 * k);
-    }
+namespace open_voxels_sse2 {
+#define VOX_WALK_AVX512 0
+#define VOX_WALK_TARGET
+#include "analysis/open_voxels_walk.inc"  // IWYU pragma: keep
+#undef VOX_WALK_TARGET
+#undef VOX_WALK_AVX512
+}  // namespace open_voxels_sse2
+
+#if VOX_OPEN_VOXELS_AVX512
+namespace open_voxels_avx512 {
+#define VOX_WALK_AVX512 1
+#define VOX_WALK_TARGET VOX_WALK_AVX512_ATTRIBUTE
+#include "analysis/open_voxels_walk.inc"  // IWYU pragma: keep
+#undef VOX_WALK_TARGET
+#undef VOX_WALK_AVX512
+}  // namespace open_voxels_avx512
 #else
-  for (int k = 0; k < 4; ++k)
-    for (int j = 0; j < 4; ++j) {
-      const int32_t rem = s - ay[j] - az[k];
-      const uint64_t row =
-          uint64_t(ax[0] < rem) | uint64_t(ax[1] < rem) << 1 | uint64_t(ax[2] < rem) << 2 | uint64_t(ax[3] < rem) << 3;
-      m |= row << (4 * j + 16 * k);
-    }
-#endif
-  return m;
-}
-
-// Squared distance from c to the nearest set bit's voxel of a brick at (x0, y0, z0), along each axis summed: the
-// brick's open voxels lie in the box their bits span, so a ball that does not reach that box takes none of them.
-inline int64_t nearestBitBox(uint64_t bits, int64_t cx, int64_t cy, int64_t cz, int64_t x0, int64_t y0, int64_t z0) {
-  uint64_t v = bits | bits >> 32;
-  v |= v >> 16;  // 16 bits: row y = j of any z in bits 4j..4j+3
-  const auto ym = uint32_t(((v & 0xF) != 0) | ((v >> 4 & 0xF) != 0) << 1 | ((v >> 8 & 0xF) != 0) << 2 |
-                           ((v >> 12 & 0xF) != 0) << 3);
-  const auto xm = uint32_t((v | v >> 4 | v >> 8 | v >> 12) & 0xF);
-  const auto zm = uint32_t((bits & 0xFFFF) != 0) | uint32_t((bits >> 16 & 0xFFFF) != 0) << 1 |
-                  uint32_t((bits >> 32 & 0xFFFF) != 0) << 2 | uint32_t((bits >> 48) != 0) << 3;
-  auto axis = [](uint32_t m, int64_t c, int64_t lo) {
-    const int64_t a = lo + std::countr_zero(m), b = lo + 31 - std::countl_zero(m);
-    const int64_t d = c < a ? a - c : c > b ? c - b : 0;
-    return d * d;
-  };
-  return axis(xm, cx, x0) + axis(ym, cy, y0) + axis(zm, cz, z0);
-}
-
+namespace open_voxels_avx512 {  // never taken: avx512Available() is false
 template <class Paint>
-void OpenVoxels::paintBall(int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, Paint&& paint) {
-  std::vector<uint64_t>& blocks = blocks_[size_t(t)];
-  int64_t r = int64_t(std::sqrt(double(s)));  // the ball reaches r < sqrt(s) voxels from its centre
-  while (r > 0 && r * r >= s) --r;
-  while ((r + 1) * (r + 1) < s) ++r;
-  {  // nothing to do when the thread has no open voxel in the blocks of the ball's box
-    const int64_t k0x = std::max<int64_t>(0, cx - r) >> 6, k1x = std::min<int64_t>(box_.nx - 1, cx + r) >> 6;
-    const int64_t k0y = std::max<int64_t>(0, cy - r) >> 6, k1y = std::min<int64_t>(box_.ny - 1, cy + r) >> 6;
-    const int64_t k0z = std::max<int64_t>(0, cz - r) >> 6, k1z = std::min<int64_t>(box_.nz - 1, cz + r) >> 6;
-    uint64_t any = 0;
-    for (int64_t kz = k0z; kz <= k1z; ++kz) {
-      for (int64_t ky = k0y; ky <= k1y; ++ky)
-        for (int64_t kx = k0x; kx <= k1x; ++kx) any |= blocks[blockIndex(kx, ky, kz)];
-    }
-    if (!any) return;
-  }
-  Reach& ax = reach_[size_t(t)].axis[0];
-  Reach& ay = reach_[size_t(t)].axis[1];
-  Reach& az = reach_[size_t(t)].axis[2];
-  ax.set(cx, r, box_.nx);
-  ay.set(cy, r, box_.ny);
-  az.set(cz, r, box_.nz);
-  const auto s32 = int32_t(s);
-  for (int64_t kz = az.k0; kz <= az.k1; ++kz) {
-    if (az.block(kz) >= s) continue;
-    for (int64_t ky = ay.k0; ky <= ay.k1; ++ky) {
-      const int64_t rest = s - az.block(kz) - ay.block(ky);  // the row of blocks meets the ball where dx^2 < rest
-      if (rest <= 0 || owner(0, ky, kz) != t) continue;
-      int64_t w = int64_t(std::sqrt(double(rest)));
-      while (w > 0 && w * w >= rest) --w;
-      while ((w + 1) * (w + 1) < rest) ++w;
-      const int64_t kx0 = std::max(ax.k0, std::max<int64_t>(0, cx - w) >> 6);
-      const int64_t kx1 = std::min(ax.k1, (cx + w) >> 6);
-      for (int64_t kx = kx0; kx <= kx1; ++kx) {
-        uint64_t& block = blocks[blockIndex(kx, ky, kz)];
-        if (!block) continue;
-        for (uint64_t nb = block & cellMask(ax.nodeNear(kx * 4), ay.nodeNear(ky * 4), az.nodeNear(kz * 4), s32); nb;
-             nb &= nb - 1) {
-          const int i = std::countr_zero(nb);
-          const int64_t ix = kx * 4 + (i & 3), iy = ky * 4 + ((i >> 2) & 3), iz = kz * 4 + (i >> 4);
-          uint64_t& node = nodes_[nodeIndex(ix, iy, iz)];
-          const uint64_t met = node & cellMask(ax.brickNear(ix * 4), ay.brickNear(iy * 4), az.brickNear(iz * 4), s32);
-          const uint64_t whole =  // bricks the ball holds entirely
-              met ? cellMask(ax.brickFar(ix * 4), ay.brickFar(iy * 4), az.brickFar(iz * 4), s32) : 0;
-          for (uint64_t bb = met; bb; bb &= bb - 1) {
-            const int j = std::countr_zero(bb);
-            const int64_t bx = ix * 4 + (j & 3), by = iy * 4 + ((j >> 2) & 3), bz = iz * 4 + (j >> 4);
-            uint64_t& brick = bricks_[brickIndex(bx, by, bz)];
-            uint64_t taken = brick;
-            if (!(whole >> j & 1)) {
-              if (nearestBitBox(brick, cx, cy, cz, bx * 4, by * 4, bz * 4) >= s) continue;
-              int32_t vx[4], vy[4], vz[4];
-              for (int q = 0; q < 4; ++q) {
-                vx[q] = int32_t(sq(bx * 4 + q - cx));
-                vy[q] = int32_t(sq(by * 4 + q - cy));
-                vz[q] = int32_t(sq(bz * 4 + q - cz));
-              }
-              taken &= cellMask(vx, vy, vz, s32);
-            }
-            if (!taken) continue;
-            for (uint64_t v = taken; v; v &= v - 1) {
-              const int q = std::countr_zero(v);
-              paint(bx * 4 + (q & 3), by * 4 + ((q >> 2) & 3), bz * 4 + (q >> 4));
-            }
-            brick &= ~taken;
-            if (brick) continue;
-            --open_[size_t(t)];
-            node &= ~(uint64_t(1) << j);
-          }
-          if (!node) block &= ~(uint64_t(1) << i);
-        }
-      }
-    }
-  }
+void paintBall(OpenVoxels& o, int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, Paint&& paint) {
+  open_voxels_sse2::paintBall(o, t, cx, cy, cz, s, paint);
 }
+}  // namespace open_voxels_avx512
+#endif
 
 }  // namespace vox::analysis_detail

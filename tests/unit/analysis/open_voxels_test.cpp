@@ -12,14 +12,17 @@ namespace {
 // Balls painted through the bit pyramid reach exactly the open voxels a plain scan finds, each once, by the first
 // ball that covers it, whatever the box (not a multiple of the brick, node or block; owners by layers across Z, and
 // across Y where the box has more blocks along Y) and however many owners.
-TEST(OpenVoxels, paintsEveryOpenVoxelOfEachBallOnceAndOnlyByItsOwner) {
+// Both walks: SSE2 on any processor, AVX-512 where this one has it (the same voxels, the same order).
+void checkWalk(OpenVoxels::Simd simd) {
   for (const Dims box : {Dims{70, 37, 133}, Dims{45, 140, 30}})
     for (const int threads : {1, 2, 3}) {
       std::mt19937 rng(uint32_t(11 + threads));
       std::vector<uint8_t> filled(size_t(box.count()));
       for (auto& f : filled) f = rng() % 5 != 0;
       auto index = [&](int64_t x, int64_t y, int64_t z) { return size_t(x + box.nx * (y + int64_t(box.ny) * z)); };
-      OpenVoxels open(box, threads, [&](int64_t x, int64_t y, int64_t z) { return filled[index(x, y, z)] != 0; });
+      OpenVoxels open(
+          box, threads, [&](int64_t x, int64_t y, int64_t z) { return filled[index(x, y, z)] != 0; }, simd);
+      ASSERT_EQ(open.usesAvx512(), simd == OpenVoxels::Simd::kAvx512);
       std::vector<int32_t> got(filled.size(), -1), want(filled.size(), -1);
       for (int ball = 0; ball < 60; ++ball) {
         const int64_t cx = int64_t(rng() % uint32_t(box.nx + 20)) - 10, cy = int64_t(rng() % uint32_t(box.ny + 12)) - 6,
@@ -42,6 +45,13 @@ TEST(OpenVoxels, paintsEveryOpenVoxelOfEachBallOnceAndOnlyByItsOwner) {
       }
       EXPECT_EQ(got, want) << threads << " owners, box " << box.nx << " x " << box.ny << " x " << box.nz;
     }
+}
+
+TEST(OpenVoxels, paintsEveryOpenVoxelOfEachBallOnceAndOnlyByItsOwner) { checkWalk(OpenVoxels::Simd::kSse2); }
+
+TEST(OpenVoxels, theAvx512WalkPaintsTheSameVoxels) {
+  if (!OpenVoxels::avx512Available()) GTEST_SKIP() << "this processor has no AVX-512: the SSE2 walk alone is tested";
+  checkWalk(OpenVoxels::Simd::kAvx512);
 }
 
 }  // namespace
