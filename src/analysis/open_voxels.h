@@ -110,7 +110,12 @@ class OpenVoxels {
   struct Reach {
     int64_t k0 = 0, k1 = -1;  // blocks k0..k1
     std::vector<int32_t> blocks, node_near, brick_near, brick_far;
+    int64_t c_ = -1, r_ = -1;  // what the values are for: the balls of one size come in Morton order, and
+                               // consecutive ones often share a coordinate
     void set(int64_t c, int64_t r, int64_t n) {
+      if (c == c_ && r == r_) return;
+      c_ = c;
+      r_ = r;
       k0 = std::max<int64_t>(0, c - r) >> 6;
       k1 = std::min<int64_t>(n - 1, c + r) >> 6;
       const auto count = size_t(k1 - k0 + 1);
@@ -128,11 +133,15 @@ class OpenVoxels {
       for (int32_t i = 0; i < int32_t(count); ++i) blocks[size_t(i)] = near(base + 64 * i, base + 64 * i + 63);
       for (int32_t i = 0; i < int32_t(count) * 4; ++i) node_near[size_t(i)] = near(base + 16 * i, base + 16 * i + 15);
       const int64_t b0 = (std::max<int64_t>(0, c - r) >> 4) * 4, b1 = (std::min<int64_t>(n - 1, c + r) >> 4) * 4 + 3;
-      for (auto i = int32_t(b0 - k0 * 16); i <= int32_t(b1 - k0 * 16); ++i) {
-        const int32_t a = base + 4 * i, b = a + 3;
-        brick_near[size_t(i)] = near(a, b);
-        const int32_t f = std::max(c32 - a, b - c32);
-        brick_far[size_t(i)] = f * f;
+      const auto i0 = int32_t(b0 - k0 * 16), bricks = int32_t(b1 - b0 + 1);
+      int32_t* bn = brick_near.data() + i0;
+      int32_t* bf = brick_far.data() + i0;
+      const int32_t first = base + 4 * i0 - c32;  // the first brick's first voxel, from c
+      for (int32_t i = 0; i < bricks; ++i) {      // a loop the compiler makes vector code of
+        const int32_t lo = first + 4 * i, hi = lo + 3;
+        const int32_t d = std::max(std::max(lo, -hi), 0), f = std::max(-lo, hi);
+        bn[i] = d * d;
+        bf[i] = f * f;
       }
     }
     int64_t block(int64_t k) const { return blocks[size_t(k - k0)]; }
