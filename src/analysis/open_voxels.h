@@ -103,6 +103,7 @@ class OpenVoxels {
   }
   static int bit(int64_t x, int64_t y, int64_t z) { return int((x & 3) + 4 * (y & 3) + 16 * (z & 3)); }
 
+ public:  // (the walk's view of one axis, filled by the walk too: analysis/open_voxels_walk.inc)
   // One axis of a ball: for the blocks its box meets, the squared distance from the centre's coordinate c to each
   // block, node and brick along the axis (nearest voxel; farthest too for bricks), filled once per ball so that the
   // walk reads the four values of a cell as one vector. (A brick's voxels are worked out when it is tested: a table
@@ -112,8 +113,13 @@ class OpenVoxels {
     std::vector<int32_t> blocks, node_near, brick_near, brick_far;
     int64_t c_ = -1, r_ = -1;  // what the values are for: the balls of one size come in Morton order, and
                                // consecutive ones often share a coordinate
-    void set(int64_t c, int64_t r, int64_t n) {
-      if (c == c_ && r == r_) return;
+    // The bricks' values to fill, brick_near[i0 + i] and brick_far[i0 + i] for i < bricks, the first brick's first
+    // voxel at `first` from c: left to the walk (fillBricks in analysis/open_voxels_walk.inc), which fills them with
+    // its own instructions, sixteen at a time with AVX-512.
+    int32_t i0 = 0, bricks = 0, first = 0;
+    // Returns false when the values are those of the last ball already.
+    bool set(int64_t c, int64_t r, int64_t n) {
+      if (c == c_ && r == r_) return false;
       c_ = c;
       r_ = r;
       k0 = std::max<int64_t>(0, c - r) >> 6;
@@ -121,8 +127,8 @@ class OpenVoxels {
       const auto count = size_t(k1 - k0 + 1);
       blocks.resize(count);
       node_near.resize(count * 4);
-      brick_near.resize(count * 16);
-      brick_far.resize(count * 16);
+      brick_near.resize(count * 16 + 16);  // room for a last vector of sixteen
+      brick_far.resize(count * 16 + 16);
       // Only what the walk can read is filled: every block and node of the box's blocks and the bricks of the nodes
       // within r of c. 32-bit: coordinates are below 2^15.
       const auto c32 = int32_t(c), base = int32_t(k0 * 64);
@@ -133,16 +139,10 @@ class OpenVoxels {
       for (int32_t i = 0; i < int32_t(count); ++i) blocks[size_t(i)] = near(base + 64 * i, base + 64 * i + 63);
       for (int32_t i = 0; i < int32_t(count) * 4; ++i) node_near[size_t(i)] = near(base + 16 * i, base + 16 * i + 15);
       const int64_t b0 = (std::max<int64_t>(0, c - r) >> 4) * 4, b1 = (std::min<int64_t>(n - 1, c + r) >> 4) * 4 + 3;
-      const auto i0 = int32_t(b0 - k0 * 16), bricks = int32_t(b1 - b0 + 1);
-      int32_t* bn = brick_near.data() + i0;
-      int32_t* bf = brick_far.data() + i0;
-      const int32_t first = base + 4 * i0 - c32;  // the first brick's first voxel, from c
-      for (int32_t i = 0; i < bricks; ++i) {      // a loop the compiler makes vector code of
-        const int32_t lo = first + 4 * i, hi = lo + 3;
-        const int32_t d = std::max(std::max(lo, -hi), 0), f = std::max(-lo, hi);
-        bn[i] = d * d;
-        bf[i] = f * f;
-      }
+      i0 = int32_t(b0 - k0 * 16);
+      bricks = int32_t(b1 - b0 + 1);
+      first = base + 4 * i0 - c32;
+      return true;
     }
     int64_t block(int64_t k) const { return blocks[size_t(k - k0)]; }
     const int32_t* nodeNear(int64_t node) const { return node_near.data() + (node - k0 * 4); }
@@ -150,6 +150,7 @@ class OpenVoxels {
     const int32_t* brickFar(int64_t brick) const { return brick_far.data() + (brick - k0 * 16); }
   };
 
+ private:
   Dims box_, b_, n_, k_;  // voxels, bricks, nodes, blocks
   int threads_;
   bool layers_in_y_;
