@@ -355,7 +355,9 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
     // 2. Paint, largest ball first; a voxel takes the first ball that reaches it and is never visited again. Each
     // thread walks the whole list of balls and paints only the voxels it owns (analysis/open_voxels.h).
     analysis_detail::OpenVoxels open(
-        d, threads, [&](int64_t x, int64_t y, int64_t z) { return data[x + nx * y + plane * z] != 0; });
+        d, threads, [&](int64_t x, int64_t y, int64_t z) { return data[x + nx * y + plane * z] != 0; },
+        params.simd == ThicknessParams::Simd::kSse2 ? analysis_detail::OpenVoxels::Simd::kSse2
+                                                    : analysis_detail::OpenVoxels::Simd::kAuto);
     const int64_t total_centres = int64_t(centres.size());
     forChunks(threads, threads, [&](int t, int64_t, int64_t) {
       for (int64_t k = 0; k < total_centres && open.anyOpen(t); ++k) {

@@ -22,6 +22,10 @@ namespace vox {
 
 struct ThicknessParams {
   int32_t histogram_bins = 32;  // equal bins over [0, max]
+  // The instructions the painting may use: kAuto takes AVX-512 where the processor has it, kSse2 only what every
+  // x86-64 processor has. The result is the same (the tests compare the two).
+  enum class Simd { kAuto, kSse2 };
+  Simd simd = Simd::kAuto;
 };
 
 struct ThicknessStats {

@@ -115,14 +115,21 @@ TEST(Thickness, largeGridMatchesNaivePainting) {
               e = std::max(e, uint32_t(s));
             }
       }
+  // Both paintings: the SSE2 one any processor takes, and the AVX-512 one where this processor has it.
+  ThicknessParams sse2;
+  sse2.simd = ThicknessParams::Simd::kSse2;
+  for (const ThicknessParams& params : {ThicknessParams{}, sse2}) {
+    auto t = computeThickness(*dist, params);
+    ASSERT_TRUE(t.ok());
+    int64_t mismatches = 0;
+    for (int z = 0; z < g.nz(); ++z)
+      for (int y = 0; y < g.ny(); ++y)
+        for (int x = 0; x < g.nx(); ++x)
+          if (t->radius.squared(x, y, z) != expect[size_t(g.index(x, y, z))]) ++mismatches;
+    EXPECT_EQ(mismatches, 0) << (params.simd == ThicknessParams::Simd::kSse2 ? "SSE2" : "automatic");
+  }
   auto t = computeThickness(*dist);
   ASSERT_TRUE(t.ok());
-  int64_t mismatches = 0;
-  for (int z = 0; z < g.nz(); ++z)
-    for (int y = 0; y < g.ny(); ++y)
-      for (int x = 0; x < g.nx(); ++x)
-        if (t->radius.squared(x, y, z) != expect[size_t(g.index(x, y, z))]) ++mismatches;
-  EXPECT_EQ(mismatches, 0);
   // The statistics of a field large enough to be counted on several threads.
   int64_t voxels = 0;
   double sum = 0;
