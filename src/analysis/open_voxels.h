@@ -16,7 +16,15 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <new>
 #include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -33,6 +41,34 @@
 #include "vox/core/parallel.h"
 
 namespace vox::analysis_detail {
+
+// Zeroed 64-bit words on memory the kernel is asked to back with 2 MiB pages where it can (Linux, transparent huge
+// pages on "madvise"): a ball's walk reads brick words scattered over the whole pyramid, and with 4 KiB pages most of
+// those reads missed the address translation caches as well as the data caches (90 MB at R = 1000).
+class HugeWords {
+ public:
+  explicit HugeWords(size_t count) : count_(count) {
+    constexpr size_t kHuge = size_t(2) << 20;
+    const size_t bytes = std::max<size_t>((count * sizeof(uint64_t) + kHuge - 1) / kHuge * kHuge, kHuge);
+    words_.reset(static_cast<uint64_t*>(std::aligned_alloc(kHuge, bytes)));
+    if (!words_) throw std::bad_alloc();
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    madvise(words_.get(), bytes, MADV_HUGEPAGE);  // a hint: 4 KiB pages where it is refused
+#endif
+    std::memset(words_.get(), 0, count * sizeof(uint64_t));
+  }
+  uint64_t& operator[](size_t i) { return words_[i]; }
+  const uint64_t& operator[](size_t i) const { return words_[i]; }
+  const uint64_t* data() const { return words_.get(); }
+  size_t size() const { return count_; }
+
+ private:
+  struct Free {
+    void operator()(uint64_t* p) const { std::free(p); }
+  };
+  size_t count_;
+  std::unique_ptr<uint64_t[], Free> words_;
+};
 
 class OpenVoxels;
 // The ball's walk for each kind of processor (analysis/open_voxels_walk.inc); OpenVoxels::paintBall picks one.
@@ -155,7 +191,7 @@ class OpenVoxels {
   int threads_;
   bool layers_in_y_;
   bool avx512_;
-  std::vector<uint64_t> bricks_, nodes_;
+  HugeWords bricks_, nodes_;
   std::vector<std::vector<uint64_t>> blocks_;  // per thread
   std::vector<int64_t> open_;                  // open bricks per thread
   struct alignas(64) ThreadReach {
@@ -173,8 +209,8 @@ OpenVoxels::OpenVoxels(Dims box, int threads, Filled&& filled, Simd simd)
       threads_(threads),
       layers_in_y_(k_.ny > k_.nz),
       avx512_(simd != Simd::kSse2 && avx512Available()),
-      bricks_(size_t(k_.count()) * 64 * 64, 0),
-      nodes_(size_t(k_.count()) * 64, 0),
+      bricks_(size_t(k_.count()) * 64 * 64),
+      nodes_(size_t(k_.count()) * 64),
       blocks_(size_t(threads), std::vector<uint64_t>(size_t(k_.count()), 0)),
       open_(size_t(threads), 0),
       reach_(size_t(threads)) {
