@@ -42,33 +42,37 @@
 
 namespace vox::analysis_detail {
 
-// Zeroed 64-bit words on memory the kernel is asked to back with 2 MiB pages where it can (Linux, transparent huge
-// pages on "madvise"): a ball's walk reads brick words scattered over the whole pyramid, and with 4 KiB pages most of
-// those reads missed the address translation caches as well as the data caches (90 MB at R = 1000).
-class HugeWords {
+// Zeroed values on memory the kernel is asked to back with 2 MiB pages where it can (Linux, transparent huge pages
+// on "madvise"): for arrays read at scattered places, where with 4 KiB pages most reads would miss the address
+// translation caches as well as the data caches (a ball's walk reads brick words all over the pyramid, 90 MB at
+// R = 1000; the containment test reads the lattice table, 44 MB there).
+template <class T>
+class HugeArray {
  public:
-  explicit HugeWords(size_t count) : count_(count) {
+  explicit HugeArray(size_t count) : count_(count) {
     constexpr size_t kHuge = size_t(2) << 20;
-    const size_t bytes = std::max<size_t>((count * sizeof(uint64_t) + kHuge - 1) / kHuge * kHuge, kHuge);
-    words_.reset(static_cast<uint64_t*>(std::aligned_alloc(kHuge, bytes)));
-    if (!words_) throw std::bad_alloc();
+    const size_t bytes = std::max<size_t>((count * sizeof(T) + kHuge - 1) / kHuge * kHuge, kHuge);
+    values_.reset(static_cast<T*>(std::aligned_alloc(kHuge, bytes)));
+    if (!values_) throw std::bad_alloc();
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-    madvise(words_.get(), bytes, MADV_HUGEPAGE);  // a hint: 4 KiB pages where it is refused
+    madvise(values_.get(), bytes, MADV_HUGEPAGE);  // a hint: 4 KiB pages where it is refused
 #endif
-    std::memset(words_.get(), 0, count * sizeof(uint64_t));
+    std::memset(values_.get(), 0, count * sizeof(T));
   }
-  uint64_t& operator[](size_t i) { return words_[i]; }
-  const uint64_t& operator[](size_t i) const { return words_[i]; }
-  const uint64_t* data() const { return words_.get(); }
+  T& operator[](size_t i) { return values_[i]; }
+  const T& operator[](size_t i) const { return values_[i]; }
+  T* data() { return values_.get(); }
+  const T* data() const { return values_.get(); }
   size_t size() const { return count_; }
 
  private:
   struct Free {
-    void operator()(uint64_t* p) const { std::free(p); }
+    void operator()(T* p) const { std::free(p); }
   };
   size_t count_;
-  std::unique_ptr<uint64_t[], Free> words_;
+  std::unique_ptr<T[], Free> values_;
 };
+using HugeWords = HugeArray<uint64_t>;
 
 class OpenVoxels;
 // The ball's walk for each kind of processor (analysis/open_voxels_walk.inc); OpenVoxels::paintBall picks one.

@@ -54,15 +54,17 @@ class LatticeCover {
   // every ball dropped here saves painting it (igea at R = 512: reach 2 leaves 4.5 times as many balls as reach 5,
   // reach 5 1.5 times as many as reach 9; reach 13 drops 2% more).
   static constexpr int kReach = 9;
+  static constexpr int kClasses = 219;  // (a, b, c) with kReach >= a >= 1, a >= b >= c >= 0
   // far - s below 2 r |d| + |d|^2 with r <= 512 and |d| <= sqrt(3) kReach < 2 kReach: 16 bits hold it
   static_assert(2 * 512 * (2 * kReach) + 3 * kReach * kReach < INT16_MAX);
-  explicit LatticeCover(int64_t max_s) : limit_(std::min(max_s, kMaxTable)) {
+  explicit LatticeCover(int64_t max_s)
+      : limit_(std::min(max_s, kMaxTable)), far_((size_t(limit_) + 1) * size_t(kClasses)) {
     const int K = kReach;
     for (int a = 1; a <= K; ++a)
       for (int b = 0; b <= a; ++b)
         for (int c = 0; c <= b; ++c) cls_.push_back({a, b, c});
     const size_t n = cls_.size();
-    far_.assign((size_t(limit_) + 1) * n, INT16_MIN);
+    static_assert(kClasses == kReach * (kReach + 1) * (kReach + 2) / 6 + kReach * (kReach + 1) / 2 + kReach);
     parallelChunks(0, int64_t(n), 1, threadsFor(limit_ * int64_t(n)), [&](int, int64_t kb, int64_t ke) {
       std::vector<int64_t> f;
       for (int64_t k = kb; k < ke; ++k) {
@@ -101,7 +103,7 @@ class LatticeCover {
   // far[s][class] - s, classes adjacent: one centre's tests share cache lines. The difference fits 16 bits: it lies
   // between -3 (the gap from s down to the lattice shell below it) and 2 r |d| + |d|^2 <= 2 * 512 * 15.6 + 243 for
   // the tabled balls (r <= 512) and offsets up to 9 voxels on each axis.
-  std::vector<int16_t> far_;
+  analysis_detail::HugeArray<int16_t> far_;  // read at scattered rows: on 2 MiB pages where the kernel gives them
 };
 
 // Neighbours within kReach voxels on each axis, nearest first (the face neighbour in the direction of the gradient
