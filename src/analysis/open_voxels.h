@@ -77,7 +77,7 @@ using HugeWords = HugeArray<uint64_t>;
 class OpenVoxels;
 // The ball's walk for each kind of processor (analysis/open_voxels_walk.inc); OpenVoxels::paintBall picks one.
 #if VOX_OPEN_VOXELS_AVX512
-#define VOX_WALK_AVX512_ATTRIBUTE __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq,popcnt,bmi,bmi2,lzcnt")))
+#define VOX_WALK_AVX512_ATTRIBUTE __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq,popcnt,bmi,bmi2")))
 #else
 #define VOX_WALK_AVX512_ATTRIBUTE
 #endif
@@ -98,8 +98,8 @@ class OpenVoxels {
   static bool avx512Available() {
 #if VOX_OPEN_VOXELS_AVX512
     return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
-           __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("bmi2") &&
-           __builtin_cpu_supports("popcnt");
+           __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("bmi") &&
+           __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("popcnt");
 #else
     return false;
 #endif

@@ -24,10 +24,18 @@ void checkWalk(OpenVoxels::Simd simd) {
           box, threads, [&](int64_t x, int64_t y, int64_t z) { return filled[index(x, y, z)] != 0; }, simd);
       ASSERT_EQ(open.usesAvx512(), simd == OpenVoxels::Simd::kAvx512);
       std::vector<int32_t> got(filled.size(), -1), want(filled.size(), -1);
-      for (int ball = 0; ball < 60; ++ball) {
-        const int64_t cx = int64_t(rng() % uint32_t(box.nx + 20)) - 10, cy = int64_t(rng() % uint32_t(box.ny + 12)) - 6,
-                      cz = int64_t(rng() % uint32_t(box.nz + 16)) - 8;
-        const int64_t s = 1 + int64_t(rng() % 700);
+      int64_t cx = 0, cy = 0, cz = 0, s = 1;
+      for (int ball = 0; ball < 90; ++ball) {
+        // Two balls in three step along one axis from the one before, the same size: as balls of one size come to
+        // local thickness, in Morton order, so that the walk reuses an axis's distances from the ball before.
+        if (ball % 3 == 0) {
+          cx = int64_t(rng() % uint32_t(box.nx + 20)) - 10;
+          cy = int64_t(rng() % uint32_t(box.ny + 12)) - 6;
+          cz = int64_t(rng() % uint32_t(box.nz + 16)) - 8;
+          s = 1 + int64_t(rng() % 700);
+        } else {
+          (ball % 3 == 1 ? cx : rng() % 2 ? cy : cz) += 1 + int64_t(rng() % 3);
+        }
         for (int64_t z = 0; z < box.nz; ++z)
           for (int64_t y = 0; y < box.ny; ++y)
             for (int64_t x = 0; x < box.nx; ++x) {
