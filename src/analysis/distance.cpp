@@ -139,47 +139,70 @@ struct Parabola {
 constexpr int64_t kNever = -(int64_t(1) << 40);
 struct LineScratch {
   std::vector<Parabola> p;
-  explicit LineScratch(int64_t n) : p(size_t(n) + 3) {}
+  std::vector<int32_t> takeover;  // per position of the piece, how many parabolas start there
+  explicit LineScratch(int64_t n) : p(size_t(n) + 3), takeover(size_t(n) + 1) {}
 };
 
 // Lower envelope over the sites of piece [a, b) of line f (n long): zeros at a - 1 and b when they lie in the line
-// or when `border` (ends count as zeros), and every finite value inside. Writes the piece in place and raises mx to
-// its largest value.
-void envelopePiece(uint32_t* f, int64_t stride, int64_t n, int64_t a, int64_t b, bool border, LineScratch& s,
-                   uint32_t& mx) {
+// or when `kBorder` (ends count as zeros: a distance line, whose values inside a piece are all finite), and every
+// finite value inside. Writes the piece in place and raises mx to its largest value. The envelope's top parabola is
+// kept apart from the stack below it, so that a site that hides nothing is compared without a load.
+template <bool kBorder>
+void envelopePiece(uint32_t* f, int64_t stride, int64_t n, int64_t a, int64_t b, LineScratch& s, uint32_t& mx) {
   Parabola* p = s.p.data();
-  int64_t k = -1;
-  auto push = [&](int64_t q, int64_t fq) {
-    const int64_t qq = fq + q * q;
-    if (k < 0) {
-      p[0] = Parabola{q, qq, kNever, 1};
-      k = 0;
-      return;
+  int64_t k = 0;  // p[0, k) below the top t
+  Parabola t{};
+  bool last = b < n || kBorder;
+  int64_t q = a;
+  if (a > 0 || kBorder) {
+    t = Parabola{a - 1, (a - 1) * (a - 1), kNever, 1};
+  } else {
+    while (q < b && f[q * stride] == kInf) ++q;
+    if (q < b) {
+      t = Parabola{q, int64_t(f[q * stride]) + q * q, kNever, 1};
+      ++q;
+    } else if (last) {
+      t = Parabola{b, b * b, kNever, 1};
+      last = false;
+    } else {
+      return;  // no site: the piece stays infinite
     }
+  }
+  auto push = [&](int64_t x, int64_t fx) {
+    const int64_t xx = fx + x * x;
     for (;;) {
-      // parabolas k and q meet at (qq - (f(v) + v^2)) / (2 (q - v)), v < q; q hides k when that is at or before
-      // the point where k starts to be lowest
-      const Parabola& pk = p[k];
-      const int64_t xn = qq - pk.g, xd = 2 * (q - pk.site);
-      if (xn * pk.den <= pk.num * xd) {
-        --k;
+      // parabolas t and x meet at (xx - (f(v) + v^2)) / (2 (x - v)), v < x; x hides t when that is at or before
+      // the point where t starts to be lowest (never the first parabola: kNever * xd is below every xn * den)
+      const int64_t xn = xx - t.g, xd = 2 * (x - t.site);
+      if (xn * t.den <= t.num * xd) {
+        t = p[--k];
         continue;
       }
-      p[++k] = Parabola{q, qq, xn, xd};
+      p[k++] = t;
+      t = Parabola{x, xx, xn, xd};
       return;
     }
   };
-  if (a > 0 || border) push(a - 1, 0);
-  for (int64_t q = a; q < b; ++q) {
+  for (; q < b; ++q) {
     const uint32_t fq = f[q * stride];
-    if (fq != kInf) push(q, fq);
+    if (kBorder || fq != kInf) push(q, fq);
   }
-  if (b < n || border) push(b, 0);
-  if (k < 0) return;  // no site: the piece stays infinite
+  if (last) push(b, 0);
+  p[k] = t;
+  // Parabola i (i >= 1) is lowest from the first whole position at or after num / den, ceil(num / den): the quotient
+  // of two integers below 2^32 and 2^16 in double precision lies farther than a rounding from every integer it is
+  // not, so truncating it and stepping up where that falls short of num is exact. The parabola lowest at q is then
+  // the count of those starting at or before q: a running sum over the positions, without a branch per position.
+  int32_t* takeover = s.takeover.data();
+  std::fill(takeover, takeover + (b - a) + 1, 0);
+  for (int64_t i = 1; i <= k; ++i) {
+    const auto c = int64_t(double(p[i].num) / double(p[i].den));
+    ++takeover[std::clamp(c + (c * p[i].den < p[i].num), a, b) - a];
+  }
   int64_t j = 0;
   uint32_t m = mx;
-  for (int64_t q = a; q < b; ++q) {
-    while (j < k && p[j + 1].num <= q * p[j + 1].den) ++j;
+  for (q = a; q < b; ++q) {
+    j += takeover[q - a];
     const int64_t dq = q - p[j].site;
     const auto v = uint32_t(dq * dq + (p[j].g - p[j].site * p[j].site));
     f[q * stride] = v;
@@ -269,7 +292,11 @@ class PlaneLines {
           uint64_t inv = ~col[wi] & (~uint64_t(0) << (a & 63));
           while (!inv && ++wi < words_) inv = ~col[wi];
           const int64_t e = inv ? std::min(len_, wi * 64 + std::countr_zero(inv)) : len_;
-          envelopePiece(line, kTile, len_, a, e, border_, scratch_, mx);
+          if (border_) {
+            envelopePiece<true>(line, kTile, len_, a, e, scratch_, mx);
+          } else {
+            envelopePiece<false>(line, kTile, len_, a, e, scratch_, mx);
+          }
           q = e;
         }
       }
