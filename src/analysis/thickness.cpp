@@ -83,6 +83,12 @@ class LatticeCover {
       }
     });
   }
+  // Asks for the table's row of balls of squared radius sc ahead of the tests that read it.
+  void prefetch(int64_t sc) const {
+    if (sc > limit_) return;
+    const char* row = reinterpret_cast<const char*>(far_.data() + size_t(sc) * kClasses);
+    for (size_t b = 0; b < kClasses * sizeof(int16_t); b += 64) __builtin_prefetch(row + b);
+  }
   int classOf(int dx, int dy, int dz) const {
     int a[3] = {std::abs(dx), std::abs(dy), std::abs(dz)};
     std::sort(a, a + 3, [](int u, int v) { return u > v; });
@@ -93,7 +99,7 @@ class LatticeCover {
   // True when every voxel of ball(c) (squared radius sc) lies in ball(n) (sn), n at offset o from c.
   bool inside(int64_t sc, int64_t sn, const Offset& o) const {
     if (sn <= sc) return false;
-    if (sc <= limit_) return far_[size_t(sc) * cls_.size() + size_t(o.cls)] + sc < sn;
+    if (sc <= limit_) return far_[size_t(sc) * kClasses + size_t(o.cls)] + sc < sn;
     return ballInside(sc, sn, o.d2);
   }
 
@@ -279,6 +285,7 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
     // 1. The centres whose ball is not inside a neighbour's larger ball, by slice, in columns kTile voxels wide: the
     // rows the offsets read for one row of a column stay in the second-level cache (19 x 19 rows of 82 voxels).
     constexpr int64_t kTile = 64;
+    constexpr int64_t kAhead = 2;  // the table's row for the voxel this far ahead is asked for
     parallelChunks(0, nz, 1, threads, [&](int, int64_t zb, int64_t ze) {
       for (int64_t z = zb; z < ze; ++z) {
         if (gate.cancelled()) return;
@@ -289,6 +296,7 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
             const Offset* last = nullptr;  // the offset that held the previous voxel's ball: often this one's too
             for (int64_t x = x0; x < std::min(nx, x0 + kTile); ++x) {
               const int64_t s = row[x];
+              if (x + kAhead < nx) cover.prefetch(row[x + kAhead]);
               if (!s) continue;
               bool inside = false;
               const int64_t K = LatticeCover::kReach;
