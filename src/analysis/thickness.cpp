@@ -86,8 +86,11 @@ class LatticeCover {
   // Asks for the table's row of balls of squared radius sc ahead of the tests that read it.
   void prefetch(int64_t sc) const {
     if (sc > limit_) return;
-    const char* row = reinterpret_cast<const char*>(far_.data() + size_t(sc) * kClasses);
-    for (size_t b = 0; b < kClasses * sizeof(int16_t); b += 64) __builtin_prefetch(row + b);
+    // every cache line the row touches (7 or 8: 438 bytes from wherever the row starts in a line)
+    const auto first = reinterpret_cast<uintptr_t>(far_.data() + size_t(sc) * kClasses);
+    const uintptr_t last = first + kClasses * sizeof(int16_t) - 1;
+    for (uintptr_t line = first & ~uintptr_t(63); line <= last; line += 64)
+      __builtin_prefetch(reinterpret_cast<const void*>(line));
   }
   int classOf(int dx, int dy, int dz) const {
     int a[3] = {std::abs(dx), std::abs(dy), std::abs(dz)};
