@@ -299,7 +299,7 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
             const Offset* last = nullptr;  // the offset that held the previous voxel's ball: often this one's too
             for (int64_t x = x0; x < std::min(nx, x0 + kTile); ++x) {
               const int64_t s = row[x];
-              if (x + kAhead < nx) cover.prefetch(row[x + kAhead]);
+              if (x + kAhead < nx && row[x + kAhead]) cover.prefetch(row[x + kAhead]);  // (empty voxels test nothing)
               if (!s) continue;
               bool inside = false;
               const int64_t K = LatticeCover::kReach;
