@@ -12,7 +12,8 @@ namespace {
 // Balls painted through the bit pyramid reach exactly the open voxels a plain scan finds, each once, by the first
 // ball that covers it, whatever the box (not a multiple of the brick, node or block; owners by layers across Z, and
 // across Y where the box has more blocks along Y) and however many owners.
-// Both walks: SSE2 on any processor, AVX-512 where this one has it (the same voxels, the same order).
+// Each owner's brick words are packed again as they close (every time half of them have). Both walks: SSE2 on any
+// processor, AVX-512 where this one has it (the same voxels, the same order).
 void checkWalk(OpenVoxels::Simd simd) {
   for (const Dims box : {Dims{70, 37, 133}, Dims{45, 140, 30}})
     for (const int threads : {1, 2, 3}) {
@@ -25,14 +26,14 @@ void checkWalk(OpenVoxels::Simd simd) {
       ASSERT_EQ(open.usesAvx512(), simd == OpenVoxels::Simd::kAvx512);
       std::vector<int32_t> got(filled.size(), -1), want(filled.size(), -1);
       int64_t cx = 0, cy = 0, cz = 0, s = 1;
-      for (int ball = 0; ball < 90; ++ball) {
+      for (int ball = 0; ball < 240; ++ball) {
         // Two balls in three step along one axis from the one before, the same size: as balls of one size come to
         // local thickness, in Morton order, so that the walk reuses an axis's distances from the ball before.
         if (ball % 3 == 0) {
           cx = int64_t(rng() % uint32_t(box.nx + 20)) - 10;
           cy = int64_t(rng() % uint32_t(box.ny + 12)) - 6;
           cz = int64_t(rng() % uint32_t(box.nz + 16)) - 8;
-          s = 1 + int64_t(rng() % 700);
+          s = 1 + int64_t(rng() % 1500);
         } else {
           (ball % 3 == 1 ? cx : rng() % 2 ? cy : cz) += 1 + int64_t(rng() % 3);
         }
@@ -52,6 +53,8 @@ void checkWalk(OpenVoxels::Simd simd) {
           });
       }
       EXPECT_EQ(got, want) << threads << " owners, box " << box.nx << " x " << box.ny << " x " << box.nz;
+      // every owner's bricks were packed again as they closed (the walk read them from arrays of several sizes)
+      for (int t = 0; t < threads; ++t) EXPECT_GE(open.packings(t), 3) << "owner " << t;
     }
 }
 
