@@ -155,16 +155,17 @@ class OpenVoxels {
   }
   static int bit(int64_t x, int64_t y, int64_t z) { return int((x & 3) + 4 * (y & 3) + 16 * (z & 3)); }
 
-  // A node: its open bricks (bit j for brick j), and where its owner's packed array holds their words: the words of
-  // the bricks in `slots` (the open ones when it was last packed, a superset of `open`) from `base` on, in bit order.
-  struct Node {  // (zeroed by HugeArray)
-    uint64_t open, slots;
-    uint64_t base;
+  // Where a node's owner's packed array holds the words of its bricks: those of the bricks in `slots` (the open ones
+  // when it was last packed, a superset of the open ones now) from `base` on, in bit order.
+  // (The open bricks' words, read for every node a ball meets, are an array of their own, nodes_: 8 bytes a node
+  // where a node's three values took 24 and missed the caches more often.)
+  struct Packing {  // (zeroed by HugeArray)
+    uint64_t slots, base;
   };
   // Where brick j of a node lies in its owner's packed array.
   size_t brickSlot(size_t node_index, int j) const {
-    const Node& n = nodes_[node_index];
-    return size_t(n.base) + size_t(std::popcount(n.slots & ((uint64_t(1) << j) - 1)));
+    const Packing& p = packing_[node_index];
+    return size_t(p.base) + size_t(std::popcount(p.slots & ((uint64_t(1) << j) - 1)));
   }
   // Packs thread t's open bricks again (word(node_index, j) gives brick j's word of a node) into a new array.
   template <class Word>
@@ -173,17 +174,18 @@ class OpenVoxels {
     const std::vector<uint64_t>& blocks = blocks_[size_t(t)];
     for (size_t b = 0; b < blocks.size(); ++b)
       for (uint64_t nb = blocks[b]; nb; nb &= nb - 1)
-        count += size_t(std::popcount(nodes_[b * 64 + size_t(std::countr_zero(nb))].open));
+        count += size_t(std::popcount(nodes_[b * 64 + size_t(std::countr_zero(nb))]));
     HugeWords packed(count);
     size_t next = 0;
     for (size_t b = 0; b < blocks.size(); ++b)
       for (uint64_t nb = blocks[b]; nb; nb &= nb - 1) {
         const size_t node_index = b * 64 + size_t(std::countr_zero(nb));
-        Node& n = nodes_[node_index];
+        Packing& p = packing_[node_index];
         const size_t base = next;
-        for (uint64_t bb = n.open; bb; bb &= bb - 1) packed[next++] = word(node_index, std::countr_zero(bb));
-        n.slots = n.open;
-        n.base = base;
+        for (uint64_t bb = nodes_[node_index]; bb; bb &= bb - 1)
+          packed[next++] = word(node_index, std::countr_zero(bb));
+        p.slots = nodes_[node_index];
+        p.base = base;
       }
     packed_[size_t(t)] = std::move(packed);
     ++packings_[size_t(t)];
@@ -241,7 +243,8 @@ class OpenVoxels {
   int threads_;
   bool layers_in_y_;
   bool avx512_;
-  HugeArray<Node> nodes_;
+  HugeWords nodes_;  // a node's open bricks: bit j for brick j
+  HugeArray<Packing> packing_;
   std::vector<HugeWords> packed_;              // per thread: the words of its open bricks (and of some closed ones)
   std::vector<std::vector<uint64_t>> blocks_;  // per thread
   std::vector<int64_t> open_;                  // open bricks per thread
@@ -262,6 +265,7 @@ OpenVoxels::OpenVoxels(Dims box, int threads, Filled&& filled, Simd simd)
       layers_in_y_(k_.ny > k_.nz),
       avx512_(simd != Simd::kSse2 && avx512Available()),
       nodes_(size_t(k_.count()) * 64),
+      packing_(size_t(k_.count()) * 64),
       blocks_(size_t(threads), std::vector<uint64_t>(size_t(k_.count()), 0)),
       open_(size_t(threads), 0),
       packings_(size_t(threads), 0),
@@ -280,7 +284,7 @@ OpenVoxels::OpenVoxels(Dims box, int threads, Filled&& filled, Simd simd)
         if (!bricks[brickIndex(bx, by, bz)]) continue;
         const int t = owner(bx >> 4, by >> 4, bz >> 4);
         ++open_[size_t(t)];
-        nodes_[nodeIndex(bx >> 2, by >> 2, bz >> 2)].open |= uint64_t(1) << bit(bx, by, bz);
+        nodes_[nodeIndex(bx >> 2, by >> 2, bz >> 2)] |= uint64_t(1) << bit(bx, by, bz);
         blocks_[size_t(t)][blockIndex(bx >> 4, by >> 4, bz >> 4)] |= uint64_t(1) << bit(bx >> 2, by >> 2, bz >> 2);
       }
   parallelChunks(0, threads, 1, threadsFor(box.count() / 4), [&](int, int64_t t0, int64_t t1) {
