@@ -135,7 +135,7 @@ class OpenVoxels {
 
   bool anyOpen(int t) const { return open_[size_t(t)] > 0; }
   // The thread that owns block (kx, ky, kz) and every node, brick and voxel in it.
-  int owner(int64_t, int64_t ky, int64_t kz) const { return int((layers_in_y_ ? ky : kz) % threads_); }
+  int owner(int64_t, int64_t ky, int64_t kz) const { return layer_owner_[size_t(layers_in_y_ ? ky : kz)]; }
 
  private:
   template <class Paint>
@@ -243,7 +243,8 @@ class OpenVoxels {
   int threads_;
   bool layers_in_y_;
   bool avx512_;
-  HugeWords nodes_;  // a node's open bricks: bit j for brick j
+  std::vector<int> layer_owner_;  // by layer of blocks: its index modulo the threads (no division in the walk)
+  HugeWords nodes_;               // a node's open bricks: bit j for brick j
   HugeArray<Packing> packing_;
   std::vector<HugeWords> packed_;              // per thread: the words of its open bricks (and of some closed ones)
   std::vector<std::vector<uint64_t>> blocks_;  // per thread
@@ -264,12 +265,14 @@ OpenVoxels::OpenVoxels(Dims box, int threads, Filled&& filled, Simd simd)
       threads_(threads),
       layers_in_y_(k_.ny > k_.nz),
       avx512_(simd != Simd::kSse2 && avx512Available()),
+      layer_owner_(size_t(layers_in_y_ ? k_.ny : k_.nz)),
       nodes_(size_t(k_.count()) * 64),
       packing_(size_t(k_.count()) * 64),
       blocks_(size_t(threads), std::vector<uint64_t>(size_t(k_.count()), 0)),
       open_(size_t(threads), 0),
       packings_(size_t(threads), 0),
       reach_(size_t(threads)) {
+  for (size_t k = 0; k < layer_owner_.size(); ++k) layer_owner_[k] = int(k % size_t(threads));
   for (int t = 0; t < threads; ++t) packed_.emplace_back(0);
   HugeWords bricks(size_t(k_.count()) * 64 * 64);  // every brick's word, by brickIndex, until packed
   parallelChunks(0, b_.nz, 1, threadsFor(box.count() / 4), [&](int, int64_t bz0, int64_t bz1) {
