@@ -71,9 +71,12 @@ class LatticeCover {
         f.assign(size_t(limit_) + 1, INT64_MIN);
         const int64_t rmax = int64_t(std::sqrt(double(limit_))) + 1;
         const auto& d = cls_[size_t(k)];
+        // e with ex >= ey >= ez >= 0 only: among the offsets with the same components in any order and signs, the
+        // one farthest from -d is the one whose components are ordered as d's, d[0] >= d[1] >= d[2] >= 0 (the
+        // rearrangement inequality), which leaves a sixth of the octant to visit
         for (int64_t ex = 0; ex <= rmax; ++ex)
-          for (int64_t ey = 0; ex * ex + ey * ey < limit_; ++ey)
-            for (int64_t ez = 0; ex * ex + ey * ey + ez * ez < limit_; ++ez) {
+          for (int64_t ey = 0; ey <= ex && ex * ex + ey * ey < limit_; ++ey)
+            for (int64_t ez = 0; ez <= ey && ex * ex + ey * ey + ez * ez < limit_; ++ez) {
               const int64_t m = ex * ex + ey * ey + ez * ez;
               const int64_t a = ex + d[0], b = ey + d[1], c = ez + d[2];
               f[size_t(m) + 1] = std::max(f[size_t(m) + 1], a * a + b * b + c * c);
