@@ -8,7 +8,7 @@
 // Each thread keeps the words of its open bricks packed in an array of its own, node by node in the order of the
 // pyramid, and packs it again whenever half of them have closed: a ball's walk reads the bricks about its sphere,
 // and after the largest balls have painted the bulk of a part the open bricks are a thin shell at its surface (at
-// R = 1000, a quarter of them after the first million of 15.5 million balls, 5% at the end), which packed stays in
+// R = 1000, a quarter of them after the first million of 15.5 million balls, 1% before the last), which packed stays in
 // the processor's caches where the box's whole array of brick words (87 MB) does not.
 //
 // Threads own layers of blocks (64 voxel slices, round robin) across Z, or across Y when the box has more blocks
