@@ -157,15 +157,15 @@ class OpenVoxels {
 
   // Where a node's owner's packed array holds the words of its bricks: those of the bricks in `slots` (the open ones
   // when it was last packed, a superset of the open ones now) from `base` on, in bit order.
-  // (The open bricks' words, read for every node a ball meets, are an array of their own, nodes_: 8 bytes a node
-  // where a node's three values took 24 and missed the caches more often.)
+  // (Kept apart from the nodes' open-brick words, nodes_, which every node a ball meets reads: 8 bytes a node stay
+  // in the caches better than 24.)
   struct Packing {  // (zeroed by HugeArray)
     uint64_t slots, base;
   };
   // Where brick j of a node lies in its owner's packed array.
   size_t brickSlot(size_t node_index, int j) const {
     const Packing& p = packing_[node_index];
-    return size_t(p.base) + size_t(std::popcount(p.slots & ((uint64_t(1) << j) - 1)));
+    return p.base + size_t(std::popcount(p.slots & ((uint64_t(1) << j) - 1)));
   }
   // Packs thread t's open bricks again (word(node_index, j) gives brick j's word of a node) into a new array.
   template <class Word>
@@ -240,7 +240,6 @@ class OpenVoxels {
 
  private:
   Dims box_, b_, n_, k_;  // voxels, bricks, nodes, blocks
-  int threads_;
   bool layers_in_y_;
   bool avx512_;
   std::vector<int> layer_owner_;  // by layer of blocks: its index modulo the threads (no division in the walk)
@@ -262,7 +261,6 @@ OpenVoxels::OpenVoxels(Dims box, int threads, Filled&& filled, Simd simd)
       b_{(box.nx + 3) / 4, (box.ny + 3) / 4, (box.nz + 3) / 4},
       n_{(b_.nx + 3) / 4, (b_.ny + 3) / 4, (b_.nz + 3) / 4},
       k_{(n_.nx + 3) / 4, (n_.ny + 3) / 4, (n_.nz + 3) / 4},
-      threads_(threads),
       layers_in_y_(k_.ny > k_.nz),
       avx512_(simd != Simd::kSse2 && avx512Available()),
       layer_owner_(size_t(layers_in_y_ ? k_.ny : k_.nz)),
