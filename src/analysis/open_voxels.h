@@ -88,13 +88,13 @@ class OpenVoxels;
 #define VOX_WALK_AVX512_ATTRIBUTE
 #endif
 namespace open_voxels_sse2 {
-template <class Paint>
-void paintBall(OpenVoxels& o, int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, Paint&& paint);
+template <class Window, class Paint>
+void paintBall(OpenVoxels& o, int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, const Window& w, Paint&& paint);
 }
 namespace open_voxels_avx512 {
-template <class Paint>
+template <class Window, class Paint>
 VOX_WALK_AVX512_ATTRIBUTE void paintBall(OpenVoxels& o, int t, int64_t cx, int64_t cy, int64_t cz, int64_t s,
-                                         Paint&& paint);
+                                         const Window& w, Paint&& paint);
 }
 
 class OpenVoxels {
@@ -116,13 +116,25 @@ class OpenVoxels {
   template <class Filled>
   OpenVoxels(Dims box, int threads, Filled&& filled, Simd simd = Simd::kAuto);
 
+  // A box about a ball's centre: offsets lo..hi from it on each axis, inclusive.
+  struct Window {
+    int64_t lo[3], hi[3];
+  };
   // Calls paint(x, y, z) once for every open voxel of thread t with |p - c|^2 < s and closes it.
   template <class Paint>
   void paintBall(int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, Paint&& paint) {
+    constexpr int64_t kAll = int64_t(1) << 20;  // beyond any box (coordinates are below 2^15)
+    paintBall(t, cx, cy, cz, s, Window{{-kAll, -kAll, -kAll}, {kAll, kAll, kAll}}, paint);
+  }
+  // The same for the open voxels of the bricks that meet `window`: the walk leaves the blocks, nodes and bricks
+  // outside it, so a ball whose open voxels the caller knows to lie in a window costs only the window's part of its
+  // sphere.
+  template <class Paint>
+  void paintBall(int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, const Window& window, Paint&& paint) {
     if (avx512_) {
-      open_voxels_avx512::paintBall(*this, t, cx, cy, cz, s, paint);
+      open_voxels_avx512::paintBall(*this, t, cx, cy, cz, s, window, paint);
     } else {
-      open_voxels_sse2::paintBall(*this, t, cx, cy, cz, s, paint);
+      open_voxels_sse2::paintBall(*this, t, cx, cy, cz, s, window, paint);
     }
     if (2 * size_t(open_[size_t(t)]) < packed_[size_t(t)].size()) {
       repack(t, [&](size_t node_index, int j) { return packed_[size_t(t)][brickSlot(node_index, j)]; });
@@ -138,11 +150,11 @@ class OpenVoxels {
   int owner(int64_t, int64_t ky, int64_t kz) const { return layer_owner_[size_t(layers_in_y_ ? ky : kz)]; }
 
  private:
-  template <class Paint>
-  friend void open_voxels_sse2::paintBall(OpenVoxels&, int, int64_t, int64_t, int64_t, int64_t, Paint&&);
-  template <class Paint>
+  template <class Window, class Paint>
+  friend void open_voxels_sse2::paintBall(OpenVoxels&, int, int64_t, int64_t, int64_t, int64_t, const Window&, Paint&&);
+  template <class Window, class Paint>
   friend VOX_WALK_AVX512_ATTRIBUTE void open_voxels_avx512::paintBall(OpenVoxels&, int, int64_t, int64_t, int64_t,
-                                                                      int64_t, Paint&&);
+                                                                      int64_t, const Window&, Paint&&);
 
   // Words are stored block by block: a block's 64 node words together, and a node's 64 brick words together (the
   // bricks of one node are what a ball's walk reads after testing the node, 512 bytes in a row).
@@ -205,31 +217,41 @@ class OpenVoxels {
     // voxel at `first` from c: left to the walk (fillBricks in analysis/open_voxels_walk.inc), which fills them with
     // its own instructions, sixteen at a time with AVX-512.
     int32_t i0 = 0, bricks = 0, first = 0;
-    // Returns false when the values are those of the last ball already.
-    bool set(int64_t c, int64_t r, int64_t n) {
-      if (c == c_ && r == r_) return false;
+    // Returns false when the values are those of the last ball already. lo..hi: the voxels along the axis that the
+    // walk visits (the ball's reach, within the box and the ball's window); blocks, nodes and bricks outside them are
+    // given kFar, which no ball reaches.
+    static constexpr int32_t kFar = int32_t(1) << 29;  // three of them still fit 32 bits
+    int64_t lo_ = 0, hi_ = -1;
+    int32_t lo_rel = 0, hi_rel = -1;  // lo and hi from c, for fillBricks
+    bool set(int64_t c, int64_t r, int64_t lo, int64_t hi) {
+      if (c == c_ && r == r_ && lo == lo_ && hi == hi_) return false;
       c_ = c;
       r_ = r;
-      k0 = std::max<int64_t>(0, c - r) >> 6;
-      k1 = std::min<int64_t>(n - 1, c + r) >> 6;
+      lo_ = lo;
+      hi_ = hi;
+      k0 = lo >> 6;
+      k1 = hi >> 6;
       const auto count = size_t(k1 - k0 + 1);
       blocks.resize(count);
       node_near.resize(count * 4);
       brick_near.resize(count * 16 + 16);  // room for a last vector of sixteen
       brick_far.resize(count * 16 + 16);
-      // Only what the walk can read is filled: every block and node of the box's blocks and the bricks of the nodes
-      // within r of c. 32-bit: coordinates are below 2^15.
-      const auto c32 = int32_t(c), base = int32_t(k0 * 64);
-      auto near = [c32](int32_t a, int32_t b) {
+      // Only what the walk can read is filled: every block and node of the blocks lo..hi meet and the bricks of the
+      // nodes lo..hi meet. 32-bit: coordinates are below 2^15.
+      const auto c32 = int32_t(c), base = int32_t(k0 * 64), lo32 = int32_t(lo), hi32 = int32_t(hi);
+      auto near = [c32, lo32, hi32](int32_t a, int32_t b) {
+        if (b < lo32 || a > hi32) return kFar;
         const int32_t d = std::max({a - c32, c32 - b, 0});
         return d * d;
       };
       for (int32_t i = 0; i < int32_t(count); ++i) blocks[size_t(i)] = near(base + 64 * i, base + 64 * i + 63);
       for (int32_t i = 0; i < int32_t(count) * 4; ++i) node_near[size_t(i)] = near(base + 16 * i, base + 16 * i + 15);
-      const int64_t b0 = (std::max<int64_t>(0, c - r) >> 4) * 4, b1 = (std::min<int64_t>(n - 1, c + r) >> 4) * 4 + 3;
+      const int64_t b0 = (lo >> 4) * 4, b1 = (hi >> 4) * 4 + 3;
       i0 = int32_t(b0 - k0 * 16);
       bricks = int32_t(b1 - b0 + 1);
       first = base + 4 * i0 - c32;
+      lo_rel = lo32 - c32;
+      hi_rel = hi32 - c32;
       return true;
     }
     int64_t block(int64_t k) const { return blocks[size_t(k - k0)]; }
@@ -312,9 +334,9 @@ namespace open_voxels_avx512 {
 }  // namespace open_voxels_avx512
 #else
 namespace open_voxels_avx512 {  // never taken: avx512Available() is false
-template <class Paint>
-void paintBall(OpenVoxels& o, int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, Paint&& paint) {
-  open_voxels_sse2::paintBall(o, t, cx, cy, cz, s, paint);
+template <class Window, class Paint>
+void paintBall(OpenVoxels& o, int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, const Window& w, Paint&& paint) {
+  open_voxels_sse2::paintBall(o, t, cx, cy, cz, s, w, paint);
 }
 }  // namespace open_voxels_avx512
 #endif

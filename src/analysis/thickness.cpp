@@ -7,7 +7,10 @@
 // r(c) + |c - n| <= r(n), which the discrete distance field fails at most voxels (on a ball of radius 11, 4,747 of
 // 5,800 voxels survive it, 73 the lattice test). What is left (about the medial surface) is sorted by radius and
 // painted largest first; each voxel takes the first ball that reaches it, and balls find the voxels still open
-// through a bit pyramid (analysis/open_voxels.h), so a ball inside material already painted costs a few words.
+// through a bit pyramid (analysis/open_voxels.h), so a ball inside material already painted costs a few words. A
+// larger ball about a neighbour along an axis, painted before, leaves a ball's open voxels on one side of a plane
+// (ballWindow), and the walk visits only the box those planes leave: on each axis along which the field grows, the
+// box stops at or behind the centre (igea at R = 1000: half the time of the whole).
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -177,8 +180,50 @@ class RidgeOffsets {
 
 struct Centre {
   uint32_t s;
-  uint16_t x, y, z;  // box coordinates (dimensions are at most VoxelGrid::kMaxDim)
+  uint16_t x, y, z;      // box coordinates (dimensions are at most VoxelGrid::kMaxDim)
+  int16_t lo[3], hi[3];  // the ball's window (ballWindow): offsets from the centre on each axis, inclusive
 };
+
+// The box about a ball's centre c (squared radius s) outside which the ball will find no voxel open when it is
+// painted. A voxel within the ball of squared radius s_q > s about any voxel q is painted before ball(c): q's ball is
+// painted, or lies inside a larger ball that is (the containment test drops a ball only for a larger one). So an
+// open voxel p of ball(c) has |p - c|^2 < s and |p - q|^2 >= s_q, and for q = c + k u (u a unit axis vector, k > 0),
+// where |p - q|^2 - |p - c|^2 = k^2 - 2 k u.(p - c), the two give 2 k u.(p - c) < k^2 - (s_q - s): along that axis
+// the open voxels lie on c's side of a plane, which cuts the ball at or behind its centre wherever the field grows
+// toward q by at least k^2. The window is the tightest such bound on each axis, both ways, over the neighbours within
+// kWindowReach voxels; field(dx, dy, dz) gives the squared distance at that offset from c (0 outside the box). A ball
+// the planes leave no voxel gets an empty window (lo > hi).
+constexpr int kWindowReach = 9;
+template <class Field>
+void ballWindow(Centre& c, Field&& field) {
+  const int64_t s = c.s;
+  const int64_t r = int64_t(std::sqrt(double(s))) + 1;  // at least the ball's reach (int16: r <= 2^14)
+  for (int a = 0; a < 3; ++a) {
+    int64_t lo = -r, hi = r;
+    for (int64_t k = 1; k <= kWindowReach; ++k) {
+      int64_t e[3] = {0, 0, 0};
+      for (const int64_t sign : {1, -1}) {
+        e[a] = sign * k;
+        const int64_t sq = field(e[0], e[1], e[2]);
+        if (sq <= s) continue;
+        // the largest integer u with 2 k u < k^2 - (sq - s), that is u <= floor((k^2 - (sq - s) - 1) / 2k)
+        const int64_t num = k * k - (sq - s) - 1, den = 2 * k;
+        const int64_t u = num >= 0 ? num / den : -((-num + den - 1) / den);
+        if (sign > 0) {
+          hi = std::min(hi, u);
+        } else {
+          lo = std::max(lo, -u);
+        }
+      }
+    }
+    if (lo > hi) {
+      lo = 1;
+      hi = 0;
+    }
+    c.lo[a] = int16_t(lo);
+    c.hi[a] = int16_t(hi);
+  }
+}
 
 DistanceField copyField(const DistanceField& f) {
   DistanceField c(f.gridDims(), f.frame(), f.boxMin(), f.boxDims(), f.outside());
@@ -328,7 +373,16 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
                   }
                 }
               }
-              if (!inside) bucket.push_back(Centre{uint32_t(s), uint16_t(x), uint16_t(y), uint16_t(z)});
+              if (inside) continue;
+              Centre c{uint32_t(s), uint16_t(x), uint16_t(y), uint16_t(z), {}, {}};
+              if (x >= kWindowReach && y >= kWindowReach && z >= kWindowReach && x < nx - kWindowReach &&
+                  y < ny - kWindowReach && z < nz - kWindowReach) {
+                const uint32_t* here = row + x;
+                ballWindow(c, [&](int64_t dx, int64_t dy, int64_t dz) { return here[dx + nx * dy + plane * dz]; });
+              } else {
+                ballWindow(c, [&](int64_t dx, int64_t dy, int64_t dz) { return at(x + dx, y + dy, z + dz); });
+              }
+              bucket.push_back(c);
             }
           }
         gate.report(0.3 * double(done.fetch_add(1) + 1) / double(nz));
@@ -369,7 +423,8 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
     out.ball_centres = int64_t(centres.size());
 
     // 2. Paint, largest ball first; a voxel takes the first ball that reaches it and is never visited again. Each
-    // thread walks the whole list of balls and paints only the voxels it owns (analysis/open_voxels.h).
+    // thread walks the whole list of balls and paints only the voxels it owns (analysis/open_voxels.h), each ball
+    // within its window.
     analysis_detail::OpenVoxels open(
         d, threads, [&](int64_t x, int64_t y, int64_t z) { return data[x + nx * y + plane * z] != 0; },
         params.simd == ThicknessParams::Simd::kSse2 ? analysis_detail::OpenVoxels::Simd::kSse2
@@ -383,7 +438,9 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
         }
         const Centre c = centres[size_t(k)];
         const uint32_t s = c.s;
-        open.paintBall(t, c.x, c.y, c.z, s, [&](int64_t x, int64_t y, int64_t z) { data[x + nx * y + plane * z] = s; });
+        const analysis_detail::OpenVoxels::Window w{{c.lo[0], c.lo[1], c.lo[2]}, {c.hi[0], c.hi[1], c.hi[2]}};
+        open.paintBall(t, c.x, c.y, c.z, s, w,
+                       [&](int64_t x, int64_t y, int64_t z) { data[x + nx * y + plane * z] = s; });
       }
     });
     if (gate.cancelled()) return cancelled();
