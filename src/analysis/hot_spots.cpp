@@ -11,34 +11,35 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
-#include "analysis/neighbours.h"
+#include "analysis/huge_array.h"
 #include "analysis/progress_gate.h"
 #include "vox/analysis/thickness.h"
 
 namespace vox {
 namespace {
 
+// A regional maximum's component. Its union-find links are kept apart (parent and plateau in findHotSpots), 4 bytes
+// a component: every voxel follows them from its neighbours' labels, and dense they stay in the caches.
 struct Component {
-  uint32_t parent = 0;   // union-find over all merges
-  uint32_t plateau = 0;  // union-find over plateau merges only (equal peaks meeting at the peak level)
-  uint32_t peak = 0;     // squared distance at the maximum
-  uint32_t saddle = 0;   // squared distance where it died (merged into a higher maximum)
+  uint32_t peak = 0;    // squared distance at the maximum
+  uint32_t saddle = 0;  // squared distance where it died (merged into a higher maximum)
   bool dead = false;
   int64_t count = 0;  // plateau voxels
   int64_t sx = 0, sy = 0, sz = 0;
 };
 
-uint32_t findRoot(std::vector<Component>& c, uint32_t i, bool plateau) {
-  auto link = [&](uint32_t k) -> uint32_t& { return plateau ? c[k].plateau : c[k].parent; };
+// The root of i's set in a union-find forest (link[k] == k at a root), compressing the path.
+uint32_t findRoot(std::vector<uint32_t>& link, uint32_t i) {
   uint32_t r = i;
-  while (link(r) != r) r = link(r);
-  while (link(i) != r) {  // path compression
-    const uint32_t next = link(i);
-    link(i) = r;
+  while (link[r] != r) r = link[r];
+  while (link[i] != r) {
+    const uint32_t next = link[i];
+    link[i] = r;
     i = next;
   }
   return r;
@@ -61,7 +62,7 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
   if (max_s > (1u << 26)) {
     return makeError(ErrorCode::kLimit, "hot spots: distances above 8192 voxels are not supported");
   }
-  const int64_t nx = d.nx, ny = d.ny, nz = d.nz, plane = nx * ny;
+  const int64_t nx = d.nx, ny = d.ny, nz = d.nz;
   const uint32_t* data = distance.data();
   analysis_detail::ProgressGate gate(progress);
   auto cancelled = [] { return makeError(ErrorCode::kCancelled, "hot spots cancelled"); };
@@ -81,28 +82,66 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
   start.shrink_to_fit();
   if (!gate.report(0.1)) return cancelled();
 
-  std::vector<uint32_t> label(size_t(d.count()), 0);  // component + 1; 0: not processed yet
+  // component + 1; 0: not processed yet. The voxels come in order of distance, scattered over the part, so each
+  // reads its neighbours' labels from memory: the labels are stored by cells of 4 x 4 x 4 voxels (the 16 voxels of
+  // a cell's layer in one 64-byte line), where the 27 voxels about one lie in about 7 lines (about 10 when stored
+  // by rows); the lines about the voxel kAhead places on, and its distance, are asked for ahead; and
+  // the labels lie on 2 MiB pages where the kernel gives them, so that the reads also find their address
+  // translations.
+  const int64_t cx = (nx + 3) / 4, cy = (ny + 3) / 4, cz = (nz + 3) / 4;
+  auto cell = [cx, cy](int64_t x, int64_t y, int64_t z) {
+    return size_t((((z >> 2) * cy + (y >> 2)) * cx + (x >> 2)) * 64 + ((z & 3) << 4) + ((y & 3) << 2) + (x & 3));
+  };
+  const auto nx32 = uint32_t(nx), ny32 = uint32_t(ny);
+  auto coordinates = [nx32, ny32](int64_t i, int64_t& x, int64_t& y, int64_t& z) {
+    const uint32_t row = uint32_t(i) / nx32;  // (32-bit divisions: the box has fewer than 2^32 voxels)
+    x = uint32_t(i) - row * nx32;
+    y = row % ny32;
+    z = row / ny32;
+  };
+  analysis_detail::HugeArray<uint32_t> label(size_t(cx * cy * cz * 64));
+  constexpr int64_t kAhead = 16;
   std::vector<Component> comps;
-  auto root = [&](uint32_t k) { return findRoot(comps, k, false); };
+  std::vector<uint32_t> parent;   // union-find over all merges
+  std::vector<uint32_t> plateau;  // union-find over plateau merges only (equal peaks meeting at the peak level)
+  auto root = [&](uint32_t k) { return findRoot(parent, k); };
   uint32_t roots[26];
   for (int64_t n = 0; n < filled; ++n) {
+    if (n + kAhead < filled) {
+      const int64_t a = order[size_t(n + kAhead)];
+      __builtin_prefetch(data + a);
+      int64_t ax, ay, az;
+      coordinates(a, ax, ay, az);
+      const int64_t x0 = std::max<int64_t>(ax - 1, 0), x1 = std::min(ax + 1, nx - 1);
+      const int64_t y0 = std::max<int64_t>(ay - 1, 0), y1 = std::min(ay + 1, ny - 1);
+      for (int64_t z = std::max<int64_t>(az - 1, 0); z <= std::min(az + 1, nz - 1); ++z) {
+        __builtin_prefetch(label.data() + cell(x0, y0, z));
+        __builtin_prefetch(label.data() + cell(x1, y0, z));
+        __builtin_prefetch(label.data() + cell(x0, y1, z));
+        __builtin_prefetch(label.data() + cell(x1, y1, z));
+      }
+    }
     const int64_t i = order[size_t(n)];
     const uint32_t s = data[i];
-    const int64_t x = i % nx, y = (i / nx) % ny, z = i / plane;
+    int64_t x, y, z;
+    coordinates(i, x, y, z);
     int nr = 0;
-    analysis_detail::forEach26(x, y, z, nx, ny, nz, [&](int64_t j) {
-      const uint32_t l = label[size_t(j)];
-      if (!l) return;
-      const uint32_t r = root(l - 1);
-      if (std::find(roots, roots + nr, r) == roots + nr) roots[nr++] = r;
-    });
+    for (int64_t qz = std::max<int64_t>(z - 1, 0); qz <= std::min(z + 1, nz - 1); ++qz)
+      for (int64_t qy = std::max<int64_t>(y - 1, 0); qy <= std::min(y + 1, ny - 1); ++qy)
+        for (int64_t qx = std::max<int64_t>(x - 1, 0); qx <= std::min(x + 1, nx - 1); ++qx) {
+          const uint32_t l = label[cell(qx, qy, qz)];
+          if (!l) continue;
+          const uint32_t r = root(l - 1);
+          if (std::find(roots, roots + nr, r) == roots + nr) roots[nr++] = r;
+        }
     uint32_t own;
     if (nr == 0) {
       own = uint32_t(comps.size());
       Component c;
-      c.parent = c.plateau = own;
       c.peak = s;
       comps.push_back(c);
+      parent.push_back(own);
+      plateau.push_back(own);
     } else {
       own = roots[0];  // the highest peak survives; the oldest among equals
       for (int k = 1; k < nr; ++k) {
@@ -113,15 +152,15 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
         const uint32_t r = roots[k];
         if (r == own) continue;
         Component& c = comps[r];
-        c.parent = own;
+        parent[r] = own;
         if (c.peak == s && comps[own].peak == s) {  // one plateau
-          const uint32_t pr = findRoot(comps, r, true);
+          const uint32_t pr = findRoot(plateau, r);
           Component& o = comps[own];
           o.count += comps[pr].count;
           o.sx += comps[pr].sx;
           o.sy += comps[pr].sy;
           o.sz += comps[pr].sz;
-          comps[pr].plateau = own;
+          plateau[pr] = own;
         } else {
           c.dead = true;
           c.saddle = s;
@@ -135,7 +174,7 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
       c.sy += y;
       c.sz += z;
     }
-    label[size_t(i)] = own + 1;
+    label[cell(x, y, z)] = own + 1;
     if ((n & 0xfffff) == 0 && !gate.report(0.1 + 0.8 * double(n) / double(filled))) return cancelled();
   }
 
@@ -146,7 +185,7 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
   std::vector<int64_t> spot_of(comps.size(), -1);
   for (uint32_t k = 0; k < comps.size(); ++k) {
     const Component& c = comps[k];
-    if (c.plateau != k) continue;  // absorbed into another plateau
+    if (plateau[k] != k) continue;  // absorbed into another plateau
     const double r = std::sqrt(double(c.peak));
     const double dyn = c.dead ? r - std::sqrt(double(c.saddle)) : r;
     if (c.dead && dyn < params.min_dynamic_voxels) continue;
@@ -162,19 +201,35 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
     spot_of[k] = int64_t(out.size());
     out.push_back(hs);
   }
-  // The plateau voxel nearest each reported centre.
+  // The plateau voxel nearest each reported centre, among the voxels at the levels of the reported peaks: the order is
+  // by distance, so those lie in one range of it per level, found by bisection.
   std::vector<double> best(out.size(), INFINITY);
-  for (int64_t n = 0; n < filled; ++n) {
-    const int64_t i = order[size_t(n)];
-    const uint32_t k = findRoot(comps, label[size_t(i)] - 1, true);
-    if (spot_of[k] < 0 || comps[k].peak != data[i]) continue;
-    HotSpot& hs = out[size_t(spot_of[k])];
-    const glm::ivec3 v = glm::ivec3(int32_t(i % nx), int32_t((i / nx) % ny), int32_t(i / plane)) + lo;
-    const glm::dvec3 p = frame.voxelCentre(v.x, v.y, v.z) - hs.centre;
-    const double dd = p.x * p.x + p.y * p.y + p.z * p.z;
-    if (dd < best[size_t(spot_of[k])]) {
-      best[size_t(spot_of[k])] = dd;
-      hs.voxel = v;
+  std::vector<uint32_t> levels;
+  for (uint32_t k = 0; k < comps.size(); ++k)
+    if (spot_of[k] >= 0) levels.push_back(comps[k].peak);
+  std::sort(levels.begin(), levels.end());
+  levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+  auto at = [&](uint32_t level) {  // the range of order at `level`
+    const auto first = std::partition_point(order.begin(), order.end(), [&](uint32_t i) { return data[i] > level; });
+    const auto last = std::partition_point(first, order.end(), [&](uint32_t i) { return data[i] >= level; });
+    return std::pair<int64_t, int64_t>(first - order.begin(), last - order.begin());
+  };
+  for (const uint32_t level : levels) {
+    const auto range = at(level);
+    for (int64_t n = range.first; n < range.second; ++n) {
+      const int64_t i = order[size_t(n)];
+      int64_t x, y, z;
+      coordinates(i, x, y, z);
+      const uint32_t k = findRoot(plateau, label[cell(x, y, z)] - 1);
+      if (spot_of[k] < 0 || comps[k].peak != data[i]) continue;
+      HotSpot& hs = out[size_t(spot_of[k])];
+      const glm::ivec3 v = glm::ivec3(int32_t(x), int32_t(y), int32_t(z)) + lo;
+      const glm::dvec3 p = frame.voxelCentre(v.x, v.y, v.z) - hs.centre;
+      const double dd = p.x * p.x + p.y * p.y + p.z * p.z;
+      if (dd < best[size_t(spot_of[k])]) {
+        best[size_t(spot_of[k])] = dd;
+        hs.voxel = v;
+      }
     }
   }
   std::stable_sort(out.begin(), out.end(), [](const HotSpot& a, const HotSpot& b) { return a.radius > b.radius; });
