@@ -85,12 +85,17 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
   // component + 1; 0: not processed yet. The voxels come in order of distance, scattered over the part, so each
   // reads its neighbours' labels from memory: the labels are stored by cells of 4 x 4 x 4 voxels (the 16 voxels of
   // a cell's layer in one 64-byte line), where the 27 voxels about one lie in about 7 lines (about 10 when stored
-  // by rows); the lines about the voxel kAhead places on, and its distance, are asked for ahead; and
-  // the labels lie on 2 MiB pages where the kernel gives them, so that the reads also find their address
-  // translations.
-  const int64_t cx = (nx + 3) / 4, cy = (ny + 3) / 4, cz = (nz + 3) / 4;
-  auto cell = [cx, cy](int64_t x, int64_t y, int64_t z) {
-    return size_t((((z >> 2) * cy + (y >> 2)) * cx + (x >> 2)) * 64 + ((z & 3) << 4) + ((y & 3) << 2) + (x & 3));
+  // by rows); the lines about the voxel kAhead places on, and its distance, are asked for ahead; and the labels lie
+  // on 2 MiB pages where the kernel gives them, so that the reads also find their address translations. (A cell is
+  // one voxel wide along an axis of fewer than 16 voxels: rounding the box up to whole cells then adds at most 3/16
+  // along any axis, where a plate one voxel thick would take four times its labels.)
+  auto shift = [](int64_t n) { return n >= 16 ? 2 : 0; };
+  const int sx = shift(nx), sy = shift(ny), sz = shift(nz);
+  const int64_t mx = (int64_t(1) << sx) - 1, my = (int64_t(1) << sy) - 1, mz = (int64_t(1) << sz) - 1;
+  const int64_t cx = (nx + mx) >> sx, cy = (ny + my) >> sy, cz = (nz + mz) >> sz;
+  auto cell = [=](int64_t x, int64_t y, int64_t z) {
+    return size_t(((((z >> sz) * cy + (y >> sy)) * cx + (x >> sx)) << (sx + sy + sz)) + ((z & mz) << (sx + sy)) +
+                  ((y & my) << sx) + (x & mx));
   };
   const auto nx32 = uint32_t(nx), ny32 = uint32_t(ny);
   auto coordinates = [nx32, ny32](int64_t i, int64_t& x, int64_t& y, int64_t& z) {
@@ -99,7 +104,7 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
     y = row % ny32;
     z = row / ny32;
   };
-  analysis_detail::HugeArray<uint32_t> label(size_t(cx * cy * cz * 64));
+  analysis_detail::HugeArray<uint32_t> label(size_t((cx * cy * cz) << (sx + sy + sz)));
   constexpr int64_t kAhead = 16;
   std::vector<Component> comps;
   std::vector<uint32_t> parent;   // union-find over all merges

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/huge_array.h"
 #include "analysis/open_voxels.h"
 #include "analysis/progress_gate.h"
 #include "vox/analysis/thickness.h"
@@ -185,14 +186,16 @@ struct Centre {
 };
 
 // The box about a ball's centre c (squared radius s) outside which the ball will find no voxel open when it is
-// painted. A voxel within the ball of squared radius s_q > s about any voxel q is painted before ball(c): q's ball is
-// painted, or lies inside a larger ball that is (the containment test drops a ball only for a larger one). So an
-// open voxel p of ball(c) has |p - c|^2 < s and |p - q|^2 >= s_q, and for q = c + k u (u a unit axis vector, k > 0),
-// where |p - q|^2 - |p - c|^2 = k^2 - 2 k u.(p - c), the two give 2 k u.(p - c) < k^2 - (s_q - s): along that axis
-// the open voxels lie on c's side of a plane, which cuts the ball at or behind its centre wherever the field grows
-// toward q by at least k^2. The window is the tightest such bound on each axis, both ways, over the neighbours within
-// kWindowReach voxels; field(dx, dy, dz) gives the squared distance at that offset from c (0 outside the box). A ball
-// the planes leave no voxel gets an empty window (lo > hi).
+// painted. A voxel within the ball of squared radius s_q > s about any voxel q is painted before ball(c), by induction
+// on the balls larger than s, walked before it: q's ball is walked, or lies inside a larger ball that is (the
+// containment test drops a ball only for a larger one), and a walked ball leaves no voxel of its own ball open (those
+// outside its window were painted already, by the same argument). So an open voxel p of ball(c) has |p - c|^2 < s and
+// |p - q|^2 >= s_q, and for q = c + k u (u a unit axis vector, k > 0), where |p - q|^2 - |p - c|^2 = k^2 - 2 k u.(p -
+// c), the two give 2 k u.(p - c) < k^2 - (s_q - s): along that axis the open voxels lie on c's side of a plane, which
+// cuts the ball at or behind its centre wherever the field grows toward q by at least k^2. The window is the tightest
+// such bound on each axis, both ways, over the neighbours within kWindowReach voxels; field(dx, dy, dz) gives the
+// squared distance at that offset from c (0 outside the box). A ball the planes leave no voxel gets an empty window (lo
+// > hi).
 constexpr int kWindowReach = 9;
 template <class Field>
 void ballWindow(Centre& c, Field&& field) {
