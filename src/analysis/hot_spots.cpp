@@ -17,6 +17,7 @@
 #include <glm/vec3.hpp>
 
 #include "analysis/huge_array.h"
+#include "analysis/neighbours.h"
 #include "analysis/progress_gate.h"
 #include "vox/analysis/thickness.h"
 
@@ -131,14 +132,12 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
     int64_t x, y, z;
     coordinates(i, x, y, z);
     int nr = 0;
-    for (int64_t qz = std::max<int64_t>(z - 1, 0); qz <= std::min(z + 1, nz - 1); ++qz)
-      for (int64_t qy = std::max<int64_t>(y - 1, 0); qy <= std::min(y + 1, ny - 1); ++qy)
-        for (int64_t qx = std::max<int64_t>(x - 1, 0); qx <= std::min(x + 1, nx - 1); ++qx) {
-          const uint32_t l = label[cell(qx, qy, qz)];
-          if (!l) continue;
-          const uint32_t r = root(l - 1);
-          if (std::find(roots, roots + nr, r) == roots + nr) roots[nr++] = r;
-        }
+    analysis_detail::forEach26At(x, y, z, nx, ny, nz, [&](int64_t qx, int64_t qy, int64_t qz) {
+      const uint32_t l = label[cell(qx, qy, qz)];
+      if (!l) return;
+      const uint32_t r = root(l - 1);
+      if (std::find(roots, roots + nr, r) == roots + nr) roots[nr++] = r;
+    });
     uint32_t own;
     if (nr == 0) {
       own = uint32_t(comps.size());

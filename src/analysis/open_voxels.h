@@ -174,8 +174,8 @@ class OpenVoxels {
   struct Reach {
     int64_t k0 = 0, k1 = -1;  // blocks k0..k1
     std::vector<int32_t> blocks, node_near, brick_near, brick_far;
-    int64_t c_ = -1, r_ = -1;  // what the values are for (with lo_ and hi_): the balls of one size come in Morton
-                               // order, and consecutive ones often share a coordinate
+    int64_t c_ = -1;  // what the values are for (with lo_ and hi_): the balls of one size come in Morton order,
+                      // and consecutive ones often share a coordinate
     // The bricks' values to fill, brick_near[i0 + i] and brick_far[i0 + i] for i < bricks, the first brick's first
     // voxel at `first` from c: left to the walk (fillBricks in analysis/open_voxels_walk.inc), which fills them with
     // its own instructions, sixteen at a time with AVX-512.
@@ -188,10 +188,9 @@ class OpenVoxels {
     static_assert(int64_t(VoxelGrid::kMaxDim) * VoxelGrid::kMaxDim < kFar);
     int64_t lo_ = 0, hi_ = -1;
     int32_t lo_rel = 0, hi_rel = -1;  // lo and hi from c, for fillBricks
-    bool set(int64_t c, int64_t r, int64_t lo, int64_t hi) {
-      if (c == c_ && r == r_ && lo == lo_ && hi == hi_) return false;
+    bool set(int64_t c, int64_t lo, int64_t hi) {
+      if (c == c_ && lo == lo_ && hi == hi_) return false;
       c_ = c;
-      r_ = r;
       lo_ = lo;
       hi_ = hi;
       k0 = lo >> 6;

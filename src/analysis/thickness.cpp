@@ -186,17 +186,17 @@ struct Centre {
 };
 
 // The box about a ball's centre c (squared radius s) outside which the ball will find no voxel open when it is
-// painted. A voxel within the ball of squared radius s_q > s about any voxel q is painted before ball(c), by induction
-// on the balls larger than s, walked before it: q's ball is walked, or lies inside a larger ball that is (the
-// containment test drops a ball only for a larger one), and a walked ball leaves no voxel of its own ball open (those
-// outside its window were painted already, by the same argument). So an open voxel p of ball(c) has |p - c|^2 < s and
-// |p - q|^2 >= s_q, and for q = c + k u (u a unit axis vector, k > 0), where |p - q|^2 - |p - c|^2 = k^2 - 2 k u.(p -
-// c), the two give 2 k u.(p - c) < k^2 - (s_q - s): along that axis the open voxels lie on c's side of a plane, which
-// cuts the ball at or behind its centre wherever the field grows toward q by at least k^2. The window is the tightest
-// such bound on each axis, both ways, over the neighbours within kWindowReach voxels; field(dx, dy, dz) gives the
-// squared distance at that offset from c (0 outside the box). A ball the planes leave no voxel gets an empty window (lo
-// > hi).
-constexpr int kWindowReach = 9;
+// painted. A voxel within the ball of squared radius s_q > s about any voxel q is painted before ball(c), by
+// induction on the balls larger than s, walked before it: q's ball is walked, or lies inside a larger ball that is
+// (the containment test drops a ball only for a larger one), and a walked ball leaves no voxel of its own ball open
+// (those outside its window were painted already, by the same argument). So an open voxel p of ball(c) has
+// |p - c|^2 < s and |p - q|^2 >= s_q. For q = c + k u (u a unit axis vector, k > 0),
+// |p - q|^2 - |p - c|^2 = k^2 - 2 k u.(p - c), and the two give 2 k u.(p - c) < k^2 - (s_q - s): along that axis
+// the open voxels lie on c's side of a plane, which cuts the ball at or behind its centre wherever the field grows
+// toward q by at least k^2. The window is the tightest such bound on each axis, both ways, over the neighbours
+// within kWindowReach voxels; field(dx, dy, dz) gives the squared distance at that offset from c (0 outside the
+// box). A ball the planes leave no voxel gets an empty window (lo > hi).
+constexpr int kWindowReach = LatticeCover::kReach;  // (the containment test's box check lets both read that far)
 template <class Field>
 void ballWindow(Centre& c, Field&& field) {
   const int64_t s = c.s;
@@ -353,8 +353,9 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
               if (x + kAhead < nx && row[x + kAhead]) cover.prefetch(row[x + kAhead]);  // (empty voxels test nothing)
               if (!s) continue;
               bool inside = false;
-              const int64_t K = LatticeCover::kReach;
-              if (x >= K && y >= K && z >= K && x < nx - K && y < ny - K && z < nz - K) {  // no offset leaves the box
+              const int64_t K = LatticeCover::kReach;  // (= kWindowReach)
+              const bool interior = x >= K && y >= K && z >= K && x < nx - K && y < ny - K && z < nz - K;
+              if (interior) {  // no offset leaves the box
                 const uint32_t* here = row + x;
                 if (last && cover.inside(s, here[last->delta], *last)) continue;
                 const int64_t gx = int64_t(here[1]) - here[-1], gy = int64_t(here[nx]) - here[-nx],
@@ -378,8 +379,7 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
               }
               if (inside) continue;
               Centre c{uint32_t(s), uint16_t(x), uint16_t(y), uint16_t(z), {}, {}};
-              if (x >= kWindowReach && y >= kWindowReach && z >= kWindowReach && x < nx - kWindowReach &&
-                  y < ny - kWindowReach && z < nz - kWindowReach) {
+              if (interior) {
                 const uint32_t* here = row + x;
                 ballWindow(c, [&](int64_t dx, int64_t dy, int64_t dz) { return here[dx + nx * dy + plane * dz]; });
               } else {
