@@ -79,8 +79,14 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
   for (int64_t i = 0; i < d.count(); ++i) {
     if (data[i]) order[size_t(start[size_t(max_s - data[i])]++)] = uint32_t(i);
   }
-  start.clear();
-  start.shrink_to_fit();
+  // Now start[k] ends the voxels at squared distance max_s - k in order: the loops below know each voxel's distance
+  // from its place in order, and never read the field (the voxels come scattered over it, each read a miss in the
+  // caches and in the address translations).
+  const std::vector<int64_t>& level_end = start;
+  auto levelRange = [&](uint32_t level) {  // the range of order at `level`
+    const size_t k = max_s - level;
+    return std::pair<int64_t, int64_t>(k == 0 ? 0 : level_end[k - 1], level_end[k]);
+  };
   if (!gate.report(0.1)) return cancelled();
 
   // component + 1; 0: not processed yet. The voxels come in order of distance, scattered over the part, so each
@@ -112,10 +118,10 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
   std::vector<uint32_t> plateau;  // union-find over plateau merges only (equal peaks meeting at the peak level)
   auto root = [&](uint32_t k) { return findRoot(parent, k); };
   uint32_t roots[26];
+  size_t level = 0;  // the voxel's bucket: squared distance max_s - level
   for (int64_t n = 0; n < filled; ++n) {
     if (n + kAhead < filled) {
       const int64_t a = order[size_t(n + kAhead)];
-      __builtin_prefetch(data + a);
       int64_t ax, ay, az;
       coordinates(a, ax, ay, az);
       const int64_t x0 = std::max<int64_t>(ax - 1, 0), x1 = std::min(ax + 1, nx - 1);
@@ -128,7 +134,8 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
       }
     }
     const int64_t i = order[size_t(n)];
-    const uint32_t s = data[i];
+    while (n >= level_end[level]) ++level;
+    const auto s = uint32_t(max_s - level);
     int64_t x, y, z;
     coordinates(i, x, y, z);
     int nr = 0;
@@ -206,26 +213,21 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
     out.push_back(hs);
   }
   // The plateau voxel nearest each reported centre, among the voxels at the levels of the reported peaks: the order is
-  // by distance, so those lie in one range of it per level, found by bisection.
+  // by distance, so those lie in one range of it per level.
   std::vector<double> best(out.size(), INFINITY);
   std::vector<uint32_t> levels;
   for (uint32_t k = 0; k < comps.size(); ++k)
     if (spot_of[k] >= 0) levels.push_back(comps[k].peak);
   std::sort(levels.begin(), levels.end());
   levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
-  auto at = [&](uint32_t level) {  // the range of order at `level`
-    const auto first = std::partition_point(order.begin(), order.end(), [&](uint32_t i) { return data[i] > level; });
-    const auto last = std::partition_point(first, order.end(), [&](uint32_t i) { return data[i] >= level; });
-    return std::pair<int64_t, int64_t>(first - order.begin(), last - order.begin());
-  };
-  for (const uint32_t level : levels) {
-    const auto range = at(level);
+  for (const uint32_t peak : levels) {
+    const auto range = levelRange(peak);
     for (int64_t n = range.first; n < range.second; ++n) {
       const int64_t i = order[size_t(n)];
       int64_t x, y, z;
       coordinates(i, x, y, z);
       const uint32_t k = findRoot(plateau, label[cell(x, y, z)] - 1);
-      if (spot_of[k] < 0 || comps[k].peak != data[i]) continue;
+      if (spot_of[k] < 0 || comps[k].peak != peak) continue;
       HotSpot& hs = out[size_t(spot_of[k])];
       const glm::ivec3 v = glm::ivec3(int32_t(x), int32_t(y), int32_t(z)) + lo;
       const glm::dvec3 p = frame.voxelCentre(v.x, v.y, v.z) - hs.centre;
