@@ -213,6 +213,50 @@ Status minWallAt(AppState& s, const ActionArgs& a) {  // VALUE: the Thickness pa
   return Ok{};
 }
 
+namespace {
+
+// A place in the Thickness panel's lists, voxels lo..hi: the section along its axis through its middle, the 3D view
+// turned about it and brought near enough to see it.
+void showThicknessPlace(AppState& s, glm::ivec3 lo, glm::ivec3 hi) {
+  const int a = int(s.section.axis);
+  s.section.index = std::clamp((lo[a] + hi[a]) / 2, 0, std::max(axisLength(s, s.section.axis) - 1, 0));
+  const glm::ivec3 size = hi - lo + 1;
+  centreView(s, glm::dvec3(lo + hi + 1) * 0.5, double(std::max({size.x, size.y, size.z})));
+  s.thickness_ui.selected_version = s.model_version;
+  showPanel(s, Panel::kThickness);
+}
+
+}  // namespace
+
+Status thinRegionAt(AppState& s, const ActionArgs& a) {
+  const ThinWalls* thin = currentThinWalls(s);
+  const int64_t count = thin ? int64_t(thin->regions.size()) : 0;
+  if (count == 0) return badValues("thin-region: no wall is thinner than the minimum wall");
+  int64_t n = 0;
+  if (!parseNumber(a.words[0], n) || n < 1 || n > count) {
+    return badValues("thin-region takes a region's number in the Thickness panel's list, 1 to " +
+                     std::to_string(count));
+  }
+  const ThinWallRegion& g = thin->regions[size_t(n - 1)];
+  showThicknessPlace(s, g.bbox_min_ijk, g.bbox_max_ijk);
+  s.thickness_ui.selected_region = int32_t(n - 1);
+  return Ok{};
+}
+
+Status hotSpotAt(AppState& s, const ActionArgs& a) {
+  const ThicknessResult* r = currentThickness(s);
+  const int64_t count = r ? int64_t(r->hot_spots.size()) : 0;
+  int64_t n = 0;
+  if (!parseNumber(a.words[0], n) || n < 1 || n > count) {
+    return badValues("hot-spot takes a hot spot's number in the Thickness panel's list, 1 to " + std::to_string(count));
+  }
+  const HotSpot& spot = r->hot_spots[size_t(n - 1)];
+  const auto reach = int32_t(std::ceil(spot.radius / s.model.voxelSize()));  // its inscribed ball
+  showThicknessPlace(s, spot.voxel - reach, spot.voxel + reach);
+  s.thickness_ui.selected_spot = int32_t(n - 1);
+  return Ok{};
+}
+
 // ---- Section ----
 void sectionPrev(AppState& s) { stepSection(s, -s.section.step); }
 void sectionNext(AppState& s) { stepSection(s, s.section.step); }

@@ -73,6 +73,8 @@ const Action kActions[] = {
   {ActionId::kPanelThickness, "panel-thickness", "View",    "Thickness panel",                    {GLFW_KEY_6, kCtrl},         0, 0,  panelThickness, nullptr,          nullptr,     onThickness},
   {ActionId::kPanelParts,     "panel-parts",     "View",    "Parts panel",                        {GLFW_KEY_7, kCtrl},         0, 0,  panelParts,    nullptr,           nullptr,     onParts},
   {ActionId::kMinWall,        "min-wall",        nullptr,   "Minimum wall (model units)",         kNone,                       1, 1,  nullptr,       minWallAt,         hasSection,  nullptr},
+  {ActionId::kThinRegion,     "thin-region",     nullptr,   "Show a thin-wall region",            kNone,                       1, 1,  nullptr,       thinRegionAt,      hasThickness, nullptr},
+  {ActionId::kHotSpot,        "hot-spot",        nullptr,   "Show a hot spot",                    kNone,                       1, 1,  nullptr,       hotSpotAt,         hasThickness, nullptr},
 
   {ActionId::kSectionPrev,    "section-prev",    "Section", "Previous section",                   {GLFW_KEY_PAGE_DOWN, 0},     0, 0,  sectionPrev,   nullptr,           hasSection,  nullptr},
   {ActionId::kSectionNext,    "section-next",    "Section", "Next section",                       {GLFW_KEY_PAGE_UP, 0},       0, 0,  sectionNext,   nullptr,           hasSection,  nullptr},

@@ -64,6 +64,8 @@ enum class ActionId {
   kPanelThickness,
   kPanelParts,
   kMinWall,
+  kThinRegion,
+  kHotSpot,
   kSectionPrev,
   kSectionNext,
   kSectionPlay,

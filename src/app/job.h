@@ -134,6 +134,15 @@ class AsyncValue {
   // The value for exactly this key, or null.
   const T* get(const Key& key) const { return value_ && value_key_ == key ? &*value_ : nullptr; }
   const Error* error(const Key& key) const { return error_ && value_key_ == key ? &*error_ : nullptr; }
+  // The value held, whatever its key (null when none).
+  const T* held() const { return value_ ? &*value_ : nullptr; }
+  // The value held becomes the value for `key` (the caller knows it is: the same input under another key); a
+  // computation under way for another key is abandoned.
+  void rekey(const Key& key) {
+    if (!value_) return;
+    if (job_.active() && job_key_ != key) job_.abandon();
+    value_key_ = key;
+  }
   bool computing(const Key& key) const { return job_.active() && job_key_ == key; }
   bool busy() const { return job_.active(); }
   double progress() const { return job_.progress(); }

@@ -71,10 +71,7 @@ void showInterferencePair(AppState& state, int32_t i) {
   state.section.index =
       std::clamp(int(std::floor(centre[a])), 0, std::max(axisLength(state, state.section.axis) - 1, 0));
   const glm::ivec3 size = p.box.size();
-  const double extent = double(std::max({size.x, size.y, size.z}));
-  state.view.camera.target = centre;
-  state.view.camera.distance = std::min(state.view.camera.distance, std::max(40.0, 6.0 * extent));
-  state.view.fit_pending = false;
+  centreView(state, centre, double(std::max({size.x, size.y, size.z})));
 }
 
 std::string interferencePairText(const AppState& state) {

@@ -7,6 +7,7 @@
 
 #include "app/messages.h"
 #include "app/parts.h"
+#include "app/thickness_view.h"
 
 namespace vox::app {
 namespace {
@@ -90,7 +91,8 @@ void syncPartRenderers(AppState& state) {
 
 bool drawsParts(const AppState& state) {
   const Assembly* parts = currentParts(state);
-  return parts && state.viewport.parts.size() == parts->size() && state.viewport.parts_version != 0;
+  return parts && state.viewport.parts.size() == parts->size() && state.viewport.parts_version != 0 &&
+         !shownThickness(state);  // the thickness colours the model's points
 }
 
 std::optional<render::Box3> partsBounds(const AppState& state) {

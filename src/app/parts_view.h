@@ -16,7 +16,8 @@ namespace vox::app {
 // holds a part's voxels and placement as they are stays as it is; the others are filled again (Viewport::part_fills
 // counts them). Cost O(points of the parts that changed) plus O(layers) per part to compare.
 void syncPartRenderers(AppState& state);
-// True when the 3D view draws the parts (instead of the model as one grid).
+// True when the 3D view draws the parts (instead of the model as one grid): a scene of parts, unless the Thickness
+// panel colours the model by its thickness.
 bool drawsParts(const AppState& state);
 // The box of the parts' surface points (the selected part's alone when the scope is the selected part) in the
 // model's voxel-index space, for the camera's fit and depth range; nullopt while the parts are not drawn.

@@ -13,7 +13,9 @@
 //   section AXIS INDEX               the section at voxel INDEX along x|y|z (and the Section panel)
 //   peel N | peel-one | peel-back | peel-core | peel-reset
 //   xray AXIS MODE                   X-ray along x|y|z, MODE min|max|total (and the X-ray panel)
-//   panel-model | panel-section | panel-skin | panel-xray | panel-mass
+//   panel-model | panel-section | panel-skin | panel-xray | panel-mass | panel-thickness | panel-parts
+//   min-wall W | thin-region N | hot-spot N   the Thickness panel's minimum wall (model units); row N of its lists of
+//                                    thin-wall regions and hot spots, selected and shown (section and 3D view there)
 //   view YAW PITCH | view-iso | view-pos-x | view-neg-x | ... | zoom FACTOR | zoom-in | zoom-out | fit
 //   measure I J K | measure-clear    pick voxel (I, J, K) for measuring, as a click does (two: their distance)
 //   lit on|off, round on|off, disputed on|off, cut on|off, lod on|off   (no value: toggle)

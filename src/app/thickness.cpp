@@ -11,11 +11,26 @@
 
 namespace vox::app {
 
+namespace {
+
+// The same voxels in the same place and size (the units' name may differ: a result's lengths do not depend on it).
+bool sameSolid(const VoxelGrid& a, const VoxelGrid& b) {
+  return a.frame().origin == b.frame().origin && a.frame().voxel_size == b.frame().voxel_size && a.sameVoxels(b);
+}
+
+}  // namespace
+
 void requestThickness(AppState& state) {
   state.thickness.poll();
   if (state.panel != Panel::kThickness || state.model.empty()) return;
   const uint64_t key = state.model_version;
   if (state.thickness_ui.cancelled_version == key || !state.thickness.wants(key)) return;
+  // The model holds the voxels of the result at hand (an operation that left the solid as it was, such as a split
+  // into bodies, or the undo of one that changed it back): that result is the model's, not computed again.
+  if (const auto* held = state.thickness.held(); held && *held && sameSolid((*held)->grid, state.model)) {
+    state.thickness.rekey(key);
+    return;
+  }
   VoxelGrid grid = state.model;
   state.thickness.request(key, "Computing thickness", [grid](const ProgressFn& progress) {
     using R = Result<std::shared_ptr<const ThicknessResult>>;
@@ -31,6 +46,7 @@ void requestThickness(AppState& state) {
     auto thickness = computeThickness(std::move(distance).value(), {}, part(0.5, 1.0));
     if (!thickness) return R(thickness.error());
     auto out = std::make_shared<ThicknessResult>();
+    out->grid = grid;
     out->thickness = std::move(thickness).value();
     out->hot_spots = std::move(hot).value();
     out->seconds = nowSeconds() - t0;
@@ -63,6 +79,7 @@ const ThinWalls* currentThinWalls(AppState& state) {
   ThicknessUi& ui = state.thickness_ui;
   const double wall = minWall(state);
   if (!ui.thin || ui.thin_version != state.model_version || ui.thin_min_wall != wall) {
+    ui.selected_region = -1;  // its index was into the regions found before
     auto thin = findThinWalls(r->thickness, wall);
     ui.thin_version = state.model_version;
     ui.thin_min_wall = wall;
@@ -73,6 +90,24 @@ const ThinWalls* currentThinWalls(AppState& state) {
     }
   }
   return ui.thin ? &*ui.thin : nullptr;
+}
+
+const ThinWallRegion* selectedRegion(AppState& state) {
+  const ThinWalls* thin = currentThinWalls(state);
+  const ThicknessUi& ui = state.thickness_ui;
+  if (!thin || ui.selected_version != state.model_version || ui.selected_region < 0 ||
+      size_t(ui.selected_region) >= thin->regions.size())
+    return nullptr;
+  return &thin->regions[size_t(ui.selected_region)];
+}
+
+const HotSpot* selectedHotSpot(const AppState& state) {
+  const ThicknessResult* r = currentThickness(state);
+  const ThicknessUi& ui = state.thickness_ui;
+  if (!r || ui.selected_version != state.model_version || ui.selected_spot < 0 ||
+      size_t(ui.selected_spot) >= r->hot_spots.size())
+    return nullptr;
+  return &r->hot_spots[size_t(ui.selected_spot)];
 }
 
 Status peelDistance(AppState& state, double distance) {

@@ -1,6 +1,7 @@
 #pragma once
 // The Thickness panel's analyses: distance, local thickness and hot spots of the model computed in the background
-// while the panel is open (keyed by the model version, so undo of anything that leaves the model alone keeps them),
+// while the panel is open (keyed by the model version, and kept for another version of the same voxels: an operation
+// that leaves the solid as it was, or its undo, keeps them),
 // the thin walls under the minimum wall (main thread: cheap), and the round skin removal (peel by distance) as an
 // undoable change of the model. No ImGui and no GL here.
 #include <string>
@@ -20,6 +21,10 @@ void retryThickness(AppState& state);
 double minWall(const AppState& state);
 // Thin walls under minWall, found again when the value or the model changed; null without a thickness.
 const ThinWalls* currentThinWalls(AppState& state);
+// The thin-wall region and the hot spot last clicked in the panel's lists: null when none was, or when the model or
+// the thin walls have changed since.
+const ThinWallRegion* selectedRegion(AppState& state);
+const HotSpot* selectedHotSpot(const AppState& state);
 // Replaces the model by the model without every voxel within `distance` (model units) of the empty space: an
 // undoable change labelled "peel 0.5 mm round". Fails, saying why, without a model or for a negative distance.
 Status peelDistance(AppState& state, double distance);

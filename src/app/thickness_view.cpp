@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -19,10 +20,6 @@ constexpr ImU32 kThinColour = IM_COL32(242, 31, 26, 255);  // points.vert's red 
 constexpr ImU32 kThinTextColour = IM_COL32(255, 120, 110, 255);
 constexpr ImU32 kHotSpotColour = IM_COL32(255, 60, 220, 255);
 constexpr int kMostHotSpotsShown = 20;
-
-const ThicknessResult* shownThickness(const AppState& state) {
-  return state.panel == Panel::kThickness && !state.model.empty() ? currentThickness(state) : nullptr;
-}
 
 // Text with a dark shadow, readable over any colour of the model.
 void shadowText(ImDrawList* dl, ImVec2 p, ImU32 colour, const char* text) {
@@ -64,6 +61,10 @@ void hoverReadout(const AppState& state, const ThicknessResult& r, ImDrawList* d
 }
 
 }  // namespace
+
+const ThicknessResult* shownThickness(const AppState& state) {
+  return state.panel == Panel::kThickness && !state.model.empty() ? currentThickness(state) : nullptr;
+}
 
 ImU32 thicknessColour(double thickness, double max, double min_wall) {
   if (thickness < min_wall) return kThinColour;
@@ -164,15 +165,15 @@ void drawThicknessStrip(ImDrawList* dl, ImVec2 at, float width, double max, doub
   }
 }
 
-void drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, int h, double aspect) {
-  if (state.panel != Panel::kThickness || state.model.empty() || !state.model_bounds) return;
+float drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, int h, double aspect) {
+  if (state.panel != Panel::kThickness || state.model.empty() || !state.model_bounds) return pos.y;
   const ThicknessResult* r = shownThickness(state);
   const float lh = ImGui::GetTextLineHeightWithSpacing();
   if (!r) {
     const bool cancelled = state.thickness_ui.cancelled_version == state.model_version;
     shadowText(dl, ImVec2(pos.x + 8.0f, pos.y + 8.0f), IM_COL32(230, 230, 230, 255),
                cancelled ? "Thickness cancelled (Compute thickness in the panel)" : "Computing thickness...");
-    return;
+    return pos.y + 8.0f + lh;
   }
   const std::string units = state.model.frame().units;
   const glm::dmat4 vp = state.view.camera.viewProjection(aspect, *state.model_bounds);
@@ -184,6 +185,30 @@ void drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, in
     dl->AddCircle(c, 8.0f, kHotSpotColour, 0, 2.0f);
     shadowText(dl, ImVec2(c.x + 10.0f, c.y - 18.0f), kHotSpotColour, std::to_string(i + 1).c_str());
   }
+  // The place clicked in the panel's lists: a white ring about the hot spot, the box of the thin-wall region.
+  constexpr ImU32 kMarkColour = IM_COL32(255, 255, 255, 255);
+  if (const HotSpot* spot = selectedHotSpot(state)) {
+    ImVec2 c;
+    if (project(vp, glm::dvec3(spot->voxel) + 0.5, pos, w, h, c)) {
+      dl->AddCircle(c, 14.0f, IM_COL32(0, 0, 0, 255), 0, 4.0f);
+      dl->AddCircle(c, 14.0f, kMarkColour, 0, 2.0f);
+    }
+  }
+  if (const ThinWallRegion* region = selectedRegion(state)) {
+    const glm::dvec3 lo(region->bbox_min_ijk), hi(glm::dvec3(region->bbox_max_ijk) + 1.0);
+    ImVec2 corner[8];
+    bool seen = true;
+    for (int k = 0; k < 8; ++k) {
+      const glm::dvec3 p(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+      seen = seen && project(vp, p, pos, w, h, corner[k]);
+    }
+    for (const auto& [colour, width] : {std::pair(IM_COL32(0, 0, 0, 255), 4.0f), std::pair(kMarkColour, 2.0f)}) {
+      if (!seen) break;
+      for (int k = 0; k < 8; ++k)
+        for (const int bit : {1, 2, 4})
+          if (!(k & bit)) dl->AddLine(corner[k], corner[k | bit], colour, width);  // each edge from its lower corner
+    }
+  }
   // The colour scale along the top, under the view's buttons, with the hot spots' ring explained beside its title.
   const float strip_w = std::clamp(float(w) - 24.0f, 60.0f, 300.0f);
   const float y0 = pos.y + 30.0f;
@@ -192,11 +217,14 @@ void drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, in
   dl->AddCircle(ImVec2(ring_x, y0 + lh * 0.45f), 6.0f, kHotSpotColour, 0, 2.0f);
   shadowText(dl, ImVec2(ring_x + 10.0f, y0), kHotSpotColour, "hot spot");
   drawThicknessStrip(dl, ImVec2(pos.x + 12.0f, y0 + lh + 2.0f), strip_w, r->thickness.stats.max, minWall(state), units);
+  float bottom = y0 + 4.0f * lh;  // under the strip's labels (two lines when the minimum wall is marked)
   if (!state.thickness_ui.volume_problem.empty()) {
-    shadowText(dl, ImVec2(pos.x + 12.0f, y0 + 4.0f * lh), IM_COL32(255, 200, 80, 255),
+    shadowText(dl, ImVec2(pos.x + 12.0f, bottom), IM_COL32(255, 200, 80, 255),
                state.thickness_ui.volume_problem.c_str());
+    bottom += lh;
   }
   hoverReadout(state, *r, dl, pos, w, h, aspect);
+  return bottom;
 }
 
 }  // namespace vox::app

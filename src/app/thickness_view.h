@@ -10,13 +10,17 @@
 
 namespace vox::app {
 
+// The thickness the 3D view shows: the model's, while the Thickness panel is open (null otherwise, or before it is
+// computed). The view then draws the model, coloured, even where it is a scene of parts.
+const ThicknessResult* shownThickness(const AppState& state);
 // Uploads the thickness of the model shown to the main renderer while the panel is open (once per model
 // version), and clears it otherwise. A box too large for the GL's 3D textures is refused, with a note for the panel.
 void syncThicknessVolume(AppState& state);
 // Turns the colouring on (and the red below the minimum wall) while the panel shows a thickness.
 void thicknessDrawParams(const AppState& state, render::DrawParams& p);
-// The colour bar, the hot spots and the read-out of the thickness under the mouse, over the view at `pos`.
-void drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, int h, double aspect);
+// The colour bar, the hot spots, the place clicked in the panel's lists and the read-out of the thickness under the
+// mouse, over the view at `pos`. Returns the y below what it wrote at the view's top left (pos.y when nothing).
+float drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, int h, double aspect);
 // A vertical colour bar of `height` pixels at `at`: 0 at the bottom, `max` at the top (model units), red under
 // `min_wall`, labelled. Returns its width with the labels.
 float drawThicknessBar(ImDrawList* dl, ImVec2 at, float height, double max, double min_wall, const std::string& units);

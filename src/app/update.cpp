@@ -122,4 +122,10 @@ int32_t axisLength(const AppState& state, Axis axis) {
   return 0;
 }
 
+void centreView(AppState& state, glm::dvec3 centre, double extent) {
+  state.view.camera.target = centre;
+  state.view.camera.distance = std::min(state.view.camera.distance, std::max(40.0, 6.0 * extent));
+  state.view.fit_pending = false;
+}
+
 }  // namespace vox::app

@@ -16,5 +16,8 @@ const Section* currentSection(AppState& state);
 const XrayResult* currentXray(const AppState& state);
 // Number of voxels along an axis of the model (0 without one).
 int32_t axisLength(const AppState& state, Axis axis);
+// Turns the 3D view about `centre` (voxel coordinates of the model) from where it looks, and comes near enough to see
+// a place `extent` voxels wide well (never farther than it was).
+void centreView(AppState& state, glm::dvec3 centre, double extent);
 
 }  // namespace vox::app

@@ -1,5 +1,6 @@
 #include "app/view_overlays.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -12,7 +13,7 @@
 
 namespace vox::app {
 
-void drawMeasureOverlay(const AppState& state, ImDrawList* dl, ImVec2 pos, int w, int h, double aspect) {
+void drawMeasureOverlay(const AppState& state, ImDrawList* dl, ImVec2 pos, int w, int h, double aspect, float top) {
   const std::vector<glm::ivec3>& picks = measurePicks(state);
   if (picks.empty() || !state.model_bounds) return;
   const glm::dmat4 vp = state.view.camera.viewProjection(aspect, *state.model_bounds);
@@ -28,11 +29,14 @@ void drawMeasureOverlay(const AppState& state, ImDrawList* dl, ImVec2 pos, int w
     dl->AddText(ImVec2(p.x + 9.0f, p.y - 18.0f), IM_COL32(255, 220, 60, 255), label);
   }
   if (screen.size() == 2) dl->AddLine(screen[0], screen[1], IM_COL32(255, 220, 60, 200), 1.5f);
-  float y = pos.y + 30.0f;
+  float y = std::max(top, pos.y + 30.0f);
+  const float wrap = std::max(float(w) - 16.0f, 80.0f);
+  ImFont* font = ImGui::GetFont();
+  const float size = ImGui::GetFontSize();
   for (const std::string& line : measureLines(state)) {
-    dl->AddText(ImVec2(pos.x + 9.0f, y + 1.0f), IM_COL32(0, 0, 0, 255), line.c_str());
-    dl->AddText(ImVec2(pos.x + 8.0f, y), IM_COL32(255, 220, 60, 255), line.c_str());
-    y += ImGui::GetTextLineHeightWithSpacing();
+    dl->AddText(font, size, ImVec2(pos.x + 9.0f, y + 1.0f), IM_COL32(0, 0, 0, 255), line.c_str(), nullptr, wrap);
+    dl->AddText(font, size, ImVec2(pos.x + 8.0f, y), IM_COL32(255, 220, 60, 255), line.c_str(), nullptr, wrap);
+    y += ImGui::CalcTextSize(line.c_str(), nullptr, false, wrap).y + ImGui::GetStyle().ItemSpacing.y;
   }
 }
 

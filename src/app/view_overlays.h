@@ -7,8 +7,9 @@
 
 namespace vox::app {
 
-// The picked voxels as rings at their centres, lettered, and what they measure, at the view's top left.
-void drawMeasureOverlay(const AppState& state, ImDrawList* dl, ImVec2 pos, int w, int h, double aspect);
+// The picked voxels as rings at their centres, lettered, and what they measure, at the view's left from `top` down
+// (below what other read-outs wrote there), each line wrapped to the view's width.
+void drawMeasureOverlay(const AppState& state, ImDrawList* dl, ImVec2 pos, int w, int h, double aspect, float top);
 // The two voxels realising the clearance of two parts (parts.h, clearanceVoxels) as cyan rings joined by a line,
 // with the gap written beside the line.
 void drawClearanceOverlay(const AppState& state, ImDrawList* dl, ImVec2 pos, int w, int h, double aspect);

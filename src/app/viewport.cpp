@@ -354,9 +354,9 @@ void drawViewport(AppState& state) {
                   vp.draw_ms);
     dl->AddText(ImVec2(pos.x + 8.0f, pos.y + float(h) - ImGui::GetFontSize() - 6.0f), IM_COL32(200, 200, 200, 255),
                 info);
-    drawMeasureOverlay(state, dl, pos, w, h, aspect);
+    const float legend_bottom = drawThicknessOverlay(state, dl, pos, w, h, aspect);
+    drawMeasureOverlay(state, dl, pos, w, h, aspect, legend_bottom + 4.0f);
     drawClearanceOverlay(state, dl, pos, w, h, aspect);
-    drawThicknessOverlay(state, dl, pos, w, h, aspect);
     drawAxisTriad(state.view.camera, ImVec2(pos.x + 40.0f, pos.y + float(h) - 60.0f), 28.0f);
     if (vp.overlay_key % 4 == 3) {
       dl->AddText(ImVec2(pos.x + 8.0f, pos.y + 8.0f), IM_COL32(255, 70, 60, 255), interferencePairText(state).c_str());

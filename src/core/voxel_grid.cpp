@@ -236,6 +236,17 @@ bool VoxelGrid::sharesLayerWith(const VoxelGrid& other, int32_t z) const {
   return layers_[size_t(z) + 1] == other.layers_[size_t(z) + 1];
 }
 
+bool VoxelGrid::sameVoxels(const VoxelGrid& other) const {
+  if (dims_ != other.dims_) return false;
+  const auto words = size_t(wordsPerLayer());
+  for (int32_t z = 0; z < nz(); ++z) {
+    if (sharesLayerWith(other, z)) continue;
+    // padding bits are zero in both (rowWords), so whole layers compare
+    if (std::memcmp(layerWords(z), other.layerWords(z), words * sizeof(uint64_t)) != 0) return false;
+  }
+  return true;
+}
+
 uint64_t estimateGridBytes(const Dims& dims) {
   const uint64_t wpr = (uint64_t(dims.nx) + 2 + 63) / 64;
   const uint64_t layer = wpr * (uint64_t(dims.ny) + 2) * 8;

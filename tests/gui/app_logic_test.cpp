@@ -723,6 +723,58 @@ TEST(AppScriptRun, thicknessPanelThinWallsAndPeelByDistance) {
   EXPECT_NE(testing::internal::GetCapturedStderr().find("min-wall takes a length"), std::string::npos);
 }
 
+// A row of the Thickness panel's lists clicked (the thin-region and hot-spot actions) is selected and shown: the
+// section along its axis through its middle, the 3D view turned about it and brought near. Another minimum wall drops
+// the region's selection (its list is another); a number outside the list is refused, saying which are in it.
+TEST(AppScriptRun, aThinRegionOrHotSpotClickedIsSelectedAndTheViewsGoThere) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
+  AppState state;
+  Harness h;
+  ASSERT_TRUE(runScript(state, h,
+                        "open " + (dir / "block.vxm").string() +
+                            "\npanel-thickness\nmin-wall 100\nzoom 0.05\n"
+                            "section x 0\nthin-region 1\n"))
+      << h.last_error;
+  EXPECT_EQ(state.panel, Panel::kThickness);
+  const ThinWalls* thin = currentThinWalls(state);
+  ASSERT_NE(thin, nullptr);
+  ASSERT_EQ(thin->regions.size(), 1u);  // every voxel is thinner than 100
+  EXPECT_EQ(selectedRegion(state), &thin->regions[0]);
+  EXPECT_EQ(selectedHotSpot(state), nullptr);
+  EXPECT_EQ(state.section.axis, Axis::kX);
+  EXPECT_EQ(state.section.index, 5);  // (0 + 11) / 2
+  EXPECT_EQ(state.view.camera.target, glm::dvec3(6.0, 5.0, 4.0));
+  EXPECT_LE(state.view.camera.distance, 6.0 * 12.0);  // brought near from far away (zoomed out)
+
+  Harness h2;
+  ASSERT_TRUE(runScript(state, h2, "section y 0\nhot-spot 1\n")) << h2.last_error;
+  const ThicknessResult* r = currentThickness(state);
+  ASSERT_NE(r, nullptr);
+  ASSERT_FALSE(r->hot_spots.empty());
+  const HotSpot& spot = r->hot_spots[0];
+  EXPECT_EQ(selectedHotSpot(state), &spot);
+  EXPECT_EQ(state.section.axis, Axis::kY);
+  EXPECT_EQ(state.section.index, spot.voxel.y);
+  EXPECT_EQ(state.view.camera.target, glm::dvec3(spot.voxel) + 0.5);
+  EXPECT_EQ(selectedRegion(state), &thin->regions[0]);  // both stay selected
+
+  Harness h3;
+  ASSERT_TRUE(runScript(state, h3, "min-wall 50\n")) << h3.last_error;
+  EXPECT_EQ(selectedRegion(state), nullptr);
+  EXPECT_EQ(selectedHotSpot(state), &spot);
+
+  Harness h4;
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE(runScript(state, h4, "thin-region 2\n"));
+  EXPECT_NE(testing::internal::GetCapturedStderr().find("1 to 1"), std::string::npos);
+  const Action* hot = findAction("hot-spot");  // (a script stops at its first failure: the action alone)
+  ASSERT_NE(hot, nullptr);
+  const Status s0 = dispatch(state, *hot, ActionArgs{{"0"}, "0"});
+  ASSERT_FALSE(s0.ok());
+  EXPECT_NE(s0.error().message.find("hot-spot takes a hot spot's number"), std::string::npos) << s0.error().message;
+}
+
 // A round peel deeper than the part is refused with how deep it goes; another file opened starts from its own
 // minimum wall (a quarter of its thickest), not the length chosen for the previous part.
 TEST(AppScriptRun, aRoundPeelOfEverythingIsRefusedAndTheMinimumWallIsPerFile) {

@@ -263,6 +263,85 @@ TEST(AppParts, aVoxelModelSplitsIntoConnectedComponents) {
   }
 }
 
+// A split into bodies leaves the solid as it was: the thickness computed before is the scene's too, and the split's
+// undo keeps it, none computed again; the 3D view draws the model coloured by it, not the parts, while the Thickness
+// panel shows it. A part moved makes another solid: its thickness is computed anew.
+TEST(AppParts, theThicknessOfASolidASplitLeavesAsItWasIsKept) {
+  test::TempDir dir;
+  // Two 4 x 6 x 6 blocks 2 voxels apart, filling their box: the parts' extent is the model's box.
+  VoxelGrid g(Dims{10, 6, 6});
+  for (int32_t z = 0; z < 6; ++z) {
+    for (int32_t y = 0; y < 6; ++y) {
+      g.fillRun(y, z, 0, 4);
+      g.fillRun(y, z, 6, 10);
+    }
+  }
+  ASSERT_TRUE(io::saveVxm(g, dir / "g.vxm").ok());
+  AppState state;
+  ASSERT_TRUE(run(state, "open " + (dir / "g.vxm").string()).ok());
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  ASSERT_TRUE(run(state, "panel-thickness").ok());
+  ASSERT_TRUE(pump(state, [&] { return currentThickness(state) != nullptr; }));
+  const ThicknessResult* r = currentThickness(state);
+  const uint64_t before = state.model_version;
+
+  ASSERT_TRUE(run(state, "split-bodies").ok());
+  ASSERT_TRUE(pump(state, [&] { return currentParts(state) != nullptr; }));
+  ASSERT_EQ(currentParts(state)->size(), 2u);
+  ASSERT_NE(state.model_version, before);
+  ASSERT_TRUE(run(state, "panel-thickness").ok());
+  updateDocument(state);
+  EXPECT_EQ(currentThickness(state), r);
+  EXPECT_FALSE(state.thickness.busy());
+
+  undo(state);
+  updateDocument(state);
+  EXPECT_EQ(state.model_version, before);
+  EXPECT_EQ(currentThickness(state), r);
+  EXPECT_FALSE(state.thickness.busy());
+
+  redo(state);
+  ASSERT_TRUE(run(state, "place-part 2 1 0 0").ok());  // the second block a voxel along X: another solid
+  ASSERT_TRUE(run(state, "panel-thickness").ok());
+  updateDocument(state);
+  EXPECT_EQ(currentThickness(state), nullptr);
+  EXPECT_TRUE(state.thickness.computing(state.model_version));
+  ASSERT_TRUE(pump(state, [&] { return currentThickness(state) != nullptr; }));
+  EXPECT_NE(currentThickness(state)->grid.dims(), g.dims());  // the model grew to the new extent
+}
+
+// While the Thickness panel shows the thickness of a scene of parts, the 3D view draws the model's points, coloured
+// by it (its renderer holds the model and the thickness volume), not the parts in their colours; the other panels
+// draw the parts.
+TEST(AppParts, theThicknessPanelDrawsTheModelColouredNotTheParts) {
+  setenv("GALLIUM_DRIVER", "llvmpipe", 1);
+  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 1);
+  auto context = render::HeadlessContext::create();
+  if (!context) {
+    if (test::inCI()) FAIL() << "no headless OpenGL in CI: " << context.error().message;
+    GTEST_SKIP() << "no headless OpenGL: " << context.error().message;
+  }
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveStlBinary(threeBodies(), dir / "train.stl").ok());
+  AppState state;
+  ASSERT_TRUE(initViewport(state).ok());
+  openVoxelized(state, dir / "train.stl", 48);
+  ASSERT_TRUE(run(state, "split-bodies").ok());
+  ASSERT_TRUE(pump(state, [&] { return currentParts(state) != nullptr; }));
+  syncRenderers(state);
+  ASSERT_TRUE(drawsParts(state));
+  ASSERT_TRUE(run(state, "panel-thickness").ok());
+  ASSERT_TRUE(pump(state, [&] { return currentThickness(state) != nullptr; }));
+  syncRenderers(state);
+  EXPECT_FALSE(drawsParts(state));
+  EXPECT_EQ(state.viewport.uploaded_version, state.model_version);
+  EXPECT_TRUE(state.viewport.renderer->hasScalarVolume());
+  ASSERT_TRUE(run(state, "panel-parts").ok());
+  syncRenderers(state);
+  EXPECT_TRUE(drawsParts(state));
+  shutdownViewport(state);
+}
+
 TEST(AppParts, aPartMovesAndTurnsOnTheLatticeUndoably) {
   test::TempDir dir;
   AppState state;

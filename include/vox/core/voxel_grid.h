@@ -131,6 +131,9 @@ class VoxelGrid {
   bool layerAllocated(int32_t z) const { return layers_[size_t(z + 1)] != zero_layer_; }
   // True when layer z shares storage with `other`'s layer z (both snapshots of the same data).
   bool sharesLayerWith(const VoxelGrid& other, int32_t z) const;
+  // True when `other` has the same dims and the same filled voxels (frames are not compared): O(1) a layer the two
+  // share, O(words) one they do not.
+  bool sameVoxels(const VoxelGrid& other) const;
   // Makes layer z (0 <= z < nz) share `other`'s layer z (copy on write, O(1)); the grids must have the same dims.
   void shareLayerFrom(const VoxelGrid& other, int32_t z);
 

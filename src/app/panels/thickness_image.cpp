@@ -86,6 +86,32 @@ void drawThicknessImage(AppState& state) {
   drawScaleBar(ImVec2(origin.x, origin.y + size.y + 2.0f + line), scale / float(state.model.voxelSize()), units,
                std::max(size.x * 0.5f, 60.0f));
   ImGui::Dummy(ImVec2(0.0f, std::max(0.0f, bar_h - size.y) + line));
+  // The place clicked in the panel's lists, where the section cuts it: the thin-wall region's box, the hot spot's
+  // inscribed ball.
+  auto screen = [&](double right, double up) {  // voxel coordinates in the image's plane (corners)
+    return ImVec2(origin.x + float(right) * scale, origin.y + float(double(ih) - up) * scale);
+  };
+  auto mark = [&](auto&& draw) {
+    draw(IM_COL32(0, 0, 0, 255), 4.0f);
+    draw(IM_COL32(255, 255, 255, 255), 2.0f);
+  };
+  const int a = int(axis);
+  if (const ThinWallRegion* g = selectedRegion(state);
+      g && state.section.index >= g->bbox_min_ijk[a] && state.section.index <= g->bbox_max_ijk[a]) {
+    const ImVec2 p0 = screen(g->bbox_min_ijk[ax.right], g->bbox_max_ijk[ax.up] + 1.0);
+    const ImVec2 p1 = screen(g->bbox_max_ijk[ax.right] + 1.0, g->bbox_min_ijk[ax.up]);
+    mark([&](ImU32 c, float t) {
+      dl->AddRect(ImVec2(p0.x - 2.0f, p0.y - 2.0f), ImVec2(p1.x + 2.0f, p1.y + 2.0f), c, 0, 0, t);
+    });
+  }
+  if (const HotSpot* spot = selectedHotSpot(state)) {
+    const double rv = spot->radius / state.model.voxelSize(), off = double(state.section.index - spot->voxel[a]);
+    if (std::abs(off) < rv) {
+      const ImVec2 c = screen(spot->voxel[ax.right] + 0.5, spot->voxel[ax.up] + 0.5);
+      const float radius = std::max(6.0f, float(std::sqrt(rv * rv - off * off)) * scale);
+      mark([&](ImU32 col, float t) { dl->AddCircle(c, radius, col, 0, t); });
+    }
+  }
   if (!hovered) return;
   const ImVec2 m = ImGui::GetIO().MousePos;
   const int32_t u = std::clamp(int32_t((m.x - origin.x) / scale), 0, iw - 1);

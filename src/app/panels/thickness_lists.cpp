@@ -1,5 +1,6 @@
 // The Thickness panel's lists (thickness_panel.cpp): thin-wall regions, largest first, and hot spots, thickest
-// first. Clicking a row moves the section through it (the section action) and shows it in the section image.
+// first. Clicking a row selects it (the thin-region and hot-spot actions): the section through it, the 3D view turned
+// about it, both marking it (thickness_view.cpp, thickness_image.cpp).
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -16,13 +17,6 @@ namespace vox::app {
 namespace {
 
 constexpr int kMostRows = 200;  // more would not be read; the count above the list says how many there are
-
-// The section along the current axis through `voxel`, shown beside the Thickness panel.
-void sectionThrough(AppState& state, glm::ivec3 voxel) {
-  const Axis axis = state.section.axis;
-  dispatchValues(state, ActionId::kSectionAt, {axisName(axis), std::to_string(voxel[int(axis)])});
-  dispatch(state, ActionId::kPanelThickness);
-}
 
 bool beginList(const char* id, int columns, int rows) {
   const float row_h = ImGui::GetTextLineHeightWithSpacing() + 2.0f;
@@ -55,8 +49,9 @@ void drawThinWallList(AppState& state, const ThinWalls& thin, const std::string&
     ImGui::TableNextRow();
     ImGui::TableSetColumnIndex(0);
     ImGui::PushID(i);
-    if (ImGui::Selectable(groupDigits(g.voxels).c_str(), false, ImGuiSelectableFlags_SpanAllColumns)) {
-      sectionThrough(state, (g.bbox_min_ijk + g.bbox_max_ijk) / 2);
+    const bool selected = selectedRegion(state) == &g;
+    if (ImGui::Selectable(groupDigits(g.voxels).c_str(), selected, ImGuiSelectableFlags_SpanAllColumns)) {
+      dispatchValues(state, ActionId::kThinRegion, {std::to_string(i + 1)});
     }
     ImGui::PopID();
     ImGui::TableSetColumnIndex(1);
@@ -91,8 +86,9 @@ void drawHotSpotList(AppState& state, const ThicknessResult& r, const std::strin
     ImGui::TableNextRow();
     ImGui::TableSetColumnIndex(0);
     ImGui::PushID(i);
-    if (ImGui::Selectable(std::to_string(i + 1).c_str(), false, ImGuiSelectableFlags_SpanAllColumns)) {
-      sectionThrough(state, s.voxel);
+    const bool selected = selectedHotSpot(state) == &s;
+    if (ImGui::Selectable(std::to_string(i + 1).c_str(), selected, ImGuiSelectableFlags_SpanAllColumns)) {
+      dispatchValues(state, ActionId::kHotSpot, {std::to_string(i + 1)});
     }
     ImGui::PopID();
     ImGui::TableSetColumnIndex(1);

@@ -183,6 +183,24 @@ TEST(VoxelGrid, copiesShareLayersUntilWritten) {
   EXPECT_EQ(b.filledCount(), 215);
 }
 
+// sameVoxels: the same dims and filled voxels, whether the layers are shared or not; one voxel, or the dims, differ.
+TEST(VoxelGrid, sameVoxelsComparesTheFilledVoxelsSharedOrNot) {
+  const VoxelGrid a = box(Dims{70, 9, 8}, {1, 1, 1}, {69, 7, 7});
+  VoxelGrid b = a;  // all layers shared
+  EXPECT_TRUE(a.sameVoxels(b));
+  const VoxelGrid c = box(Dims{70, 9, 8}, {1, 1, 1}, {69, 7, 7});  // the same voxels, its own layers
+  EXPECT_TRUE(a.sameVoxels(c));
+  EXPECT_FALSE(a.sharesLayerWith(c, 3));
+  b.reset(68, 6, 6);  // the last voxel of the last filled row and layer, past the first word
+  EXPECT_FALSE(a.sameVoxels(b));
+  EXPECT_FALSE(b.sameVoxels(a));
+  b.set(68, 6, 6);
+  EXPECT_TRUE(a.sameVoxels(b));  // written back: not shared, the same voxels
+  EXPECT_FALSE(a.sharesLayerWith(b, 6));
+  EXPECT_FALSE(a.sameVoxels(box(Dims{70, 9, 9}, {1, 1, 1}, {69, 7, 7})));  // one empty layer more
+  EXPECT_TRUE(VoxelGrid(Dims{4, 4, 4}).sameVoxels(VoxelGrid(Dims{4, 4, 4})));
+}
+
 TEST(VoxelGrid, clearAndReleaseEmptyLayers) {
   VoxelGrid g = box(Dims{8, 8, 8}, {0, 0, 2}, {8, 8, 4});
   EXPECT_EQ(g.allocatedLayers(), 2);
