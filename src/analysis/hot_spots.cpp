@@ -92,7 +92,7 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
   // component + 1; 0: not processed yet. The voxels come in order of distance, scattered over the part, so each
   // reads its neighbours' labels from memory: the labels are stored by cells of 4 x 4 x 4 voxels (the 16 voxels of
   // a cell's layer in one 64-byte line), where the 27 voxels about one lie in about 7 lines (about 10 when stored
-  // by rows); the lines about the voxel kAhead places on, and its distance, are asked for ahead; and the labels lie
+  // by rows); the lines about the voxel kAhead places on are asked for ahead; and the labels lie
   // on 2 MiB pages where the kernel gives them, so that the reads also find their address translations. (A cell is
   // one voxel wide along an axis of fewer than 16 voxels: rounding the box up to whole cells then adds at most 3/16
   // along any axis, where a plate one voxel thick would take four times its labels.)

@@ -222,8 +222,15 @@ void showThicknessPlace(AppState& s, glm::ivec3 lo, glm::ivec3 hi) {
   s.section.index = std::clamp((lo[a] + hi[a]) / 2, 0, std::max(axisLength(s, s.section.axis) - 1, 0));
   const glm::ivec3 size = hi - lo + 1;
   centreView(s, glm::dvec3(lo + hi + 1) * 0.5, double(std::max({size.x, size.y, size.z})));
-  s.thickness_ui.selected_version = s.model_version;
+  s.section.playing = false;
   showPanel(s, Panel::kThickness);
+}
+
+// The selection, for `result`: what was selected in another result is dropped.
+ThicknessUi& select(ThicknessUi& ui, uint64_t result) {
+  if (ui.selected_result != result) ui.selected_region = ui.selected_spot = -1;
+  ui.selected_result = result;
+  return ui;
 }
 
 }  // namespace
@@ -239,13 +246,14 @@ Status thinRegionAt(AppState& s, const ActionArgs& a) {
   }
   const ThinWallRegion& g = thin->regions[size_t(n - 1)];
   showThicknessPlace(s, g.bbox_min_ijk, g.bbox_max_ijk);
-  s.thickness_ui.selected_region = int32_t(n - 1);
+  select(s.thickness_ui, currentThickness(s)->id).selected_region = int32_t(n - 1);
   return Ok{};
 }
 
 Status hotSpotAt(AppState& s, const ActionArgs& a) {
   const ThicknessResult* r = currentThickness(s);
   const int64_t count = r ? int64_t(r->hot_spots.size()) : 0;
+  if (count == 0) return badValues("hot-spot: the thickness has no hot spot");
   int64_t n = 0;
   if (!parseNumber(a.words[0], n) || n < 1 || n > count) {
     return badValues("hot-spot takes a hot spot's number in the Thickness panel's list, 1 to " + std::to_string(count));
@@ -253,7 +261,7 @@ Status hotSpotAt(AppState& s, const ActionArgs& a) {
   const HotSpot& spot = r->hot_spots[size_t(n - 1)];
   const auto reach = int32_t(std::ceil(spot.radius / s.model.voxelSize()));  // its inscribed ball
   showThicknessPlace(s, spot.voxel - reach, spot.voxel + reach);
-  s.thickness_ui.selected_spot = int32_t(n - 1);
+  select(s.thickness_ui, r->id).selected_spot = int32_t(n - 1);
   return Ok{};
 }
 

@@ -216,7 +216,8 @@ struct XrayKey {
 
 // Distance, local thickness and hot spots of one model version (the Thickness panel's background result).
 struct ThicknessResult {
-  VoxelGrid grid;  // the voxels it was computed from (sharing their layers)
+  uint64_t id = 0;  // this computation's (takeId): what the views and thin walls derived from it are keyed by
+  VoxelGrid grid;   // the voxels it was computed from (sharing their layers)
   Thickness thickness;
   std::vector<HotSpot> hot_spots;
   double seconds = 0.0;
@@ -227,18 +228,18 @@ struct ThicknessResult {
 struct ThicknessUi {
   double min_wall = -1.0;
   uint64_t cancelled_version = 0;  // the model version whose computation the user cancelled (not asked again)
-  uint64_t thin_version = 0;       // the model version and the minimum wall `thin` was found for
+  uint64_t thin_result = 0;        // the result (ThicknessResult::id) and the minimum wall `thin` was found for
   double thin_min_wall = -1.0;
   std::optional<ThinWalls> thin;
   SectionKey image_key;  // what the section texture shows, with the minimum wall it paints red
   double image_min_wall = -1.0;
   Texture image_texture;
-  // The thin-wall region and the hot spot last clicked in the lists (indices; -1: none), for the model version
-  // selected_version (a region, for the thin walls found then: thin_version and thin_min_wall).
+  // The thin-wall region and the hot spot last clicked in the lists (indices; -1: none), in the result
+  // selected_result (ThicknessResult::id; a region, in the thin walls found then: thin_result and thin_min_wall).
   int32_t selected_region = -1;
   int32_t selected_spot = -1;
-  uint64_t selected_version = 0;
-  uint64_t volume_key = 0;     // the model version whose thickness the 3D view's volume holds (0: none)
+  uint64_t selected_result = 0;
+  uint64_t volume_key = 0;     // the result (ThicknessResult::id) the 3D view's volume holds (0: none)
   std::string volume_problem;  // why the 3D view cannot colour by thickness (empty: it can)
 };
 

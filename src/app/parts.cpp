@@ -9,6 +9,7 @@
 #include "app/document.h"
 #include "app/messages.h"
 #include "app/model_jobs.h"
+#include "app/thickness.h"
 #include "app/update.h"
 #include "vox/core/grid_placement.h"
 #include "vox/io/mesh_file.h"
@@ -330,6 +331,7 @@ void applyPartsScope(AppState& state) {
     state.model = state.doc.model->grid;
     state.model_version = state.doc.model->version;
   }
+  adoptThickness(state);  // the same voxels under another version keep their thickness
   state.viewport.dirty = true;
 }
 

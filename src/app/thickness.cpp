@@ -20,19 +20,30 @@ bool sameSolid(const VoxelGrid& a, const VoxelGrid& b) {
 
 }  // namespace
 
-void requestThickness(AppState& state) {
-  state.thickness.poll();
-  if (state.panel != Panel::kThickness || state.model.empty()) return;
+void adoptThickness(AppState& state) {
   const uint64_t key = state.model_version;
-  if (state.thickness_ui.cancelled_version == key || !state.thickness.wants(key)) return;
-  // The model holds the voxels of the result at hand (an operation that left the solid as it was, such as a split
-  // into bodies, or the undo of one that changed it back): that result is the model's, not computed again.
+  if (state.model.empty() || state.thickness.get(key)) return;
   if (const auto* held = state.thickness.held(); held && *held && sameSolid((*held)->grid, state.model)) {
     state.thickness.rekey(key);
+  }
+}
+
+void requestThickness(AppState& state) {
+  state.thickness.poll();
+  const uint64_t key = state.model_version;
+  if (state.thickness.get(key)) {
+    // Back to a model whose result is here (undo): a computation still under way for the one left is not wanted,
+    // and its end would replace this result.
+    if (state.thickness.busy()) state.thickness.rekey(key);
     return;
   }
+  if (state.panel != Panel::kThickness || state.model.empty()) return;
+  if (state.thickness_ui.cancelled_version == key || !state.thickness.wants(key)) return;
+  adoptThickness(state);
+  if (state.thickness.get(key)) return;
   VoxelGrid grid = state.model;
-  state.thickness.request(key, "Computing thickness", [grid](const ProgressFn& progress) {
+  const uint64_t id = takeId(state);
+  state.thickness.request(key, "Computing thickness", [grid, id](const ProgressFn& progress) {
     using R = Result<std::shared_ptr<const ThicknessResult>>;
     const double t0 = nowSeconds();
     // The bar's share of each step as their times go (igea at R = 512: 0.4 s, 5 s and 2.5 s; rocker_arm: 0.05 s,
@@ -47,6 +58,7 @@ void requestThickness(AppState& state) {
     auto thickness = computeThickness(std::move(distance).value(), {}, part(0.55, 1.0));
     if (!thickness) return R(thickness.error());
     auto out = std::make_shared<ThicknessResult>();
+    out->id = id;
     out->grid = grid;
     out->thickness = std::move(thickness).value();
     out->hot_spots = std::move(hot).value();
@@ -79,10 +91,10 @@ const ThinWalls* currentThinWalls(AppState& state) {
   if (!r) return nullptr;
   ThicknessUi& ui = state.thickness_ui;
   const double wall = minWall(state);
-  if (!ui.thin || ui.thin_version != state.model_version || ui.thin_min_wall != wall) {
+  if (!ui.thin || ui.thin_result != r->id || ui.thin_min_wall != wall) {
     ui.selected_region = -1;  // its index was into the regions found before
     auto thin = findThinWalls(r->thickness, wall);
-    ui.thin_version = state.model_version;
+    ui.thin_result = r->id;
     ui.thin_min_wall = wall;
     if (thin) {
       ui.thin = std::move(thin).value();
@@ -95,8 +107,9 @@ const ThinWalls* currentThinWalls(AppState& state) {
 
 const ThinWallRegion* selectedRegion(AppState& state) {
   const ThinWalls* thin = currentThinWalls(state);
+  const ThicknessResult* r = currentThickness(state);
   const ThicknessUi& ui = state.thickness_ui;
-  if (!thin || ui.selected_version != state.model_version || ui.selected_region < 0 ||
+  if (!thin || !r || ui.selected_result != r->id || ui.selected_region < 0 ||
       size_t(ui.selected_region) >= thin->regions.size())
     return nullptr;
   return &thin->regions[size_t(ui.selected_region)];
@@ -105,8 +118,7 @@ const ThinWallRegion* selectedRegion(AppState& state) {
 const HotSpot* selectedHotSpot(const AppState& state) {
   const ThicknessResult* r = currentThickness(state);
   const ThicknessUi& ui = state.thickness_ui;
-  if (!r || ui.selected_version != state.model_version || ui.selected_spot < 0 ||
-      size_t(ui.selected_spot) >= r->hot_spots.size())
+  if (!r || ui.selected_result != r->id || ui.selected_spot < 0 || size_t(ui.selected_spot) >= r->hot_spots.size())
     return nullptr;
   return &r->hot_spots[size_t(ui.selected_spot)];
 }

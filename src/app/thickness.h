@@ -12,6 +12,10 @@ namespace vox::app {
 
 // Each frame (updateDocument): asks for the thickness of the model while the Thickness panel is open.
 void requestThickness(AppState& state);
+// Where the model's version changes (applyPartsScope): the result at hand becomes the model's when it was computed
+// from the same voxels (origin and voxel size included) under another version, such as before a split into bodies
+// or an undo of it. O(1) per layer the two share, a comparison of the words of the others.
+void adoptThickness(AppState& state);
 // The result for the model shown, or null while computing (or when it failed or was cancelled).
 const ThicknessResult* currentThickness(const AppState& state);
 // Stops the computation for this model version; it is not asked for again until "Compute" (retryThickness).

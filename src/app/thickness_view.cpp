@@ -20,6 +20,10 @@ constexpr ImU32 kThinColour = IM_COL32(242, 31, 26, 255);  // points.vert's red 
 constexpr ImU32 kThinTextColour = IM_COL32(255, 120, 110, 255);
 constexpr ImU32 kHotSpotColour = IM_COL32(255, 60, 220, 255);
 constexpr int kMostHotSpotsShown = 20;
+// The colour scale's place at the view's top: from kLegendTop pixels down (under the view's buttons), its title, strip
+// and labels taking kLegendLines text lines.
+constexpr float kLegendTop = 30.0f;
+constexpr float kLegendLines = 4.0f;
 
 // Text with a dark shadow, readable over any colour of the model.
 void shadowText(ImDrawList* dl, ImVec2 p, ImU32 colour, const char* text) {
@@ -62,6 +66,11 @@ void hoverReadout(const AppState& state, const ThicknessResult& r, ImDrawList* d
 
 }  // namespace
 
+float thicknessLegendHeight(const AppState& state) {
+  if (state.panel != Panel::kThickness || state.model.empty()) return 0.0f;
+  return kLegendTop + kLegendLines * ImGui::GetTextLineHeightWithSpacing();
+}
+
 const ThicknessResult* shownThickness(const AppState& state) {
   return state.panel == Panel::kThickness && !state.model.empty() ? currentThickness(state) : nullptr;
 }
@@ -75,7 +84,7 @@ ImU32 thicknessColour(double thickness, double max, double min_wall) {
 void syncThicknessVolume(AppState& state) {
   ThicknessUi& ui = state.thickness_ui;
   const ThicknessResult* r = shownThickness(state);
-  const uint64_t key = r ? state.model_version : 0;
+  const uint64_t key = r ? r->id : 0;
   if (key == ui.volume_key || !state.viewport.renderer) return;
   ui.volume_key = key;
   state.viewport.dirty = true;
@@ -211,13 +220,13 @@ float drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, i
   }
   // The colour scale along the top, under the view's buttons, with the hot spots' ring explained beside its title.
   const float strip_w = std::clamp(float(w) - 24.0f, 60.0f, 300.0f);
-  const float y0 = pos.y + 30.0f;
+  const float y0 = pos.y + kLegendTop;
   shadowText(dl, ImVec2(pos.x + 12.0f, y0), IM_COL32(230, 230, 230, 255), "Thickness");
   const float ring_x = pos.x + 12.0f + ImGui::CalcTextSize("Thickness").x + 24.0f;
   dl->AddCircle(ImVec2(ring_x, y0 + lh * 0.45f), 6.0f, kHotSpotColour, 0, 2.0f);
   shadowText(dl, ImVec2(ring_x + 10.0f, y0), kHotSpotColour, "hot spot");
   drawThicknessStrip(dl, ImVec2(pos.x + 12.0f, y0 + lh + 2.0f), strip_w, r->thickness.stats.max, minWall(state), units);
-  float bottom = y0 + 4.0f * lh;  // under the strip's labels (two lines when the minimum wall is marked)
+  float bottom = y0 + kLegendLines * lh;  // under the strip's labels (two lines when the minimum wall is marked)
   if (!state.thickness_ui.volume_problem.empty()) {
     shadowText(dl, ImVec2(pos.x + 12.0f, bottom), IM_COL32(255, 200, 80, 255),
                state.thickness_ui.volume_problem.c_str());

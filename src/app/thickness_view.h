@@ -13,6 +13,9 @@ namespace vox::app {
 // The thickness the 3D view shows: the model's, while the Thickness panel is open (null otherwise, or before it is
 // computed). The view then draws the model, coloured, even where it is a scene of parts.
 const ThicknessResult* shownThickness(const AppState& state);
+// The height the colour scale takes at the top of the 3D view while the Thickness panel is open (0 otherwise): a fit
+// puts the model below it.
+float thicknessLegendHeight(const AppState& state);
 // Uploads the thickness of the model shown to the main renderer while the panel is open (once per model
 // version), and clears it otherwise. A box too large for the GL's 3D textures is refused, with a note for the panel.
 void syncThicknessVolume(AppState& state);

@@ -92,9 +92,18 @@ render::DrawParams drawParams(const AppState& state, bool coarse) {
   return p;
 }
 
-void fitIfPending(AppState& state, double aspect) {
+// The model fitted to the view of w x h pixels; while the Thickness panel's colour scale takes the view's top, to the
+// part below it (fitted to that part's shape, moved down by half the scale's height).
+void fitIfPending(AppState& state, int w, int h) {
   if (!state.view.fit_pending || !state.model_bounds) return;
-  state.view.camera.fitToBox(*state.model_bounds, aspect);
+  render::Camera& camera = state.view.camera;
+  const double band = std::min(double(thicknessLegendHeight(state)), 0.5 * double(h));
+  const double below = double(h) - band;
+  camera.fitToBox(*state.model_bounds, double(w) / below);
+  if (band > 0.0) {
+    camera.distance *= double(h) / below;
+    camera.pan(0.0, 0.5 * band, double(h));
+  }
   state.view.fit_pending = false;
 }
 
@@ -316,10 +325,10 @@ void drawViewport(AppState& state) {
     state.view.camera.distance *= after.distance / before.distance;
   }
   vp.aspect = aspect;
-  fitIfPending(state, aspect);
+  fitIfPending(state, w, h);
 
   const bool dragging = handleMouse(state, pos, w, h, aspect);
-  fitIfPending(state, aspect);
+  fitIfPending(state, w, h);
   vp.interacting = vp.interacting || dragging;
   // Coarser points while something moves; at rest the view refines (drawParams: the point budget of each case).
   const bool coarse = state.view.lod;

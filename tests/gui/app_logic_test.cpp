@@ -764,6 +764,16 @@ TEST(AppScriptRun, aThinRegionOrHotSpotClickedIsSelectedAndTheViewsGoThere) {
   EXPECT_EQ(selectedRegion(state), nullptr);
   EXPECT_EQ(selectedHotSpot(state), &spot);
 
+  // Another model (peeled a voxel deep), its own thickness: a region selected in it drops the hot spot selected in
+  // the block's.
+  Harness h35;
+  ASSERT_TRUE(runScript(state, h35, "peel-distance 1\npanel-thickness\nmin-wall 50\nthin-region 1\n"))
+      << h35.last_error;
+  ASSERT_NE(currentThickness(state), nullptr);
+  EXPECT_EQ(currentThickness(state)->thickness.stats.voxels, 10 * 8 * 6);
+  EXPECT_NE(selectedRegion(state), nullptr);
+  EXPECT_EQ(selectedHotSpot(state), nullptr);
+
   Harness h4;
   testing::internal::CaptureStderr();
   EXPECT_FALSE(runScript(state, h4, "thin-region 2\n"));
@@ -814,6 +824,37 @@ TEST(AppThickness, cancelStopsUntilRetried) {
   retryThickness(state);
   updateDocument(state);
   EXPECT_TRUE(state.thickness.computing(state.model_version));
+}
+
+// Undo back to a model whose thickness is here while the thickness of the model left is still being computed: that
+// computation is dropped, and its end does not replace the result shown (it was computed again from scratch).
+TEST(AppThickness, undoWhileTheNextModelsThicknessRunsKeepsTheResult) {
+  test::TempDir dir;
+  VoxelGrid big(Dims{120, 100, 80});  // large enough that its thickness takes far longer than the steps below
+  for (int32_t z = 0; z < 80; ++z) {
+    for (int32_t y = 0; y < 100; ++y) big.fillRun(y, z, 0, 120);
+  }
+  ASSERT_TRUE(io::saveVxm(big, dir / "big.vxm").ok());
+  AppState state;
+  Harness h;
+  ASSERT_TRUE(runScript(state, h, "open " + (dir / "big.vxm").string() + "\npanel-thickness\n")) << h.last_error;
+  const ThicknessResult* r = currentThickness(state);
+  ASSERT_NE(r, nullptr);
+  const uint64_t before = state.model_version;
+  ASSERT_TRUE(peelDistance(state, 1.0).ok());
+  state.panel = Panel::kThickness;
+  updateDocument(state);
+  ASSERT_TRUE(state.thickness.computing(state.model_version));
+  undo(state);
+  updateDocument(state);
+  ASSERT_EQ(state.model_version, before);
+  EXPECT_EQ(currentThickness(state), r);
+  EXPECT_FALSE(state.thickness.busy());
+  for (int i = 0; i < 200; ++i) {  // long enough for the dropped computation to have ended
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    updateDocument(state);
+  }
+  EXPECT_EQ(currentThickness(state), r);
 }
 
 // Every action a script names goes through dispatch: where the action is not enabled (no model yet), the script
