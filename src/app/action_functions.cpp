@@ -233,35 +233,39 @@ ThicknessUi& select(ThicknessUi& ui, uint64_t result) {
   return ui;
 }
 
+// Row N (from 1) of a list of `count` rows, N the action's word; the messages name the action (`what`), its rows
+// (`row`) and why the list is empty (`none`).
+Result<size_t> listRow(const ActionArgs& a, size_t count, const char* what, const char* row, const char* none) {
+  if (count == 0) return badValues(std::string(what) + ": " + none);
+  size_t n = 0;
+  if (!parseNumber(a.words[0], n) || n < 1 || n > count) {
+    return badValues(std::string(what) + " takes " + row + " number in the Thickness panel's list, 1 to " +
+                     std::to_string(count));
+  }
+  return n - 1;
+}
+
 }  // namespace
 
 Status thinRegionAt(AppState& s, const ActionArgs& a) {
   const ThinWalls* thin = currentThinWalls(s);
-  const int64_t count = thin ? int64_t(thin->regions.size()) : 0;
-  if (count == 0) return badValues("thin-region: no wall is thinner than the minimum wall");
-  int64_t n = 0;
-  if (!parseNumber(a.words[0], n) || n < 1 || n > count) {
-    return badValues("thin-region takes a region's number in the Thickness panel's list, 1 to " +
-                     std::to_string(count));
-  }
-  const ThinWallRegion& g = thin->regions[size_t(n - 1)];
+  const auto i = listRow(a, thin ? thin->regions.size() : 0, "thin-region", "a region's",
+                         "no wall is thinner than the minimum wall");
+  if (!i) return i.error();
+  const ThinWallRegion& g = thin->regions[*i];
   showThicknessPlace(s, g.bbox_min_ijk, g.bbox_max_ijk);
-  select(s.thickness_ui, currentThickness(s)->id).selected_region = int32_t(n - 1);
+  select(s.thickness_ui, currentThickness(s)->id).selected_region = int32_t(*i);
   return Ok{};
 }
 
 Status hotSpotAt(AppState& s, const ActionArgs& a) {
   const ThicknessResult* r = currentThickness(s);
-  const int64_t count = r ? int64_t(r->hot_spots.size()) : 0;
-  if (count == 0) return badValues("hot-spot: the thickness has no hot spot");
-  int64_t n = 0;
-  if (!parseNumber(a.words[0], n) || n < 1 || n > count) {
-    return badValues("hot-spot takes a hot spot's number in the Thickness panel's list, 1 to " + std::to_string(count));
-  }
-  const HotSpot& spot = r->hot_spots[size_t(n - 1)];
+  const auto i = listRow(a, r ? r->hot_spots.size() : 0, "hot-spot", "a hot spot's", "the thickness has no hot spot");
+  if (!i) return i.error();
+  const HotSpot& spot = r->hot_spots[*i];
   const auto reach = int32_t(std::ceil(spot.radius / s.model.voxelSize()));  // its inscribed ball
   showThicknessPlace(s, spot.voxel - reach, spot.voxel + reach);
-  select(s.thickness_ui, r->id).selected_spot = int32_t(n - 1);
+  select(s.thickness_ui, r->id).selected_spot = int32_t(*i);
   return Ok{};
 }
 

@@ -39,7 +39,7 @@ void requestThickness(AppState& state) {
   }
   if (state.panel != Panel::kThickness || state.model.empty()) return;
   if (state.thickness_ui.cancelled_version == key || !state.thickness.wants(key)) return;
-  adoptThickness(state);
+  adoptThickness(state);  // a result that landed after the version changed (on another panel) may be this one's
   if (state.thickness.get(key)) return;
   VoxelGrid grid = state.model;
   const uint64_t id = takeId(state);

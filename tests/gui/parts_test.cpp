@@ -51,6 +51,20 @@ Status run(AppState& state, const std::string& line) {
   return dispatch(state, *a, ActionArgs{words, rest});
 }
 
+// A headless GL context on Mesa's software rasteriser, for the tests of the view (an error where there is none).
+Result<std::unique_ptr<render::HeadlessContext>> llvmpipeContext() {
+  setenv("GALLIUM_DRIVER", "llvmpipe", 1);
+  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 1);
+  return render::HeadlessContext::create();
+}
+
+// Skips the test without a headless GL context (fails in CI, where Mesa's EGL is installed).
+#define VOX_SKIP_WITHOUT_GL(context)                                                       \
+  if (!(context)) {                                                                        \
+    if (test::inCI()) FAIL() << "no headless OpenGL in CI: " << (context).error().message; \
+    GTEST_SKIP() << "no headless OpenGL: " << (context).error().message;                   \
+  }
+
 // A box [lo, hi] as 12 outward triangles (the unit cube scaled and moved).
 void addBox(TriangleMesh& mesh, glm::vec3 lo, glm::vec3 hi) {
   for (Triangle t : test::unitCubeMesh().triangles) {
@@ -314,13 +328,8 @@ TEST(AppParts, theThicknessOfASolidASplitLeavesAsItWasIsKept) {
 // by it (its renderer holds the model and the thickness volume), not the parts in their colours; the other panels
 // draw the parts.
 TEST(AppParts, theThicknessPanelDrawsTheModelColouredNotTheParts) {
-  setenv("GALLIUM_DRIVER", "llvmpipe", 1);
-  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 1);
-  auto context = render::HeadlessContext::create();
-  if (!context) {
-    if (test::inCI()) FAIL() << "no headless OpenGL in CI: " << context.error().message;
-    GTEST_SKIP() << "no headless OpenGL: " << context.error().message;
-  }
+  auto context = llvmpipeContext();
+  VOX_SKIP_WITHOUT_GL(context);
   test::TempDir dir;
   ASSERT_TRUE(io::saveStlBinary(threeBodies(), dir / "train.stl").ok());
   AppState state;
@@ -527,13 +536,8 @@ std::pair<int64_t, int64_t> differingAndDrawn(const ImageRgba& a, const ImageRgb
 // drawn), undo refills it again, removing a part refills none; the picture, with a section cut-away too, is the one
 // renderers holding each part on the model's frame draw; the model is the union of the parts where they now are.
 TEST(AppParts, aMoveRefillsOnlyTheMovedPartsRenderer) {
-  setenv("GALLIUM_DRIVER", "llvmpipe", 1);
-  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 1);
-  auto context = render::HeadlessContext::create();
-  if (!context) {
-    if (test::inCI()) FAIL() << "no headless OpenGL in CI: " << context.error().message;
-    GTEST_SKIP() << "no headless OpenGL: " << context.error().message;
-  }
+  auto context = llvmpipeContext();
+  VOX_SKIP_WITHOUT_GL(context);
   test::TempDir dir;
   ASSERT_TRUE(io::saveStlBinary(threeBodies(), dir / "train.stl").ok());
   AppState state;
