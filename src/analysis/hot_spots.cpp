@@ -199,7 +199,8 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
     if (plateau[k] != k) continue;  // absorbed into another plateau
     const double r = std::sqrt(double(c.peak));
     const double dyn = c.dead ? r - std::sqrt(double(c.saddle)) : r;
-    if (c.dead && dyn < params.min_dynamic_voxels) continue;
+    // A component that died at its own peak level was a plateau touching a higher voxel, not a maximum.
+    if (c.dead && (c.saddle == c.peak || dyn < params.min_dynamic_voxels)) continue;
     HotSpot hs;
     const glm::dvec3 mean = glm::dvec3(double(c.sx), double(c.sy), double(c.sz)) / double(c.count);
     hs.centre = frame.origin + (glm::dvec3(lo) + mean + 0.5) * h;

@@ -1,0 +1,242 @@
+// Hot spots against a brute force written from their definition (docs/accuracy.md), on random fields: the
+// watershed's bookkeeping (each voxel's level taken from its place in the sorted order, the labels stored by cells,
+// the union-find merges and plateaus) must give every regional maximum with its plateau, saddle and dynamic.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <queue>
+#include <random>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "grids.h"
+#include "vox/analysis/distance.h"
+#include "vox/analysis/thickness.h"
+
+namespace vox {
+namespace {
+
+// Every 26-connected plateau of equal nonzero value without a higher neighbour is a regional maximum. It dies at the
+// highest level L from which a path over voxels at L or above reaches a higher maximum (a larger value, or the same
+// value with a plateau whose first voxel in x, y, z order comes earlier): a best-first search that always extends
+// the path whose lowest value is highest. A maximum that reaches none never dies.
+std::vector<HotSpot> bruteHotSpots(const DistanceField& f, const HotSpotParams& params) {
+  const Dims d = f.boxDims();
+  const uint32_t* s = f.data();
+  const int64_t n = d.count();
+  auto neighbours = [&](int64_t i, auto&& visit) {
+    const int64_t x = i % d.nx, y = (i / d.nx) % d.ny, z = i / (int64_t(d.nx) * d.ny);
+    for (int64_t dz = -1; dz <= 1; ++dz)
+      for (int64_t dy = -1; dy <= 1; ++dy)
+        for (int64_t dx = -1; dx <= 1; ++dx) {
+          const int64_t qx = x + dx, qy = y + dy, qz = z + dz;
+          if ((dx || dy || dz) && qx >= 0 && qy >= 0 && qz >= 0 && qx < d.nx && qy < d.ny && qz < d.nz) {
+            visit(qx + d.nx * (qy + int64_t(d.ny) * qz));
+          }
+        }
+  };
+  std::vector<int64_t> plateau_of(size_t(n), -1);
+  std::vector<std::vector<int64_t>> plateaus;
+  std::vector<bool> is_max;
+  for (int64_t i = 0; i < n; ++i) {
+    if (!s[i] || plateau_of[size_t(i)] >= 0) continue;
+    const auto id = int64_t(plateaus.size());
+    std::vector<int64_t> voxels{i};
+    plateau_of[size_t(i)] = id;
+    bool top = true;
+    for (size_t k = 0; k < voxels.size(); ++k) {
+      neighbours(voxels[k], [&](int64_t q) {
+        if (s[q] > s[i]) top = false;
+        if (s[q] == s[i] && plateau_of[size_t(q)] < 0) {
+          plateau_of[size_t(q)] = id;
+          voxels.push_back(q);
+        }
+      });
+    }
+    std::sort(voxels.begin(), voxels.end());  // voxels[0]: the plateau's first voxel
+    plateaus.push_back(std::move(voxels));
+    is_max.push_back(top);
+  }
+  std::vector<HotSpot> out;
+  const double h = f.voxelSize();
+  const glm::ivec3 lo = f.boxMin();
+  for (size_t p = 0; p < plateaus.size(); ++p) {
+    if (!is_max[p]) continue;
+    const std::vector<int64_t>& own = plateaus[p];
+    const uint32_t v = s[own[0]];
+    auto higher = [&](int64_t q) {
+      return s[q] > v ||
+             (s[q] == v && plateau_of[size_t(q)] != int64_t(p) && plateaus[size_t(plateau_of[size_t(q)])][0] < own[0]);
+    };
+    std::vector<int64_t> best(size_t(n), -1);
+    std::priority_queue<std::pair<uint32_t, int64_t>> open;
+    for (int64_t i : own) {
+      best[size_t(i)] = v;
+      open.emplace(v, i);
+    }
+    bool dead = false;
+    uint32_t saddle = 0;
+    while (!open.empty()) {
+      const auto [low, i] = open.top();
+      open.pop();
+      if (int64_t(low) < best[size_t(i)]) continue;
+      if (higher(i)) {
+        dead = true;
+        saddle = low;
+        break;
+      }
+      neighbours(i, [&](int64_t q) {
+        const uint32_t l = std::min(low, s[q]);
+        if (s[q] && int64_t(l) > best[size_t(q)]) {
+          best[size_t(q)] = l;
+          open.emplace(l, q);
+        }
+      });
+    }
+    const double r = std::sqrt(double(v));
+    const double dyn = dead ? r - std::sqrt(double(saddle)) : r;
+    if (dead && dyn < params.min_dynamic_voxels) continue;
+    int64_t sx = 0, sy = 0, sz = 0;
+    for (int64_t i : own) {
+      sx += i % d.nx;
+      sy += (i / d.nx) % d.ny;
+      sz += i / (int64_t(d.nx) * d.ny);
+    }
+    HotSpot hs;
+    const auto count = double(own.size());
+    hs.centre = f.frame().origin + (glm::dvec3(lo) + glm::dvec3(double(sx), double(sy), double(sz)) / count + 0.5) * h;
+    hs.plateau_voxels = int64_t(own.size());
+    hs.radius = r * h;
+    hs.modulus = hs.radius / 3.0;
+    hs.dynamic = dyn * h;
+    hs.saddle = dead ? std::sqrt(double(saddle)) * h : 0.0;
+    hs.isolated = !dead || dyn >= params.isolation_voxels;
+    double nearest = INFINITY;
+    for (int64_t i : own) {
+      const glm::ivec3 g =
+          lo + glm::ivec3(int32_t(i % d.nx), int32_t((i / d.nx) % d.ny), int32_t(i / (int64_t(d.nx) * d.ny)));
+      const glm::dvec3 e = f.frame().voxelCentre(g.x, g.y, g.z) - hs.centre;
+      const double dd = e.x * e.x + e.y * e.y + e.z * e.z;
+      if (dd < nearest) {
+        nearest = dd;
+        hs.voxel = g;
+      }
+    }
+    out.push_back(hs);
+  }
+  return out;
+}
+
+auto key(const HotSpot& h) { return std::make_tuple(-h.radius, h.centre.x, h.centre.y, h.centre.z, h.plateau_voxels); }
+
+std::string describe(const HotSpot& h) {
+  return "r " + std::to_string(h.radius) + " at " + std::to_string(h.centre.x) + "," + std::to_string(h.centre.y) +
+         "," + std::to_string(h.centre.z) + " plateau " + std::to_string(h.plateau_voxels) + " saddle " +
+         std::to_string(h.saddle) + " dynamic " + std::to_string(h.dynamic) + (h.isolated ? " isolated" : "");
+}
+
+void expectMatchesBruteForce(const DistanceField& f, const std::string& what) {
+  int spots = 0;
+  for (const HotSpotParams params : {HotSpotParams{0.0, 2.0}, HotSpotParams{}, HotSpotParams{1.5, 3.0}}) {
+    auto got = findHotSpots(f, params);
+    ASSERT_TRUE(got.ok()) << what << ": " << got.error().message;
+    std::vector<HotSpot> expect = bruteHotSpots(f, params);
+    for (size_t i = 1; i < got->size(); ++i) {
+      EXPECT_GE((*got)[i - 1].radius, (*got)[i].radius) << what << ": not largest first";
+    }
+    std::vector<HotSpot> sorted = *got;
+    auto order = [](const HotSpot& a, const HotSpot& b) { return key(a) < key(b); };
+    std::sort(sorted.begin(), sorted.end(), order);
+    std::sort(expect.begin(), expect.end(), order);
+    ASSERT_EQ(sorted.size(), expect.size()) << what << " (min dynamic " << params.min_dynamic_voxels << ")";
+    for (size_t i = 0; i < expect.size(); ++i) {
+      const HotSpot &a = sorted[i], &e = expect[i];
+      const bool same = a.centre == e.centre && a.voxel == e.voxel && a.plateau_voxels == e.plateau_voxels &&
+                        a.radius == e.radius && a.modulus == e.modulus && a.dynamic == e.dynamic &&
+                        a.saddle == e.saddle && a.isolated == e.isolated;
+      EXPECT_TRUE(same) << what << ": " << describe(a) << " expected " << describe(e);
+    }
+    spots += int(expect.size());
+  }
+  EXPECT_GT(spots, 0) << what;
+}
+
+// A field of random values with plateaus and saddles: noise, smoothed by a running maximum over a few voxels and
+// quantised to `levels` values spaced `step` apart (zeros, the empty voxels, where the noise is lowest).
+DistanceField randomField(Dims d, int levels, uint32_t step, uint32_t seed) {
+  GridFrame frame;
+  frame.voxel_size = 0.25;
+  frame.origin = glm::dvec3(1.0, -2.0, 0.5);
+  DistanceField f(Dims{d.nx + 5, d.ny + 3, d.nz + 2}, frame, glm::ivec3(2, 1, 1), d, 0);
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> value(0, levels * 4);
+  std::vector<int> noise(size_t(d.count()));
+  for (int& v : noise) v = value(rng);
+  uint32_t mx = 0;
+  for (int64_t z = 0; z < d.nz; ++z)
+    for (int64_t y = 0; y < d.ny; ++y)
+      for (int64_t x = 0; x < d.nx; ++x) {
+        int m = 0;
+        for (int64_t k = std::max<int64_t>(x - 1, 0); k <= std::min<int64_t>(x + 1, d.nx - 1); ++k) {
+          m = std::max(m, noise[size_t(k + d.nx * (y + int64_t(d.ny) * z))]);
+        }
+        const int q = m * levels / (levels * 4 + 1) - 1;  // -1: empty
+        const uint32_t s = q < 0 ? 0 : uint32_t(q + 1) * step;
+        f.data()[x + d.nx * (y + int64_t(d.ny) * z)] = s;
+        mx = std::max(mx, s);
+      }
+  f.setMaxSquared(mx);
+  return f;
+}
+
+TEST(HotSpots, matchBruteForceOnRandomFields) {
+  // axes below 16 voxels (one voxel per label cell) and at or above (4), none a whole number of cells
+  const Dims dims[] = {Dims{21, 17, 13}, Dims{9, 33, 18}, Dims{19, 5, 22}, Dims{1, 1, 7}};
+  uint32_t seed = 1;
+  for (const Dims& d : dims) {
+    for (const auto& [levels, step] : {std::pair{4, 1u}, std::pair{9, 3u}, std::pair{25, 1u}, std::pair{6, 40000u}}) {
+      const DistanceField f = randomField(d, levels, step, seed++);
+      expectMatchesBruteForce(f, "field " + std::to_string(d.nx) + "x" + std::to_string(d.ny) + "x" +
+                                     std::to_string(d.nz) + " levels " + std::to_string(levels) + " step " +
+                                     std::to_string(step));
+    }
+  }
+}
+
+TEST(HotSpots, matchBruteForceOnDistanceFields) {
+  std::mt19937 rng(7);
+  for (int shape = 0; shape < 6; ++shape) {
+    // a few overlapping balls of assorted radii, and some noise: maxima with plateaus, necks and ties
+    VoxelGrid g(Dims{26, 19, 23});
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int b = 0; b < 2 + shape; ++b) {
+      const glm::dvec3 c(3 + 20 * u(rng), 3 + 13 * u(rng), 3 + 17 * u(rng));
+      const double r = 1.5 + 5.5 * u(rng);
+      for (int z = 0; z < 23; ++z)
+        for (int y = 0; y < 19; ++y)
+          for (int x = 0; x < 26; ++x) {
+            const glm::dvec3 p = glm::dvec3(x, y, z) + 0.5 - c;
+            if (glm::dot(p, p) < r * r) g.set(x, y, z);
+          }
+    }
+    if (shape % 2) {
+      const VoxelGrid noise = test::randomGrid(g.dims(), 0.05, uint32_t(shape));
+      for (int z = 0; z < 23; ++z)
+        for (int y = 0; y < 19; ++y)
+          for (int x = 0; x < 26; ++x)
+            if (noise.get(x, y, z)) g.set(x, y, z);
+    }
+    auto f = computeDistance(g);
+    ASSERT_TRUE(f.ok());
+    expectMatchesBruteForce(*f, "balls " + std::to_string(shape));
+  }
+}
+
+}  // namespace
+}  // namespace vox
