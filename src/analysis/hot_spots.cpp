@@ -1,37 +1,41 @@
-// Hot spots: regional maxima of the distance field, by a watershed over the filled voxels in decreasing distance
-// (union-find, 26-connectivity). See vox/analysis/thickness.h and docs/accuracy.md.
+// Hot spots: regional maxima of the distance field and their dynamics (see vox/analysis/thickness.h and
+// docs/accuracy.md), from the field's basins rather than from a watershed over the voxels in order of distance.
 //
-// Voxels are taken from the largest distance down (a counting sort by squared distance). A voxel with no processed
-// neighbour starts a component: a regional maximum. A voxel touching one component joins it (and, at the
-// component's peak level, its plateau). A voxel touching several merges them at its own level, the saddle: the
-// component with the highest peak survives and the others die there, with dynamic = peak radius - saddle radius.
-// Components with equal peaks that meet at the peak level are one plateau, one maximum. A component that never dies
-// holds the highest maximum of its connected body.
+// Order the filled voxels by (squared distance, then lower index first). Every voxel that is not the greatest of its
+// 26-neighbourhood points to its greatest neighbour; following the pointers climbs, never below the voxel's own
+// distance, to a voxel greater than all its neighbours: a summit, whose basin the voxel is in. Every regional maximum
+// holds one summit or more (a plateau's first voxel is one), and the lowest level that a path from one summit to
+// another must go down to is the same over the voxels as over the basins, where two basins are joined at the highest
+// min(s(u), s(v)) over their 26-adjacent voxel pairs u, v: inside a basin a path can always climb to its summit and
+// back. So the maxima's dynamics come from the basin graph, a few edges per summit, by Kruskal's merge from the
+// highest edge down: where two sets meet, the one with the lower summit (the later one among equals) dies at that
+// level, its saddle; summits of equal distance that meet at that distance are one plateau. Each step is a sweep over
+// the box's layers, in parallel, reading the field and the labels about each voxel where they lie in memory.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <memory>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
-#include "analysis/huge_array.h"
-#include "analysis/neighbours.h"
 #include "analysis/progress_gate.h"
 #include "vox/analysis/thickness.h"
+#include "vox/core/parallel.h"
 
 namespace vox {
 namespace {
 
-// A regional maximum's component. Its union-find links are kept apart (parent and plateau in findHotSpots), 4 bytes
-// a component: every voxel follows them from its neighbours' labels, and dense they stay in the caches.
+// A summit's set in the basin graph's merge.
 struct Component {
-  uint32_t peak = 0;    // squared distance at the maximum
-  uint32_t saddle = 0;  // squared distance where it died (merged into a higher maximum)
+  uint32_t peak = 0;    // squared distance at the summit
+  uint32_t saddle = 0;  // squared distance where it died (met a higher summit)
   bool dead = false;
-  int64_t count = 0;  // plateau voxels
-  int64_t sx = 0, sy = 0, sz = 0;
 };
 
 // The root of i's set in a union-find forest (link[k] == k at a root), compressing the path.
@@ -44,6 +48,93 @@ uint32_t findRoot(std::vector<uint32_t>& link, uint32_t i) {
     i = next;
   }
   return r;
+}
+
+// The highest joining level of each pair of basins a thread met: open addressing on the pair, growing at half full.
+class EdgeTable {
+ public:
+  struct Edge {
+    uint64_t pair = kEmpty;  // lower summit << 32 | higher summit
+    uint32_t level = 0;
+  };
+  static constexpr uint64_t kEmpty = ~uint64_t(0);
+  EdgeTable() : slots_(1024) {}
+  void raise(uint32_t a, uint32_t b, uint32_t level) {
+    const uint64_t pair = a < b ? (uint64_t(a) << 32 | b) : (uint64_t(b) << 32 | a);
+    if (slots_[last_].pair != pair) {  // not the same pair again, as along a boundary between two basins
+      if (2 * (used_ + 1) > slots_.size()) grow();
+      last_ = find(pair);
+      if (slots_[last_].pair == kEmpty) {
+        slots_[last_].pair = pair;
+        ++used_;
+      }
+    }
+    slots_[last_].level = std::max(slots_[last_].level, level);
+  }
+  const std::vector<Edge>& slots() const { return slots_; }
+
+ private:
+  size_t find(uint64_t pair) const {
+    size_t i = size_t((pair * 0x9E3779B97F4A7C15ull) >> 20) & (slots_.size() - 1);
+    while (slots_[i].pair != kEmpty && slots_[i].pair != pair) i = (i + 1) & (slots_.size() - 1);
+    return i;
+  }
+  void grow() {
+    std::vector<Edge> old(slots_.size() * 2);
+    old.swap(slots_);
+    for (const Edge& e : old) {
+      if (e.pair != kEmpty) slots_[find(e.pair)] = e;
+    }
+    last_ = 0;
+  }
+  std::vector<Edge> slots_;
+  size_t used_ = 0;
+  size_t last_ = 0;  // the slot raised last (or any slot)
+};
+
+// The greatest value over the 3 x 3 x 3 voxels about each voxel of layers [zb, ze) of a box, along x, then y, then z:
+// three values at each step instead of 27. key(i, k) is voxel i's value as the k-th of three along x (i = -1:
+// outside the box); up(v, k, step) the same for a greatest value of a row (step 3) or of a layer (step 9) as the
+// k-th of three rows or layers; `more` the greater (componentwise where T holds several). The box is taken in bands
+// of kBand rows, each through the layers, so that what is kept of three layers stays in the caches: for each band
+// and layer, out(z, y0, y1, below, at, above) gets the greatest about each voxel of rows [y0, y1) of layer z within
+// layers z - 1, z and z + 1 (x fastest, row y at (y - y0) * nx; below and above null outside the box).
+constexpr int64_t kBand = 16;
+template <class T, class Key, class Up, class More, class Out>
+void greatestAbout(const Dims& d, int64_t zb, int64_t ze, Key&& key, Up&& up, More&& more, Out&& out) {
+  const int64_t nx = d.nx, ny = d.ny, nz = d.nz, layer = nx * ny;
+  std::vector<T> rows(static_cast<size_t>((kBand + 2) * nx)), planes(static_cast<size_t>(3 * kBand * nx));
+  const T outside = up(key(-1, 0), 0, 3);
+  for (int64_t y0 = 0; y0 < ny; y0 += kBand) {
+    const int64_t y1 = std::min(ny, y0 + kBand), ya = std::max<int64_t>(y0 - 1, 0), yb = std::min(ny, y1 + 1);
+    auto plane = [&](int64_t z) { return planes.data() + (z % 3) * kBand * nx; };
+    auto fill = [&](int64_t z) {
+      for (int64_t y = ya; y < yb; ++y) {
+        const int64_t i = layer * z + nx * y;
+        T* r = rows.data() + nx * (y - ya);
+        for (int64_t x = 0; x < nx; ++x) {
+          const T left = x > 0 ? key(i + x - 1, 0) : key(-1, 0);
+          const T right = x + 1 < nx ? key(i + x + 1, 2) : key(-1, 2);
+          r[x] = more(more(left, key(i + x, 1)), right);
+        }
+      }
+      T* p = plane(z);
+      for (int64_t y = y0; y < y1; ++y) {
+        const T* r = rows.data() + nx * (y - ya);
+        T* o = p + nx * (y - y0);
+        for (int64_t x = 0; x < nx; ++x) {
+          const T lo = y > 0 ? up(r[x - nx], 0, 3) : outside, hi = y + 1 < ny ? up(r[x + nx], 2, 3) : outside;
+          o[x] = more(more(lo, up(r[x], 1, 3)), hi);
+        }
+      }
+    };
+    if (zb > 0) fill(zb - 1);
+    fill(zb);
+    for (int64_t z = zb; z < ze; ++z) {
+      if (z + 1 < nz) fill(z + 1);
+      out(z, y0, y1, z > 0 ? plane(z - 1) : nullptr, plane(z), z + 1 < nz ? plane(z + 1) : nullptr);
+    }
+  }
 }
 
 }  // namespace
@@ -59,185 +150,306 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
   if (d.count() >= int64_t(UINT32_MAX)) {
     return makeError(ErrorCode::kLimit, "hot spots: the model's bounding box has more than 2^32 voxels");
   }
-  const uint32_t max_s = distance.maxSquared();
-  if (max_s > (1u << 26)) {
-    return makeError(ErrorCode::kLimit, "hot spots: distances above 8192 voxels are not supported");
-  }
-  const int64_t nx = d.nx, ny = d.ny, nz = d.nz;
+  const int64_t nx = d.nx, ny = d.ny, nz = d.nz, layer = nx * ny;
   const uint32_t* data = distance.data();
   analysis_detail::ProgressGate gate(progress);
   auto cancelled = [] { return makeError(ErrorCode::kCancelled, "hot spots cancelled"); };
+  const int threads = threadsFor(d.count() / 4);
+  std::atomic<int64_t> done{0};
+  // Reports the share [from, to) of the progress for one more of the nz layers of a sweep (or of a band of them).
+  auto layerDone = [&](double from, double to, int64_t bands = 1) {
+    return gate.report(from + (to - from) * double(done.fetch_add(1) + 1) / double(nz * bands));
+  };
+  const int64_t bands = (ny + kBand - 1) / kBand;
 
-  // Counting sort of the filled voxels by squared distance, largest first.
-  std::vector<int64_t> start(size_t(max_s) + 2, 0);
-  for (int64_t i = 0; i < d.count(); ++i) {
-    if (data[i]) ++start[size_t(max_s - data[i]) + 1];
-  }
-  for (size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
-  const int64_t filled = start.back();
-  std::vector<uint32_t> order(static_cast<size_t>(filled));
-  for (int64_t i = 0; i < d.count(); ++i) {
-    if (data[i]) order[size_t(start[size_t(max_s - data[i])]++)] = uint32_t(i);
-  }
-  // Now start[k] ends the voxels at squared distance max_s - k in order: the loops below know each voxel's distance
-  // from its place in order, and never read the field (the voxels come scattered over it, each read a miss in the
-  // caches and in the address translations).
-  const std::vector<int64_t>& level_end = start;
-  auto levelRange = [&](uint32_t level) {  // the range of order at `level`
-    const size_t k = max_s - level;
-    return std::pair<int64_t, int64_t>(k == 0 ? 0 : level_end[k - 1], level_end[k]);
-  };
-  if (!gate.report(0.1)) return cancelled();
-
-  // component + 1; 0: not processed yet. The voxels come in order of distance, scattered over the part, so each
-  // reads its neighbours' labels from memory: the labels are stored by cells of 4 x 4 x 4 voxels (the 16 voxels of
-  // a cell's layer in one 64-byte line), where the 27 voxels about one lie in about 7 lines (about 10 when stored
-  // by rows); the lines about the voxel kAhead places on are asked for ahead; and the labels lie
-  // on 2 MiB pages where the kernel gives them, so that the reads also find their address translations. (A cell is
-  // one voxel wide along an axis of fewer than 16 voxels: rounding the box up to whole cells then adds at most 3/16
-  // along any axis, where a plate one voxel thick would take four times its labels.)
-  auto shift = [](int64_t n) { return n >= 16 ? 2 : 0; };
-  const int sx = shift(nx), sy = shift(ny), sz = shift(nz);
-  const int64_t mx = (int64_t(1) << sx) - 1, my = (int64_t(1) << sy) - 1, mz = (int64_t(1) << sz) - 1;
-  const int64_t cx = (nx + mx) >> sx, cy = (ny + my) >> sy, cz = (nz + mz) >> sz;
-  auto cell = [=](int64_t x, int64_t y, int64_t z) {
-    return size_t(((((z >> sz) * cy + (y >> sy)) * cx + (x >> sx)) << (sx + sy + sz)) + ((z & mz) << (sx + sy)) +
-                  ((y & my) << sx) + (x & mx));
-  };
-  const auto nx32 = uint32_t(nx), ny32 = uint32_t(ny);
-  auto coordinates = [nx32, ny32](int64_t i, int64_t& x, int64_t& y, int64_t& z) {
-    const uint32_t row = uint32_t(i) / nx32;  // (32-bit divisions: the box has fewer than 2^32 voxels)
-    x = uint32_t(i) - row * nx32;
-    y = row % ny32;
-    z = row / ny32;
-  };
-  analysis_detail::HugeArray<uint32_t> label(size_t((cx * cy * cz) << (sx + sy + sz)));
-  constexpr int64_t kAhead = 16;
-  std::vector<Component> comps;
-  std::vector<uint32_t> parent;   // union-find over all merges
-  std::vector<uint32_t> plateau;  // union-find over plateau merges only (equal peaks meeting at the peak level)
-  auto root = [&](uint32_t k) { return findRoot(parent, k); };
-  uint32_t roots[26];
-  size_t level = 0;  // the voxel's bucket: squared distance max_s - level
-  for (int64_t n = 0; n < filled; ++n) {
-    if (n + kAhead < filled) {
-      const int64_t a = order[size_t(n + kAhead)];
-      int64_t ax, ay, az;
-      coordinates(a, ax, ay, az);
-      const int64_t x0 = std::max<int64_t>(ax - 1, 0), x1 = std::min(ax + 1, nx - 1);
-      const int64_t y0 = std::max<int64_t>(ay - 1, 0), y1 = std::min(ay + 1, ny - 1);
-      for (int64_t z = std::max<int64_t>(az - 1, 0); z <= std::min(az + 1, nz - 1); ++z) {
-        __builtin_prefetch(label.data() + cell(x0, y0, z));
-        __builtin_prefetch(label.data() + cell(x1, y0, z));
-        __builtin_prefetch(label.data() + cell(x0, y1, z));
-        __builtin_prefetch(label.data() + cell(x1, y1, z));
-      }
-    }
-    const int64_t i = order[size_t(n)];
-    while (n >= level_end[level]) ++level;
-    const auto s = uint32_t(max_s - level);
-    int64_t x, y, z;
-    coordinates(i, x, y, z);
-    int nr = 0;
-    analysis_detail::forEach26At(x, y, z, nx, ny, nz, [&](int64_t qx, int64_t qy, int64_t qz) {
-      const uint32_t l = label[cell(qx, qy, qz)];
-      if (!l) return;
-      const uint32_t r = root(l - 1);
-      if (std::find(roots, roots + nr, r) == roots + nr) roots[nr++] = r;
-    });
-    uint32_t own;
-    if (nr == 0) {
-      own = uint32_t(comps.size());
-      Component c;
-      c.peak = s;
-      comps.push_back(c);
-      parent.push_back(own);
-      plateau.push_back(own);
-    } else {
-      own = roots[0];  // the highest peak survives; the oldest among equals
-      for (int k = 1; k < nr; ++k) {
-        const uint32_t r = roots[k];
-        if (comps[r].peak > comps[own].peak || (comps[r].peak == comps[own].peak && r < own)) own = r;
-      }
-      for (int k = 0; k < nr; ++k) {
-        const uint32_t r = roots[k];
-        if (r == own) continue;
-        Component& c = comps[r];
-        parent[r] = own;
-        if (c.peak == s && comps[own].peak == s) {  // one plateau
-          const uint32_t pr = findRoot(plateau, r);
-          Component& o = comps[own];
-          o.count += comps[pr].count;
-          o.sx += comps[pr].sx;
-          o.sy += comps[pr].sy;
-          o.sz += comps[pr].sz;
-          plateau[pr] = own;
-        } else {
-          c.dead = true;
-          c.saddle = s;
+  // The 26 neighbours in increasing index order, as offsets, and which of them lie inside the box about (x, y, z).
+  int64_t offset[26];
+  int dxyz[26][3];
+  {
+    int k = 0;
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          if (!dx && !dy && !dz) continue;
+          dxyz[k][0] = dx;
+          dxyz[k][1] = dy;
+          dxyz[k][2] = dz;
+          offset[k++] = dx + nx * (dy + ny * dz);
         }
-      }
-    }
-    Component& c = comps[own];
-    if (c.peak == s) {
-      ++c.count;
-      c.sx += x;
-      c.sy += y;
-      c.sz += z;
-    }
-    label[cell(x, y, z)] = own + 1;
-    if ((n & 0xfffff) == 0 && !gate.report(0.1 + 0.8 * double(n) / double(filled))) return cancelled();
   }
+  auto inside = [&](int64_t x, int64_t y, int64_t z, int k) {
+    const int64_t qx = x + dxyz[k][0], qy = y + dxyz[k][1], qz = z + dxyz[k][2];
+    return qx >= 0 && qy >= 0 && qz >= 0 && qx < nx && qy < ny && qz < nz;
+  };
+  // f(k) for every neighbour k of (x, y, z) in the box, in increasing index order; without a test per neighbour
+  // away from the box's faces.
+  auto forNeighbours = [&](int64_t x, int64_t y, int64_t z, auto&& f) {
+    if (x > 0 && y > 0 && z > 0 && x + 1 < nx && y + 1 < ny && z + 1 < nz) {
+      for (int k = 0; k < 26; ++k) f(k);
+    } else {
+      for (int k = 0; k < 26; ++k)
+        if (inside(x, y, z, k)) f(k);
+    }
+  };
 
-  // Reported maxima: plateau roots that stand out by min_dynamic (survivors always do).
-  const double h = distance.voxelSize();
-  const GridFrame& frame = distance.frame();
-  const glm::ivec3 lo = distance.boxMin();
+  constexpr uint16_t kClimb16 = 0x8000;
+  auto noMemory = [](int64_t bytes) {
+    return makeError(ErrorCode::kLimit,
+                     "hot spots: cannot allocate " + std::to_string(bytes >> 20) + " MiB for labels");
+  };
+  // 1. Each filled voxel's code: which of its 26 neighbours is its greatest (kClimb | k), or none, a summit. As keys,
+  // distance << 5 | 31 - rank, where rank orders the 27 voxels about one by index (9 (dz + 1) + 3 (dy + 1) + dx + 1,
+  // 13 the voxel itself): the greatest key names the greatest voxel, and its rank what was added to the key's low
+  // bits along the way. Codes fit 16 bits, and so do the summits' numbers on most parts: the labels are 16 bits
+  // wide until there are more summits. They start zeroed (fresh pages; only the filled voxels' are written).
+  std::unique_ptr<uint16_t[], decltype(&std::free)> code(
+      static_cast<uint16_t*>(std::calloc(size_t(d.count()), sizeof(uint16_t))), &std::free);
+  if (!code) return noMemory(d.count() * 2);
+  std::vector<std::vector<uint32_t>> summits(static_cast<size_t>(nz));  // per layer, in index order
+  const int64_t grain = std::max<int64_t>(8, nz / (8 * threads));       // a slab reads two more layers about it
+  {
+    auto key = [&](int64_t i, int k) { return (i < 0 ? uint64_t(0) : uint64_t(data[i]) << 5) | uint64_t(31 - k); };
+    auto up = [](uint64_t v, int k, int step) { return v - uint64_t(k * step); };
+    auto more = [](uint64_t a, uint64_t b) { return std::max(a, b); };
+    parallelChunks(0, nz, grain, threads, [&](int, int64_t zb, int64_t ze) {
+      greatestAbout<uint64_t>(
+          d, zb, ze, key, up, more,
+          [&](int64_t z, int64_t y0, int64_t y1, const uint64_t* below, const uint64_t* at, const uint64_t* above) {
+            if (gate.cancelled()) return;
+            const uint64_t outside = up(key(-1, 0), 0, 9);
+            for (int64_t j = 0; j < (y1 - y0) * nx; ++j) {
+              const int64_t i = layer * z + nx * y0 + j;
+              if (!data[i]) continue;
+              const uint64_t m =
+                  more(more(below ? below[j] : outside, up(at[j], 1, 9)), above ? up(above[j], 2, 9) : outside);
+              const auto rank = int(31 - (m & 31));
+              if (rank != 13) {
+                code[size_t(i)] = uint16_t(kClimb16 | (rank < 13 ? rank : rank - 1));
+              } else {
+                summits[size_t(z)].push_back(uint32_t(i));
+              }
+            }
+            layerDone(0.0, 0.35, bands);
+          });
+    });
+  }
+  if (gate.cancelled()) return cancelled();
+  std::vector<uint32_t> summit_voxel;
+  for (const auto& v : summits) summit_voxel.insert(summit_voxel.end(), v.begin(), v.end());
+  summits = {};
+  if (summit_voxel.size() >= 0x80000000u) return makeError(ErrorCode::kLimit, "hot spots: more than 2^31 maxima");
+  std::vector<Component> comps(summit_voxel.size());
+  for (size_t k = 0; k < comps.size(); ++k) comps[k].peak = data[summit_voxel[k]];
+
+  // Steps 2 and 3 over labels of type L: the codes themselves, or (more summits than 16 bits number) 32-bit copies.
+  std::vector<EdgeTable> tables(static_cast<size_t>(threads));
+  std::vector<std::vector<std::pair<uint32_t, uint32_t>>> plateau_voxels(static_cast<size_t>(nz));
+  auto basins = [&](auto* label) {
+    using L = std::remove_pointer_t<decltype(label)>;
+    constexpr L kClimb = L(1) << (8 * sizeof(L) - 1);
+    // 2. Summits numbered in index order (so that among equal distances the lower number is the earlier voxel), then
+    // every voxel's summit, by following the codes up to a label that is a number and writing that number back
+    // along the way. Followed in the order of the layers, a path that climbs to the next layers would run through
+    // voxels far apart in memory, one miss each, and the paths beside it would do the same: so the layers are swept
+    // upwards following only paths that stay in the layers below, a path that leaves them marked kWait where it
+    // stands, then downwards for the marked ones, whose paths then mostly reach numbers in the layers above at
+    // once. A thread may follow and write labels in another's layers: a voxel's label is always its code, its code
+    // marked, or its number, all of which lead to its summit (a mark goes only on the code, by a compare and
+    // exchange, never on a number written meanwhile), by relaxed atomic loads and stores.
+    constexpr L kWait = kClimb >> 1, kCode = kWait - 1;
+    for (size_t k = 0; k < summit_voxel.size(); ++k) label[summit_voxel[k]] = L(k);
+    auto load = [&](int64_t q) { return std::atomic_ref<L>(label[q]).load(std::memory_order_relaxed); };
+    auto store = [&](int64_t q, L l) { std::atomic_ref<L>(label[q]).store(l, std::memory_order_relaxed); };
+    for (const bool upwards : {true, false}) {
+      done = 0;
+      parallelChunks(0, nz, grain, threads, [&](int, int64_t zb, int64_t ze) {
+        std::vector<std::pair<int64_t, L>> path;  // the voxels followed, with the codes read there
+        for (int64_t n = zb; n < ze && !gate.cancelled(); ++n) {
+          const int64_t z = upwards ? n : nz - 1 - n;
+          const int64_t top = layer * (z + 1);  // upwards, paths stop where they reach the layers above z
+          for (int64_t i = layer * z; i < top; ++i) {
+            if (!data[i]) continue;
+            L l = load(i);
+            if (!(l & kClimb) || (upwards && (l & kWait))) continue;
+            path.clear();
+            int64_t q = i;
+            bool wait = false;
+            while (l & kClimb) {
+              path.emplace_back(q, l);
+              q += offset[l & kCode];
+              if (upwards && (q >= top || (load(q) & (kClimb | kWait)) == (kClimb | kWait))) {
+                wait = true;
+                break;
+              }
+              l = load(q);
+            }
+            for (const auto& [v, c] : path) {
+              if (!wait) {
+                store(v, l);
+              } else {  // marked only where no thread has written the number since
+                L expected = c;
+                std::atomic_ref<L>(label[v]).compare_exchange_strong(expected, L(c | kWait), std::memory_order_relaxed);
+              }
+            }
+          }
+          layerDone(upwards ? 0.35 : 0.45, upwards ? 0.45 : 0.55);
+        }
+      });
+      if (gate.cancelled()) return;
+    }
+    // 3. The basin graph: for each pair of 26-adjacent filled voxels in two basins, the pair's level
+    // min(s(u), s(v)), the highest kept per pair of basins (each voxel pair met once, from its lower voxel); and the
+    // plateau voxels (at their summit's distance) with their summits, in index order. Only voxels with another
+    // basin about them look at their neighbours: those whose filled neighbours' greatest label and greatest
+    // ~label (the least label) are not both their own.
+    struct Labels {
+      L most = 0, least = 0;  // label + 1 and ~label: 0 for empty voxels
+    };
+    auto labels = [&](int64_t i, int) { return i >= 0 && data[i] ? Labels{L(label[i] + 1), L(~label[i])} : Labels{}; };
+    auto same = [](Labels v, int, int) { return v; };
+    auto both = [](Labels a, Labels b) { return Labels{std::max(a.most, b.most), std::max(a.least, b.least)}; };
+    done = 0;
+    parallelChunks(0, nz, grain, threads, [&](int t, int64_t zb, int64_t ze) {
+      EdgeTable& table = tables[size_t(t)];
+      greatestAbout<Labels>(
+          d, zb, ze, labels, same, both,
+          [&](int64_t z, int64_t y0, int64_t y1, const Labels* below, const Labels* at, const Labels* above) {
+            if (gate.cancelled()) return;
+            for (int64_t j = 0; j < (y1 - y0) * nx; ++j) {
+              const int64_t i = layer * z + nx * y0 + j;
+              const uint32_t s = data[i];
+              if (!s) continue;
+              const L own = label[i];
+              if (s == comps[own].peak) plateau_voxels[size_t(z)].emplace_back(uint32_t(i), own);
+              Labels m = at[j];
+              if (below) m = both(m, below[j]);
+              if (above) m = both(m, above[j]);
+              if (m.most == L(own + 1) && m.least == L(~own)) continue;  // one basin about it
+              forNeighbours(j % nx, y0 + j / nx, z, [&](int k) {
+                if (k < 13) return;  // met from the other voxel
+                const int64_t q = i + offset[k];
+                const uint32_t v = data[q];
+                if (v && label[q] != own) table.raise(own, label[q], std::min(s, v));
+              });
+            }
+            layerDone(0.55, 0.9, bands);
+          });
+    });
+  };
+  if (summit_voxel.size() < 0x8000u) {
+    basins(code.get());
+  } else {
+    std::unique_ptr<uint32_t[], decltype(&std::free)> wide(
+        static_cast<uint32_t*>(std::calloc(size_t(d.count()), sizeof(uint32_t))), &std::free);
+    if (!wide) return noMemory(d.count() * 4);
+    for (int64_t i = 0; i < d.count(); ++i) {
+      if (code[size_t(i)] & kClimb16) wide[size_t(i)] = 0x80000000u | (code[size_t(i)] & 31u);
+    }
+    code.reset();
+    basins(wide.get());
+  }
+  code.reset();
+  if (gate.cancelled()) return cancelled();
+
+  // 4. Kruskal's merge from the highest edge down. The higher summit of two sets survives (the earlier among equals);
+  // the other dies at the edge's level, unless both summits lie at that level: then they are one plateau.
+  std::vector<std::pair<uint32_t, uint64_t>> edges;
+  for (const EdgeTable& table : tables)
+    for (const EdgeTable::Edge& e : table.slots())
+      if (e.pair != EdgeTable::kEmpty) edges.emplace_back(e.level, e.pair);
+  tables = {};
+  std::sort(edges.begin(), edges.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<uint32_t> parent(comps.size()), plateau(comps.size());
+  for (uint32_t k = 0; k < comps.size(); ++k) parent[k] = plateau[k] = k;
+  for (const auto& [level, pair] : edges) {
+    uint32_t a = findRoot(parent, uint32_t(pair >> 32)), b = findRoot(parent, uint32_t(pair));
+    if (a == b) continue;
+    if (comps[b].peak > comps[a].peak || (comps[b].peak == comps[a].peak && b < a)) std::swap(a, b);
+    parent[b] = a;  // a survives
+    if (comps[a].peak == level && comps[b].peak == level) {
+      plateau[findRoot(plateau, b)] = findRoot(plateau, a);
+    } else {
+      comps[b].dead = true;
+      comps[b].saddle = level;
+    }
+  }
+  edges = {};
+  if (!gate.report(0.95)) return cancelled();
+
+  // Reported maxima: plateau roots that stand out by min_dynamic (survivors always do). A set that died at its own
+  // summit's level was a plateau touching a higher voxel, not a maximum.
   std::vector<int64_t> spot_of(comps.size(), -1);
+  std::vector<uint32_t> spot_comp;
   for (uint32_t k = 0; k < comps.size(); ++k) {
     const Component& c = comps[k];
     if (plateau[k] != k) continue;  // absorbed into another plateau
     const double r = std::sqrt(double(c.peak));
     const double dyn = c.dead ? r - std::sqrt(double(c.saddle)) : r;
-    // A component that died at its own peak level was a plateau touching a higher voxel, not a maximum.
     if (c.dead && (c.saddle == c.peak || dyn < params.min_dynamic_voxels)) continue;
+    spot_of[k] = int64_t(spot_comp.size());
+    spot_comp.push_back(k);
+  }
+  // Each plateau's voxels: its summits' basins' voxels at the summits' distance (a path up from such a voxel never
+  // leaves that distance). Their mean is the centre; the voxel nearest it, the earliest among equals, is `voxel`.
+  std::vector<uint32_t> spot_voxels;
+  std::vector<int64_t> spot_start(spot_comp.size() + 1, 0);
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<int64_t> fill(spot_start.begin(), spot_start.end() - 1);
+    for (const auto& layer_voxels : plateau_voxels) {
+      for (const auto& [i, summit] : layer_voxels) {
+        const int64_t spot = spot_of[findRoot(plateau, summit)];
+        if (spot < 0) continue;
+        if (pass == 0) {
+          ++spot_start[size_t(spot) + 1];
+        } else {
+          spot_voxels[size_t(fill[size_t(spot)]++)] = i;
+        }
+      }
+    }
+    if (pass == 0) {
+      for (size_t k = 1; k < spot_start.size(); ++k) spot_start[k] += spot_start[k - 1];
+      spot_voxels.resize(size_t(spot_start.back()));
+    }
+  }
+  plateau_voxels = {};
+  const double h = distance.voxelSize();
+  const GridFrame& frame = distance.frame();
+  const glm::ivec3 lo = distance.boxMin();
+  auto coordinates = [&](uint32_t i) {
+    return glm::ivec3(int32_t(i % uint32_t(nx)), int32_t(i / uint32_t(nx) % uint32_t(ny)),
+                      int32_t(i / uint32_t(layer)));
+  };
+  for (size_t spot = 0; spot < spot_comp.size(); ++spot) {
+    const Component& c = comps[spot_comp[spot]];
+    const double r = std::sqrt(double(c.peak));
+    int64_t sx = 0, sy = 0, sz = 0;
+    for (int64_t n = spot_start[spot]; n < spot_start[spot + 1]; ++n) {
+      const glm::ivec3 v = coordinates(spot_voxels[size_t(n)]);
+      sx += v.x;
+      sy += v.y;
+      sz += v.z;
+    }
     HotSpot hs;
-    const glm::dvec3 mean = glm::dvec3(double(c.sx), double(c.sy), double(c.sz)) / double(c.count);
+    const int64_t count = spot_start[spot + 1] - spot_start[spot];
+    const glm::dvec3 mean = glm::dvec3(double(sx), double(sy), double(sz)) / double(count);
     hs.centre = frame.origin + (glm::dvec3(lo) + mean + 0.5) * h;
-    hs.plateau_voxels = c.count;
+    hs.plateau_voxels = count;
     hs.radius = r * h;
     hs.modulus = hs.radius / 3.0;
-    hs.dynamic = dyn * h;
+    hs.dynamic = (c.dead ? r - std::sqrt(double(c.saddle)) : r) * h;
     hs.saddle = c.dead ? std::sqrt(double(c.saddle)) * h : 0.0;
-    hs.isolated = !c.dead || dyn >= params.isolation_voxels;
-    spot_of[k] = int64_t(out.size());
-    out.push_back(hs);
-  }
-  // The plateau voxel nearest each reported centre, among the voxels at the levels of the reported peaks: the order is
-  // by distance, so those lie in one range of it per level.
-  std::vector<double> best(out.size(), INFINITY);
-  std::vector<uint32_t> levels;
-  for (uint32_t k = 0; k < comps.size(); ++k)
-    if (spot_of[k] >= 0) levels.push_back(comps[k].peak);
-  std::sort(levels.begin(), levels.end());
-  levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
-  for (const uint32_t peak : levels) {
-    const auto range = levelRange(peak);
-    for (int64_t n = range.first; n < range.second; ++n) {
-      const int64_t i = order[size_t(n)];
-      int64_t x, y, z;
-      coordinates(i, x, y, z);
-      const uint32_t k = findRoot(plateau, label[cell(x, y, z)] - 1);
-      if (spot_of[k] < 0 || comps[k].peak != peak) continue;
-      HotSpot& hs = out[size_t(spot_of[k])];
-      const glm::ivec3 v = glm::ivec3(int32_t(x), int32_t(y), int32_t(z)) + lo;
+    hs.isolated = !c.dead || r - std::sqrt(double(c.saddle)) >= params.isolation_voxels;
+    double best = INFINITY;
+    for (int64_t n = spot_start[spot]; n < spot_start[spot + 1]; ++n) {
+      const glm::ivec3 v = coordinates(spot_voxels[size_t(n)]) + lo;
       const glm::dvec3 p = frame.voxelCentre(v.x, v.y, v.z) - hs.centre;
       const double dd = p.x * p.x + p.y * p.y + p.z * p.z;
-      if (dd < best[size_t(spot_of[k])]) {
-        best[size_t(spot_of[k])] = dd;
+      if (dd < best) {
+        best = dd;
         hs.voxel = v;
       }
     }
+    out.push_back(hs);
   }
   std::stable_sort(out.begin(), out.end(), [](const HotSpot& a, const HotSpot& b) { return a.radius > b.radius; });
   if (!gate.report(1.0)) return cancelled();

@@ -16,8 +16,7 @@ namespace vox::analysis_detail {
 // Zeroed values on memory the kernel is asked to back with 2 MiB pages where it can (Linux, transparent huge pages
 // on "madvise"): for arrays read at scattered places, where with 4 KiB pages most reads would miss the address
 // translation caches as well as the data caches (a ball's walk reads packed brick words all over its thread's
-// array, 18 MB at first at R = 1000; the containment test reads the lattice table, 44 MB there; the hot spots
-// watershed reads the labels about voxels taken in order of distance, 2.8 GB there).
+// array, 18 MB at first at R = 1000; the containment test reads the lattice table, 44 MB there).
 template <class T>
 class HugeArray {
  public:

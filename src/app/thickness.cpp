@@ -46,16 +46,16 @@ void requestThickness(AppState& state) {
   state.thickness.request(key, "Computing thickness", [grid, id](const ProgressFn& progress) {
     using R = Result<std::shared_ptr<const ThicknessResult>>;
     const double t0 = nowSeconds();
-    // The bar's share of each step as their times go (igea at R = 512: 0.4 s, 5 s and 2.5 s; rocker_arm: 0.05 s,
-    // 0.7 s, 0.5 s): distance 0..5%, hot spots 5..55%, thickness 55..100%.
+    // The bar's share of each step as their times go (igea at R = 512: 0.4 s, 1 s and 2.5 s; rocker_arm: 0.05 s,
+    // 0.26 s, 0.5 s): distance 0..10%, hot spots 10..35%, thickness 35..100%.
     const auto part = [&progress](double from, double to) {
       return ProgressFn([&progress, from, to](double f) { return !progress || progress(from + (to - from) * f); });
     };
-    auto distance = computeDistance(grid, part(0.0, 0.05));
+    auto distance = computeDistance(grid, part(0.0, 0.1));
     if (!distance) return R(distance.error());
-    auto hot = findHotSpots(*distance, {}, part(0.05, 0.55));
+    auto hot = findHotSpots(*distance, {}, part(0.1, 0.35));
     if (!hot) return R(hot.error());
-    auto thickness = computeThickness(std::move(distance).value(), {}, part(0.55, 1.0));
+    auto thickness = computeThickness(std::move(distance).value(), {}, part(0.35, 1.0));
     if (!thickness) return R(thickness.error());
     auto out = std::make_shared<ThicknessResult>();
     out->id = id;

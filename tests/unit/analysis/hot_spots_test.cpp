@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
 
 #include "grids.h"
 #include "vox/analysis/distance.h"
@@ -209,6 +210,45 @@ TEST(HotSpots, matchBruteForceOnRandomFields) {
   }
 }
 
+// More maxima than 16-bit labels number (the labels widen): a lattice of single-voxel peaks of distance 2 to 4
+// every other voxel, separated by voxels of distance 1. Every peak is a maximum that dies at 1, but the first of
+// the highest, which never does.
+TEST(HotSpots, moreMaximaThan16BitLabelsNumber) {
+  const int n = 82;  // and over 2^19 voxels: on every thread
+  DistanceField f(Dims{n, n, n}, GridFrame{}, glm::ivec3(0), Dims{n, n, n}, 0);
+  auto peak = [](int x, int y, int z) { return uint32_t(2 + (x / 2 + y / 2 + z / 2) % 3); };
+  int64_t peaks = 0, highest = 0;
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        const bool top = x % 2 == 0 && y % 2 == 0 && z % 2 == 0;
+        f.data()[f.boxIndex(x, y, z)] = top ? peak(x, y, z) : 1;
+        peaks += top;
+        highest += top && peak(x, y, z) == 4;
+      }
+  f.setMaxSquared(4);
+  ASSERT_GT(peaks, 32768);
+  auto all = findHotSpots(f, HotSpotParams{0.0, 2.0});
+  ASSERT_TRUE(all.ok());
+  ASSERT_EQ(int64_t(all->size()), peaks);
+  const HotSpot& first = all->front();
+  EXPECT_EQ(first.voxel, glm::ivec3(4, 0, 0));  // the first voxel of distance 4
+  EXPECT_EQ(first.saddle, 0.0);
+  EXPECT_EQ(first.radius, 2.0);
+  int64_t wrong = 0;
+  for (size_t k = 1; k < all->size(); ++k) {
+    const HotSpot& h = (*all)[k];
+    const glm::ivec3 v = h.voxel;
+    wrong += h.saddle != 1.0 || h.plateau_voxels != 1 || v % 2 != glm::ivec3(0) ||
+             h.radius != std::sqrt(double(peak(v.x, v.y, v.z))) || h.isolated;
+  }
+  EXPECT_EQ(wrong, 0);
+  // by default only the peaks that stand out by a voxel: those of distance 4 (radius 2, saddle 1)
+  auto standing = findHotSpots(f);
+  ASSERT_TRUE(standing.ok());
+  EXPECT_EQ(int64_t(standing->size()), highest);
+}
+
 TEST(HotSpots, matchBruteForceOnDistanceFields) {
   std::mt19937 rng(7);
   for (int shape = 0; shape < 6; ++shape) {
@@ -236,6 +276,25 @@ TEST(HotSpots, matchBruteForceOnDistanceFields) {
     ASSERT_TRUE(f.ok());
     expectMatchesBruteForce(*f, "balls " + std::to_string(shape));
   }
+}
+
+// A box large enough that the sweeps run on every thread (threadsFor: 2^19 voxels in the filled box), with basins
+// meeting across the threads' slabs and bands of rows.
+TEST(HotSpots, matchBruteForceOnAFieldSweptByAllThreads) {
+  const Dims dims{96, 84, 116};
+  VoxelGrid g(dims);
+  const glm::dvec4 balls[] = {{15, 20, 15, 14}, {75, 55, 40, 19}, {45, 40, 85, 20}, {30, 25, 55, 9}, {80, 64, 100, 14}};
+  for (int z = 0; z < dims.nz; ++z)
+    for (int y = 0; y < dims.ny; ++y)
+      for (int x = 0; x < dims.nx; ++x)
+        for (const glm::dvec4& b : balls) {
+          const glm::dvec3 p = glm::dvec3(x, y, z) + 0.5 - glm::dvec3(b);
+          if (glm::dot(p, p) < b.w * b.w) g.set(x, y, z);
+        }
+  auto f = computeDistance(g);
+  ASSERT_TRUE(f.ok());
+  ASSERT_GT(f->boxDims().count(), int64_t(1) << 19);
+  expectMatchesBruteForce(*f, "five balls");
 }
 
 }  // namespace
