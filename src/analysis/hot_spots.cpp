@@ -92,13 +92,14 @@ class EdgeTable {
   size_t last_ = 0;  // the slot raised last (or any slot)
 };
 
-// The greatest value over the 3 x 3 x 3 voxels about each voxel of layers [zb, ze) of a box, along x, then y, then z:
-// three values at each step instead of 27. key(i, k) is voxel i's value as the k-th of three along x (i = -1:
-// outside the box); up(v, k, step) the same for a greatest value of a row (step 3) or of a layer (step 9) as the
-// k-th of three rows or layers; `more` the greater (componentwise where T holds several). The box is taken in bands
-// of kBand rows, each through the layers, so that what is kept of three layers stays in the caches: for each band
-// and layer, out(z, y0, y1, below, at, above) gets the greatest about each voxel of rows [y0, y1) of layer z within
-// layers z - 1, z and z + 1 (x fastest, row y at (y - y0) * nx; below and above null outside the box).
+// The greatest values over the 3 x 3 voxels about each voxel in its layer, for the layers about [zb, ze) of a box,
+// along x and then y: three values at each step instead of 9; the caller takes the greatest of three layers, the
+// last step of the 3 x 3 x 3 maximum. key(i, k) is voxel i's value as the k-th of three along x (i = -1: outside
+// the box); up(v, k, step) the same for a greatest value of a row as the k-th of three rows (step 3), and the caller
+// uses it for layers (step 9); `more` is the greater (componentwise where T holds several). The box is taken in
+// bands of kBand rows, each through the layers, so that what is kept of three layers stays in the caches: for each
+// band and layer z, out(z, y0, y1, below, at, above) gets the 3 x 3 greatest of rows [y0, y1) in layers z - 1, z and
+// z + 1 (x fastest, row y at (y - y0) * nx; below and above null outside the box), and returns false to stop.
 constexpr int64_t kBand = 16;
 template <class T, class Key, class Up, class More, class Out>
 void greatestAbout(const Dims& d, int64_t zb, int64_t ze, Key&& key, Up&& up, More&& more, Out&& out) {
@@ -132,7 +133,7 @@ void greatestAbout(const Dims& d, int64_t zb, int64_t ze, Key&& key, Up&& up, Mo
     fill(zb);
     for (int64_t z = zb; z < ze; ++z) {
       if (z + 1 < nz) fill(z + 1);
-      out(z, y0, y1, z > 0 ? plane(z - 1) : nullptr, plane(z), z + 1 < nz ? plane(z + 1) : nullptr);
+      if (!out(z, y0, y1, z > 0 ? plane(z - 1) : nullptr, plane(z), z + 1 < nz ? plane(z + 1) : nullptr)) return;
     }
   }
 }
@@ -156,9 +157,12 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
   auto cancelled = [] { return makeError(ErrorCode::kCancelled, "hot spots cancelled"); };
   const int threads = threadsFor(d.count() / 4);
   std::atomic<int64_t> done{0};
-  // Reports the share [from, to) of the progress for one more of the nz layers of a sweep (or of a band of them).
+  // Reports the share [from, to) of the progress for one more of the nz layers of a sweep (or of a band of them),
+  // every 16th; false once cancelled.
   auto layerDone = [&](double from, double to, int64_t bands = 1) {
-    return gate.report(from + (to - from) * double(done.fetch_add(1) + 1) / double(nz * bands));
+    const int64_t n = done.fetch_add(1) + 1;
+    if (n % 16 && n != nz * bands) return !gate.cancelled();
+    return gate.report(from + (to - from) * double(n) / double(nz * bands));
   };
   const int64_t bands = (ny + kBand - 1) / kBand;
 
@@ -201,7 +205,8 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
   // distance << 5 | 31 - rank, where rank orders the 27 voxels about one by index (9 (dz + 1) + 3 (dy + 1) + dx + 1,
   // 13 the voxel itself): the greatest key names the greatest voxel, and its rank what was added to the key's low
   // bits along the way. Codes fit 16 bits, and so do the summits' numbers on most parts: the labels are 16 bits
-  // wide until there are more summits. They start zeroed (fresh pages; only the filled voxels' are written).
+  // wide until there are more summits. They start zeroed (fresh pages; only the climbing voxels' are written here,
+  // the summits' in step 2).
   std::unique_ptr<uint16_t[], decltype(&std::free)> code(
       static_cast<uint16_t*>(std::calloc(size_t(d.count()), sizeof(uint16_t))), &std::free);
   if (!code) return noMemory(d.count() * 2);
@@ -215,7 +220,6 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
       greatestAbout<uint64_t>(
           d, zb, ze, key, up, more,
           [&](int64_t z, int64_t y0, int64_t y1, const uint64_t* below, const uint64_t* at, const uint64_t* above) {
-            if (gate.cancelled()) return;
             const uint64_t outside = up(key(-1, 0), 0, 9);
             for (int64_t j = 0; j < (y1 - y0) * nx; ++j) {
               const int64_t i = layer * z + nx * y0 + j;
@@ -229,7 +233,7 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
                 summits[size_t(z)].push_back(uint32_t(i));
               }
             }
-            layerDone(0.0, 0.35, bands);
+            return layerDone(0.0, 0.35, bands);
           });
     });
   }
@@ -251,8 +255,8 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
     // every voxel's summit, by following the codes up to a label that is a number and writing that number back
     // along the way. Followed in the order of the layers, a path that climbs to the next layers would run through
     // voxels far apart in memory, one miss each, and the paths beside it would do the same: so the layers are swept
-    // upwards following only paths that stay in the layers below, a path that leaves them marked kWait where it
-    // stands, then downwards for the marked ones, whose paths then mostly reach numbers in the layers above at
+    // upwards following only paths that stay in the layers below, the voxels of a path that leaves them marked
+    // kWait, then downwards for the marked ones, whose paths then mostly reach numbers in the layers above at
     // once. A thread may follow and write labels in another's layers: a voxel's label is always its code, its code
     // marked, or its number, all of which lead to its summit (a mark goes only on the code, by a compare and
     // exchange, never on a number written meanwhile), by relaxed atomic loads and stores.
@@ -298,10 +302,10 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
       if (gate.cancelled()) return;
     }
     // 3. The basin graph: for each pair of 26-adjacent filled voxels in two basins, the pair's level
-    // min(s(u), s(v)), the highest kept per pair of basins (each voxel pair met once, from its lower voxel); and the
-    // plateau voxels (at their summit's distance) with their summits, in index order. Only voxels with another
-    // basin about them look at their neighbours: those whose filled neighbours' greatest label and greatest
-    // ~label (the least label) are not both their own.
+    // min(s(u), s(v)), the highest kept per pair of basins (each voxel pair met once, from the one with the lower
+    // index); and the plateau voxels (at their summit's distance) with their summits, in index order. Only voxels
+    // with another basin about them look at their neighbours: those whose filled neighbours' greatest label and
+    // greatest ~label (the least label) are not both their own.
     struct Labels {
       L most = 0, least = 0;  // label + 1 and ~label: 0 for empty voxels
     };
@@ -314,7 +318,6 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
       greatestAbout<Labels>(
           d, zb, ze, labels, same, both,
           [&](int64_t z, int64_t y0, int64_t y1, const Labels* below, const Labels* at, const Labels* above) {
-            if (gate.cancelled()) return;
             for (int64_t j = 0; j < (y1 - y0) * nx; ++j) {
               const int64_t i = layer * z + nx * y0 + j;
               const uint32_t s = data[i];
@@ -332,7 +335,7 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
                 if (v && label[q] != own) table.raise(own, label[q], std::min(s, v));
               });
             }
-            layerDone(0.55, 0.9, bands);
+            return layerDone(0.55, 0.9, bands);
           });
     });
   };
@@ -342,9 +345,13 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
     std::unique_ptr<uint32_t[], decltype(&std::free)> wide(
         static_cast<uint32_t*>(std::calloc(size_t(d.count()), sizeof(uint32_t))), &std::free);
     if (!wide) return noMemory(d.count() * 4);
-    for (int64_t i = 0; i < d.count(); ++i) {
-      if (code[size_t(i)] & kClimb16) wide[size_t(i)] = 0x80000000u | (code[size_t(i)] & 31u);
-    }
+    parallelChunks(0, nz, grain, threads, [&](int, int64_t zb, int64_t ze) {
+      if (gate.cancelled()) return;
+      for (int64_t i = layer * zb; i < layer * ze; ++i) {
+        if (code[size_t(i)] & kClimb16) wide[size_t(i)] = 0x80000000u | (code[size_t(i)] & 31u);
+      }
+    });
+    if (gate.cancelled()) return cancelled();
     code.reset();
     basins(wide.get());
   }

@@ -96,8 +96,8 @@ struct HotSpot {
   bool isolated = false;
 };
 // Regional maxima of the distance field (26-connected plateaus), largest radius first; the first is the global
-// maximum, the orientation-free core. Memory: 2 bytes per voxel of the field's box (4 with 32768 summits
-// or more).
+// maximum, the orientation-free core. Memory: 2 bytes per voxel of the field's box (with 32768 summits
+// or more 4, and 6 while the labels widen).
 Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const HotSpotParams& params = {},
                                           const ProgressFn& progress = {});
 

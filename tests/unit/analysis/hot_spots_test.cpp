@@ -1,6 +1,7 @@
-// Hot spots against a brute force written from their definition (docs/accuracy.md), on random fields: the
-// watershed's bookkeeping (each voxel's level taken from its place in the sorted order, the labels stored by cells,
-// the union-find merges and plateaus) must give every regional maximum with its plateau, saddle and dynamic.
+// Hot spots against a brute force written from their definition (docs/accuracy.md), on random fields: the basins'
+// bookkeeping (the greatest neighbours by separable maxima, the paths to the summits across layers and threads, the
+// joins of basins, the merge and its plateaus) must give every regional maximum with its plateau, saddle and
+// dynamic.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -197,7 +198,7 @@ DistanceField randomField(Dims d, int levels, uint32_t step, uint32_t seed) {
 }
 
 TEST(HotSpots, matchBruteForceOnRandomFields) {
-  // axes below 16 voxels (one voxel per label cell) and at or above (4), none a whole number of cells
+  // axes shorter and longer than the 16 rows of a band, none a whole number of bands
   const Dims dims[] = {Dims{21, 17, 13}, Dims{9, 33, 18}, Dims{19, 5, 22}, Dims{1, 1, 7}};
   uint32_t seed = 1;
   for (const Dims& d : dims) {
@@ -210,24 +211,25 @@ TEST(HotSpots, matchBruteForceOnRandomFields) {
   }
 }
 
-// More maxima than 16-bit labels number (the labels widen): a lattice of single-voxel peaks of distance 2 to 4
-// every other voxel, separated by voxels of distance 1. Every peak is a maximum that dies at 1, but the first of
-// the highest, which never does.
-TEST(HotSpots, moreMaximaThan16BitLabelsNumber) {
-  const int n = 82;  // and over 2^19 voxels: on every thread
-  DistanceField f(Dims{n, n, n}, GridFrame{}, glm::ivec3(0), Dims{n, n, n}, 0);
-  auto peak = [](int x, int y, int z) { return uint32_t(2 + (x / 2 + y / 2 + z / 2) % 3); };
+// A lattice of single-voxel peaks of distance 2 to 4 at every other voxel along x and y and every fifth along z,
+// the voxels between them at distance 1, in a box of dims (over 2^19 voxels: swept on every thread). Every peak is
+// a maximum that dies at 1, but the first of the highest, which never does. The voxels between the peaks' layers
+// climb along the plateau of 1s to the earlier voxels, through the layers below, to a layer of peaks.
+void expectLatticeOfPeaks(const Dims& dims, int64_t summits) {
+  DistanceField f(dims, GridFrame{}, glm::ivec3(0), dims, 0);
+  auto peak = [](int x, int y, int z) { return uint32_t(2 + (x / 2 + y / 2 + z / 5) % 3); };
   int64_t peaks = 0, highest = 0;
-  for (int z = 0; z < n; ++z)
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x) {
-        const bool top = x % 2 == 0 && y % 2 == 0 && z % 2 == 0;
+  for (int z = 0; z < dims.nz; ++z)
+    for (int y = 0; y < dims.ny; ++y)
+      for (int x = 0; x < dims.nx; ++x) {
+        const bool top = x % 2 == 0 && y % 2 == 0 && z % 5 == 0;
         f.data()[f.boxIndex(x, y, z)] = top ? peak(x, y, z) : 1;
         peaks += top;
         highest += top && peak(x, y, z) == 4;
       }
   f.setMaxSquared(4);
-  ASSERT_GT(peaks, 32768);
+  ASSERT_EQ(peaks, summits);
+  ASSERT_GT(dims.count(), int64_t(1) << 19);
   auto all = findHotSpots(f, HotSpotParams{0.0, 2.0});
   ASSERT_TRUE(all.ok());
   ASSERT_EQ(int64_t(all->size()), peaks);
@@ -239,7 +241,7 @@ TEST(HotSpots, moreMaximaThan16BitLabelsNumber) {
   for (size_t k = 1; k < all->size(); ++k) {
     const HotSpot& h = (*all)[k];
     const glm::ivec3 v = h.voxel;
-    wrong += h.saddle != 1.0 || h.plateau_voxels != 1 || v % 2 != glm::ivec3(0) ||
+    wrong += h.saddle != 1.0 || h.plateau_voxels != 1 || v.x % 2 != 0 || v.y % 2 != 0 || v.z % 5 != 0 ||
              h.radius != std::sqrt(double(peak(v.x, v.y, v.z))) || h.isolated;
   }
   EXPECT_EQ(wrong, 0);
@@ -248,6 +250,12 @@ TEST(HotSpots, moreMaximaThan16BitLabelsNumber) {
   ASSERT_TRUE(standing.ok());
   EXPECT_EQ(int64_t(standing->size()), highest);
 }
+
+// Summits numbered 16384 and up: 16-bit labels whose number has the bit that marks a waiting path.
+TEST(HotSpots, summitNumbersUsingEvery16Bits) { expectLatticeOfPeaks(Dims{60, 60, 150}, 30 * 30 * 30); }
+
+// More summits than 16-bit labels number: the labels widen to 32 bits.
+TEST(HotSpots, moreMaximaThan16BitLabelsNumber) { expectLatticeOfPeaks(Dims{82, 82, 100}, 41 * 41 * 20); }
 
 TEST(HotSpots, matchBruteForceOnDistanceFields) {
   std::mt19937 rng(7);
@@ -295,6 +303,38 @@ TEST(HotSpots, matchBruteForceOnAFieldSweptByAllThreads) {
   ASSERT_TRUE(f.ok());
   ASSERT_GT(f->boxDims().count(), int64_t(1) << 19);
   expectMatchesBruteForce(*f, "five balls");
+}
+
+// Progress rises to 1 through every step, and a stop asked for at any report ends the search as cancelled.
+TEST(HotSpots, reportProgressAndCancel) {
+  VoxelGrid g(Dims{96, 84, 116});
+  for (int z = 0; z < 116; ++z)
+    for (int y = 0; y < 84; ++y)
+      for (int x = 0; x < 96; ++x) {
+        const glm::dvec3 p = (glm::dvec3(x, y, z) + 0.5) / glm::dvec3(96, 84, 116) - 0.5;
+        if (glm::dot(p, p) < 0.24) g.set(x, y, z);
+      }
+  auto f = computeDistance(g);
+  ASSERT_TRUE(f.ok());
+  int reports = 0;
+  double last = -1;
+  bool monotone = true;
+  ASSERT_TRUE(findHotSpots(*f, {}, [&](double p) {
+                monotone = monotone && p >= last;
+                last = p;
+                ++reports;
+                return true;
+              }).ok());
+  EXPECT_TRUE(monotone);
+  EXPECT_DOUBLE_EQ(last, 1.0);
+  ASSERT_GT(reports, 20);
+  for (const int stop : {1, 2, 5, reports / 2, reports - 2}) {
+    int calls = 0;
+    auto r = findHotSpots(*f, {}, [&](double) { return ++calls < stop; });
+    ASSERT_FALSE(r.ok()) << stop;
+    EXPECT_EQ(r.error().code, ErrorCode::kCancelled) << stop;
+    EXPECT_EQ(calls, stop) << "reports after the stop";
+  }
 }
 
 }  // namespace
