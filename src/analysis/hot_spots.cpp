@@ -24,6 +24,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "analysis/neighbours.h"
 #include "analysis/progress_gate.h"
 #include "vox/analysis/thickness.h"
 #include "vox/core/parallel.h"
@@ -166,35 +167,15 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
   };
   const int64_t bands = (ny + kBand - 1) / kBand;
 
-  // The 26 neighbours in increasing index order, as offsets, and which of them lie inside the box about (x, y, z).
+  // The 26 neighbours in increasing index order, as offsets: code k leads to the voxel offset[k] on.
   int64_t offset[26];
-  int dxyz[26][3];
   {
     int k = 0;
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          if (!dx && !dy && !dz) continue;
-          dxyz[k][0] = dx;
-          dxyz[k][1] = dy;
-          dxyz[k][2] = dz;
-          offset[k++] = dx + nx * (dy + ny * dz);
-        }
+    for (int64_t dz = -1; dz <= 1; ++dz)
+      for (int64_t dy = -1; dy <= 1; ++dy)
+        for (int64_t dx = -1; dx <= 1; ++dx)
+          if (dx || dy || dz) offset[k++] = dx + nx * (dy + ny * dz);
   }
-  auto inside = [&](int64_t x, int64_t y, int64_t z, int k) {
-    const int64_t qx = x + dxyz[k][0], qy = y + dxyz[k][1], qz = z + dxyz[k][2];
-    return qx >= 0 && qy >= 0 && qz >= 0 && qx < nx && qy < ny && qz < nz;
-  };
-  // f(k) for every neighbour k of (x, y, z) in the box, in increasing index order; without a test per neighbour
-  // away from the box's faces.
-  auto forNeighbours = [&](int64_t x, int64_t y, int64_t z, auto&& f) {
-    if (x > 0 && y > 0 && z > 0 && x + 1 < nx && y + 1 < ny && z + 1 < nz) {
-      for (int k = 0; k < 26; ++k) f(k);
-    } else {
-      for (int k = 0; k < 26; ++k)
-        if (inside(x, y, z, k)) f(k);
-    }
-  };
 
   constexpr uint16_t kClimb16 = 0x8000;
   auto noMemory = [](int64_t bytes) {
@@ -328,9 +309,8 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
               if (below) m = both(m, below[j]);
               if (above) m = both(m, above[j]);
               if (m.most == L(own + 1) && m.least == L(~own)) continue;  // one basin about it
-              forNeighbours(j % nx, y0 + j / nx, z, [&](int k) {
-                if (k < 13) return;  // met from the other voxel
-                const int64_t q = i + offset[k];
+              analysis_detail::forEach26(j % nx, y0 + j / nx, z, nx, ny, nz, [&](int64_t q) {
+                if (q <= i) return;  // met from the other voxel
                 const uint32_t v = data[q];
                 if (v && label[q] != own) table.raise(own, label[q], std::min(s, v));
               });
@@ -385,14 +365,15 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
 
   // Reported maxima: plateau roots that stand out by min_dynamic (survivors always do). A set that died at its own
   // summit's level was a plateau touching a higher voxel, not a maximum.
+  auto dynamic = [](const Component& c) {  // in voxels
+    return std::sqrt(double(c.peak)) - (c.dead ? std::sqrt(double(c.saddle)) : 0.0);
+  };
   std::vector<int64_t> spot_of(comps.size(), -1);
   std::vector<uint32_t> spot_comp;
   for (uint32_t k = 0; k < comps.size(); ++k) {
     const Component& c = comps[k];
     if (plateau[k] != k) continue;  // absorbed into another plateau
-    const double r = std::sqrt(double(c.peak));
-    const double dyn = c.dead ? r - std::sqrt(double(c.saddle)) : r;
-    if (c.dead && (c.saddle == c.peak || dyn < params.min_dynamic_voxels)) continue;
+    if (c.dead && (c.saddle == c.peak || dynamic(c) < params.min_dynamic_voxels)) continue;
     spot_of[k] = int64_t(spot_comp.size());
     spot_comp.push_back(k);
   }
@@ -443,9 +424,9 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
     hs.plateau_voxels = count;
     hs.radius = r * h;
     hs.modulus = hs.radius / 3.0;
-    hs.dynamic = (c.dead ? r - std::sqrt(double(c.saddle)) : r) * h;
+    hs.dynamic = dynamic(c) * h;
     hs.saddle = c.dead ? std::sqrt(double(c.saddle)) * h : 0.0;
-    hs.isolated = !c.dead || r - std::sqrt(double(c.saddle)) >= params.isolation_voxels;
+    hs.isolated = !c.dead || dynamic(c) >= params.isolation_voxels;
     double best = INFINITY;
     for (int64_t n = spot_start[spot]; n < spot_start[spot + 1]; ++n) {
       const glm::ivec3 v = coordinates(spot_voxels[size_t(n)]) + lo;

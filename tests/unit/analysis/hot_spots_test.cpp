@@ -18,6 +18,7 @@
 #include <glm/vec4.hpp>
 
 #include "grids.h"
+#include "vox/analysis/analysis.h"
 #include "vox/analysis/distance.h"
 #include "vox/analysis/thickness.h"
 
@@ -257,6 +258,13 @@ TEST(HotSpots, summitNumbersUsingEvery16Bits) { expectLatticeOfPeaks(Dims{60, 60
 // More summits than 16-bit labels number: the labels widen to 32 bits.
 TEST(HotSpots, moreMaximaThan16BitLabelsNumber) { expectLatticeOfPeaks(Dims{82, 82, 100}, 41 * 41 * 20); }
 
+// g with the voxels of `other` (same dims) added.
+void add(VoxelGrid& g, const VoxelGrid& other) {
+  auto both = booleanOp(g, other, BoolOp::kUnion);
+  ASSERT_TRUE(both.ok());
+  g = std::move(both.value());
+}
+
 TEST(HotSpots, matchBruteForceOnDistanceFields) {
   std::mt19937 rng(7);
   for (int shape = 0; shape < 6; ++shape) {
@@ -266,20 +274,9 @@ TEST(HotSpots, matchBruteForceOnDistanceFields) {
     for (int b = 0; b < 2 + shape; ++b) {
       const glm::dvec3 c(3 + 20 * u(rng), 3 + 13 * u(rng), 3 + 17 * u(rng));
       const double r = 1.5 + 5.5 * u(rng);
-      for (int z = 0; z < 23; ++z)
-        for (int y = 0; y < 19; ++y)
-          for (int x = 0; x < 26; ++x) {
-            const glm::dvec3 p = glm::dvec3(x, y, z) + 0.5 - c;
-            if (glm::dot(p, p) < r * r) g.set(x, y, z);
-          }
+      add(g, test::ballGrid(g.dims(), c, r));
     }
-    if (shape % 2) {
-      const VoxelGrid noise = test::randomGrid(g.dims(), 0.05, uint32_t(shape));
-      for (int z = 0; z < 23; ++z)
-        for (int y = 0; y < 19; ++y)
-          for (int x = 0; x < 26; ++x)
-            if (noise.get(x, y, z)) g.set(x, y, z);
-    }
+    if (shape % 2) add(g, test::randomGrid(g.dims(), 0.05, uint32_t(shape)));
     auto f = computeDistance(g);
     ASSERT_TRUE(f.ok());
     expectMatchesBruteForce(*f, "balls " + std::to_string(shape));
@@ -292,13 +289,7 @@ TEST(HotSpots, matchBruteForceOnAFieldSweptByAllThreads) {
   const Dims dims{96, 84, 116};
   VoxelGrid g(dims);
   const glm::dvec4 balls[] = {{15, 20, 15, 14}, {75, 55, 40, 19}, {45, 40, 85, 20}, {30, 25, 55, 9}, {80, 64, 100, 14}};
-  for (int z = 0; z < dims.nz; ++z)
-    for (int y = 0; y < dims.ny; ++y)
-      for (int x = 0; x < dims.nx; ++x)
-        for (const glm::dvec4& b : balls) {
-          const glm::dvec3 p = glm::dvec3(x, y, z) + 0.5 - glm::dvec3(b);
-          if (glm::dot(p, p) < b.w * b.w) g.set(x, y, z);
-        }
+  for (const glm::dvec4& b : balls) add(g, test::ballGrid(dims, glm::dvec3(b), b.w));
   auto f = computeDistance(g);
   ASSERT_TRUE(f.ok());
   ASSERT_GT(f->boxDims().count(), int64_t(1) << 19);
@@ -307,14 +298,7 @@ TEST(HotSpots, matchBruteForceOnAFieldSweptByAllThreads) {
 
 // Progress rises to 1 through every step, and a stop asked for at any report ends the search as cancelled.
 TEST(HotSpots, reportProgressAndCancel) {
-  VoxelGrid g(Dims{96, 84, 116});
-  for (int z = 0; z < 116; ++z)
-    for (int y = 0; y < 84; ++y)
-      for (int x = 0; x < 96; ++x) {
-        const glm::dvec3 p = (glm::dvec3(x, y, z) + 0.5) / glm::dvec3(96, 84, 116) - 0.5;
-        if (glm::dot(p, p) < 0.24) g.set(x, y, z);
-      }
-  auto f = computeDistance(g);
+  auto f = computeDistance(test::ballGrid(Dims{92, 92, 92}, {46, 46, 46}, 45.5));
   ASSERT_TRUE(f.ok());
   int reports = 0;
   double last = -1;
