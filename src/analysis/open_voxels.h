@@ -27,12 +27,12 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
-// The AVX-512 walk is built with GCC or Clang for x86-64 and taken only where the processor has AVX-512.
+// The AVX2 and AVX-512 walks are built with GCC or Clang for x86-64 and taken only where the processor has them.
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define VOX_OPEN_VOXELS_AVX512 1
+#define VOX_OPEN_VOXELS_X86 1
 #include <immintrin.h>
 #else
-#define VOX_OPEN_VOXELS_AVX512 0
+#define VOX_OPEN_VOXELS_X86 0
 #endif
 
 #include "analysis/huge_array.h"
@@ -45,14 +45,21 @@ using HugeWords = HugeArray<uint64_t>;
 
 class OpenVoxels;
 // The ball's walk for each kind of processor (analysis/open_voxels_walk.inc); OpenVoxels::paintBall picks one.
-#if VOX_OPEN_VOXELS_AVX512
+#if VOX_OPEN_VOXELS_X86
 #define VOX_WALK_AVX512_ATTRIBUTE __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq,popcnt,bmi,bmi2")))
+#define VOX_WALK_AVX2_ATTRIBUTE __attribute__((target("avx2,popcnt,bmi,bmi2")))
 #else
 #define VOX_WALK_AVX512_ATTRIBUTE
+#define VOX_WALK_AVX2_ATTRIBUTE
 #endif
 namespace open_voxels_sse2 {
 template <class Window, class Paint>
 void paintBall(OpenVoxels& o, int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, const Window& w, Paint&& paint);
+}
+namespace open_voxels_avx2 {
+template <class Window, class Paint>
+VOX_WALK_AVX2_ATTRIBUTE void paintBall(OpenVoxels& o, int t, int64_t cx, int64_t cy, int64_t cz, int64_t s,
+                                       const Window& w, Paint&& paint);
 }
 namespace open_voxels_avx512 {
 template <class Window, class Paint>
@@ -62,10 +69,11 @@ VOX_WALK_AVX512_ATTRIBUTE void paintBall(OpenVoxels& o, int t, int64_t cx, int64
 
 class OpenVoxels {
  public:
-  // Which walk paintBall takes: AVX-512 where the processor has it (kAuto), or the SSE2 one on any processor.
-  enum class Simd { kAuto, kSse2, kAvx512 };
+  // Which walk paintBall takes: the widest the processor has (kAuto: AVX-512, else AVX2, else SSE2), or the one
+  // named, where the processor has it.
+  enum class Simd { kAuto, kSse2, kAvx2, kAvx512 };
   static bool avx512Available() {
-#if VOX_OPEN_VOXELS_AVX512
+#if VOX_OPEN_VOXELS_X86
     return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
            __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("bmi") &&
            __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("popcnt");
@@ -73,9 +81,17 @@ class OpenVoxels {
     return false;
 #endif
   }
+  static bool avx2Available() {
+#if VOX_OPEN_VOXELS_X86
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2") &&
+           __builtin_cpu_supports("popcnt");
+#else
+    return false;
+#endif
+  }
 
-  // Opens every voxel of the box (nx, ny, nz) for which filled(x, y, z) is true; `threads` owners. kAvx512 where
-  // the processor lacks it takes the SSE2 walk.
+  // Opens every voxel of the box (nx, ny, nz) for which filled(x, y, z) is true; `threads` owners. A walk named
+  // that the processor lacks gives the next narrower one it has (SSE2, or plain code, at the least).
   template <class Filled>
   OpenVoxels(Dims box, int threads, Filled&& filled, Simd simd = Simd::kAuto);
 
@@ -94,8 +110,10 @@ class OpenVoxels {
   // sphere.
   template <class Paint>
   void paintBall(int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, const Window& window, Paint&& paint) {
-    if (avx512_) {
+    if (walk_ == Simd::kAvx512) {
       open_voxels_avx512::paintBall(*this, t, cx, cy, cz, s, window, paint);
+    } else if (walk_ == Simd::kAvx2) {
+      open_voxels_avx2::paintBall(*this, t, cx, cy, cz, s, window, paint);
     } else {
       open_voxels_sse2::paintBall(*this, t, cx, cy, cz, s, window, paint);
     }
@@ -103,7 +121,8 @@ class OpenVoxels {
       repack(t, [&](size_t node_index, int j) { return packed_[size_t(t)][brickSlot(node_index, j)]; });
     }
   }
-  bool usesAvx512() const { return avx512_; }
+  // The walk paintBall takes: kSse2, kAvx2 or kAvx512.
+  Simd walk() const { return walk_; }
   // How many times thread t's brick words have been packed (once when opened, then again each time half of them
   // have closed).
   int64_t packings(int t) const { return packings_[size_t(t)]; }
@@ -115,6 +134,9 @@ class OpenVoxels {
  private:
   template <class Window, class Paint>
   friend void open_voxels_sse2::paintBall(OpenVoxels&, int, int64_t, int64_t, int64_t, int64_t, const Window&, Paint&&);
+  template <class Window, class Paint>
+  friend VOX_WALK_AVX2_ATTRIBUTE void open_voxels_avx2::paintBall(OpenVoxels&, int, int64_t, int64_t, int64_t, int64_t,
+                                                                  const Window&, Paint&&);
   template <class Window, class Paint>
   friend VOX_WALK_AVX512_ATTRIBUTE void open_voxels_avx512::paintBall(OpenVoxels&, int, int64_t, int64_t, int64_t,
                                                                       int64_t, const Window&, Paint&&);
@@ -227,7 +249,7 @@ class OpenVoxels {
  private:
   Dims box_, b_, n_, k_;  // voxels, bricks, nodes, blocks
   bool layers_in_y_;
-  bool avx512_;
+  Simd walk_;
   std::vector<int> layer_owner_;  // by layer of blocks: its index modulo the threads (no division in the walk)
   HugeWords nodes_;               // a node's open bricks: bit j for brick j
   HugeArray<Packing> packing_;
@@ -239,6 +261,12 @@ class OpenVoxels {
     std::array<Reach, 3> axis;
   };
   std::vector<ThreadReach> reach_;  // per thread, each on its own cache lines
+
+  static Simd pickWalk(Simd asked) {
+    if ((asked == Simd::kAuto || asked == Simd::kAvx512) && avx512Available()) return Simd::kAvx512;
+    if (asked != Simd::kSse2 && avx2Available()) return Simd::kAvx2;
+    return Simd::kSse2;
+  }
 };
 
 template <class Filled>
@@ -248,7 +276,7 @@ OpenVoxels::OpenVoxels(Dims box, int threads, Filled&& filled, Simd simd)
       n_{(b_.nx + 3) / 4, (b_.ny + 3) / 4, (b_.nz + 3) / 4},
       k_{(n_.nx + 3) / 4, (n_.ny + 3) / 4, (n_.nz + 3) / 4},
       layers_in_y_(k_.ny > k_.nz),
-      avx512_(simd != Simd::kSse2 && avx512Available()),
+      walk_(pickWalk(simd)),
       layer_owner_(size_t(layers_in_y_ ? k_.ny : k_.nz)),
       nodes_(size_t(k_.count()) * 64),
       packing_(size_t(k_.count()) * 64),
@@ -282,22 +310,43 @@ OpenVoxels::OpenVoxels(Dims box, int threads, Filled&& filled, Simd simd)
 
 namespace open_voxels_sse2 {
 #define VOX_WALK_AVX512 0
+#define VOX_WALK_AVX2 0
 #define VOX_WALK_TARGET
 #include "analysis/open_voxels_walk.inc"  // IWYU pragma: keep
 #undef VOX_WALK_TARGET
+#undef VOX_WALK_AVX2
 #undef VOX_WALK_AVX512
 }  // namespace open_voxels_sse2
 
-#if VOX_OPEN_VOXELS_AVX512
+#if VOX_OPEN_VOXELS_X86
+namespace open_voxels_avx2 {
+#define VOX_WALK_AVX512 0
+#define VOX_WALK_AVX2 1
+#define VOX_WALK_TARGET VOX_WALK_AVX2_ATTRIBUTE
+#include "analysis/open_voxels_walk.inc"  // IWYU pragma: keep
+#undef VOX_WALK_TARGET
+#undef VOX_WALK_AVX2
+#undef VOX_WALK_AVX512
+}  // namespace open_voxels_avx2
+
 namespace open_voxels_avx512 {
 #define VOX_WALK_AVX512 1
+#define VOX_WALK_AVX2 0
 #define VOX_WALK_TARGET VOX_WALK_AVX512_ATTRIBUTE
 #include "analysis/open_voxels_walk.inc"  // IWYU pragma: keep
 #undef VOX_WALK_TARGET
+#undef VOX_WALK_AVX2
 #undef VOX_WALK_AVX512
 }  // namespace open_voxels_avx512
 #else
-namespace open_voxels_avx512 {  // never taken: avx512Available() is false
+// never taken: avx2Available() and avx512Available() are false
+namespace open_voxels_avx2 {
+template <class Window, class Paint>
+void paintBall(OpenVoxels& o, int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, const Window& w, Paint&& paint) {
+  open_voxels_sse2::paintBall(o, t, cx, cy, cz, s, w, paint);
+}
+}  // namespace open_voxels_avx2
+namespace open_voxels_avx512 {
 template <class Window, class Paint>
 void paintBall(OpenVoxels& o, int t, int64_t cx, int64_t cy, int64_t cz, int64_t s, const Window& w, Paint&& paint) {
   open_voxels_sse2::paintBall(o, t, cx, cy, cz, s, w, paint);

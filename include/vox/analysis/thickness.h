@@ -22,8 +22,8 @@ namespace vox {
 
 struct ThicknessParams {
   int32_t histogram_bins = 32;  // equal bins over [0, max]
-  // The instructions the painting may use: kAuto takes AVX-512 where the processor has it, kSse2 only what every
-  // x86-64 processor has. The result is the same (the tests compare the two).
+  // The instructions the painting may use: kAuto takes AVX-512 where the processor has it, else AVX2 where it has
+  // that, kSse2 only what every x86-64 processor has. The result is the same (the tests compare them).
   enum class Simd { kAuto, kSse2 };
   Simd simd = Simd::kAuto;
 };
@@ -49,8 +49,8 @@ struct Thickness {
 
 // Local thickness of every filled voxel from its distance field. A ball that lies inside the larger ball of a voxel
 // within nine voxels on each axis (tested exactly on the voxel centres) is skipped; the rest are painted largest
-// first, each voxel once, threads owning layers of 64-voxel blocks, with AVX-512 where the processor has it. Cost:
-// about the open voxels' bricks along each kept ball's boundary, which on bulky parts at high resolution is large
+// first, each voxel once, threads owning layers of 64-voxel blocks, with AVX-512 or AVX2 where the processor has it.
+// Cost: about the open voxels' bricks along each kept ball's boundary, which on bulky parts at high resolution is large
 // (docs/performance.md); memory: a copy of the field, about 1 bit per voxel of the box rounded up to 64 voxels on
 // each axis, 12 bytes per kept ball and a table of 438 bytes per squared radius up to the
 // largest (the rvalue overload reuses the field: pass std::move(field) when it is not needed afterwards; it is lost

@@ -16,8 +16,8 @@ namespace {
 // across Y where the box has more blocks along Y) and however many owners.
 // A ball may come with a window about its centre: it then paints the open voxels of the bricks that meet the window
 // (with a window of whole bricks, those in the window alone). Each owner's brick words are packed again as they close
-// (every time half of them have). Both walks: SSE2 on any processor, AVX-512 where this one has it (the same voxels,
-// the same order).
+// (every time half of them have). Each walk: SSE2 on any processor, AVX2 and AVX-512 where this one has them (the
+// same voxels, the same order).
 void checkWalk(OpenVoxels::Simd simd) {
   for (const Dims box : {Dims{70, 37, 133}, Dims{45, 140, 30}})
     for (const int threads : {1, 2, 3}) {
@@ -27,7 +27,7 @@ void checkWalk(OpenVoxels::Simd simd) {
       auto index = [&](int64_t x, int64_t y, int64_t z) { return size_t(x + box.nx * (y + int64_t(box.ny) * z)); };
       OpenVoxels open(
           box, threads, [&](int64_t x, int64_t y, int64_t z) { return filled[index(x, y, z)] != 0; }, simd);
-      ASSERT_EQ(open.usesAvx512(), simd == OpenVoxels::Simd::kAvx512);
+      ASSERT_EQ(open.walk(), simd);
       std::vector<int32_t> got(filled.size(), -1), want(filled.size(), -1);
       int64_t cx = 0, cy = 0, cz = 0, s = 1;
       int64_t big = 0, again = 0;  // voxels painted by balls past s = 1500, and by balls that come again
@@ -132,8 +132,13 @@ void checkWalk(OpenVoxels::Simd simd) {
 
 TEST(OpenVoxels, paintsEveryOpenVoxelOfEachBallOnceAndOnlyByItsOwner) { checkWalk(OpenVoxels::Simd::kSse2); }
 
+TEST(OpenVoxels, theAvx2WalkPaintsTheSameVoxels) {
+  if (!OpenVoxels::avx2Available()) GTEST_SKIP() << "this processor has no AVX2: its walk cannot be tested here";
+  checkWalk(OpenVoxels::Simd::kAvx2);
+}
+
 TEST(OpenVoxels, theAvx512WalkPaintsTheSameVoxels) {
-  if (!OpenVoxels::avx512Available()) GTEST_SKIP() << "this processor has no AVX-512: the SSE2 walk alone is tested";
+  if (!OpenVoxels::avx512Available()) GTEST_SKIP() << "this processor has no AVX-512: its walk cannot be tested here";
   checkWalk(OpenVoxels::Simd::kAvx512);
 }
 
