@@ -23,7 +23,8 @@ namespace vox {
 struct ThicknessParams {
   int32_t histogram_bins = 32;  // equal bins over [0, max]
   // The instructions the painting may use: kAuto takes AVX-512 where the processor has it, else AVX2 where it has
-  // that, kSse2 only what every x86-64 processor has. The result is the same (the tests compare them).
+  // that, kSse2 only what every x86-64 processor has. The result is the same (the tests check each walk against a
+  // brute force).
   enum class Simd { kAuto, kSse2 };
   Simd simd = Simd::kAuto;
 };

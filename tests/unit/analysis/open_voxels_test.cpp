@@ -142,5 +142,21 @@ TEST(OpenVoxels, theAvx512WalkPaintsTheSameVoxels) {
   checkWalk(OpenVoxels::Simd::kAvx512);
 }
 
+// The walk asked for where the processor has it, else the next narrower one it has; kAuto the widest.
+TEST(OpenVoxels, takesTheWidestWalkAskedForThatTheProcessorHas) {
+  using Simd = OpenVoxels::Simd;
+  const bool avx512 = OpenVoxels::avx512Available(), avx2 = OpenVoxels::avx2Available();
+  const Simd widest = avx512 ? Simd::kAvx512 : avx2 ? Simd::kAvx2 : Simd::kSse2;
+  auto walkFor = [](Simd asked) {
+    return OpenVoxels(
+               Dims{8, 8, 8}, 1, [](int64_t, int64_t, int64_t) { return true; }, asked)
+        .walk();
+  };
+  EXPECT_EQ(walkFor(Simd::kAuto), widest);
+  EXPECT_EQ(walkFor(Simd::kAvx512), widest);
+  EXPECT_EQ(walkFor(Simd::kAvx2), avx2 ? Simd::kAvx2 : Simd::kSse2);
+  EXPECT_EQ(walkFor(Simd::kSse2), Simd::kSse2);
+}
+
 }  // namespace
 }  // namespace vox::analysis_detail

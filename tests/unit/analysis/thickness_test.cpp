@@ -126,7 +126,7 @@ TEST(Thickness, largeGridMatchesNaivePainting) {
     mn = std::min(mn, e);
     mx = std::max(mx, e);
   }
-  // Both paintings: the SSE2 one any processor takes, and the AVX-512 one where this processor has it.
+  // Both paintings: the automatic one (AVX-512, else AVX2, else SSE2) and the SSE2 one any processor takes.
   ThicknessParams sse2;
   sse2.simd = ThicknessParams::Simd::kSse2;
   for (const ThicknessParams& params : {ThicknessParams{}, sse2}) {
