@@ -2,6 +2,10 @@
 add_library(voxmod_options INTERFACE)
 target_compile_options(voxmod_options INTERFACE -Wall -Wextra -Wpedantic -Wshadow -Wconversion-null
   -Wnon-virtual-dtor -Woverloaded-virtual -Wimplicit-fallthrough)
+# RelWithDebInfo, the default build, keeps line tables only (-g1: the functions, files and lines that perf, gdb's
+# backtraces and the sanitizers' reports show; no variables): full -g costs a third more build time. The level of
+# debug information never changes the code generated, so the build's speed is the same.
+target_compile_options(voxmod_options INTERFACE $<$<CONFIG:RelWithDebInfo>:-g1>)
 if(VOXMOD_WERROR)
   target_compile_options(voxmod_options INTERFACE -Werror)
 endif()

@@ -42,19 +42,36 @@ seed_named 5 tests/data/mesh/*.off
 seed_named 7 tests/data/mesh/*.step tests/data/malformed/*.step $shared/meshes/cad/screw.step
 seed_named 8 tests/data/mesh/*.iges tests/data/malformed/*.iges
 
-status=0
 export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp
-for t in stl vxm binvox mesh_file; do
+fuzz_one() {  # fuzz_one <target>: fuzzes it for $seconds, its report in build-fuzz/fuzz_<target>.out; fails on a find
+  local t=$1 timeout=10
   mkdir -p build-fuzz/crashes/$t
-  echo "fuzzing $t for ${seconds}s"
   # Under the fuzzer some malformed STEP files parse for tens of seconds (0.1 s in a release build): a longer timeout.
-  timeout=10
   [[ $t == mesh_file ]] && timeout=60
   if ! build-fuzz/tests/fuzz/fuzz_$t build-fuzz/corpus/$t -max_total_time="$seconds" -rss_limit_mb=2048 \
       -max_len=1048576 -timeout=$timeout -artifact_prefix=build-fuzz/crashes/$t/ -print_final_stats=1 2>build-fuzz/fuzz_$t.log; then
-    echo "fuzz_$t found a problem:"; tail -n 40 build-fuzz/fuzz_$t.log; status=1
-  else
-    grep -E 'DONE' build-fuzz/fuzz_$t.log | tail -n 1 || true
+    { echo "fuzz_$t found a problem:"; tail -n 40 build-fuzz/fuzz_$t.log; } >build-fuzz/fuzz_$t.out
+    return 1
   fi
+  { echo "fuzz_$t: ${seconds}s"; grep -E 'DONE' build-fuzz/fuzz_$t.log | tail -n 1 || true; } >build-fuzz/fuzz_$t.out
+}
+
+# One fuzzer per core at a time (each runs on one thread).
+targets=(stl vxm binvox mesh_file)
+status=0
+running=0
+for t in "${targets[@]}"; do
+  if ((running >= $(nproc))); then
+    wait -n || status=1
+    ((running--))
+  fi
+  echo "fuzzing $t for ${seconds}s"
+  fuzz_one "$t" &
+  ((++running))
 done
+while ((running > 0)); do
+  wait -n || status=1
+  ((running--))
+done
+for t in "${targets[@]}"; do cat build-fuzz/fuzz_$t.out; done
 exit $status
