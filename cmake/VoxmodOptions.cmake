@@ -14,6 +14,11 @@ if(VOXMOD_SANITIZE)
     -fno-sanitize-recover=all)
   target_link_options(voxmod_options INTERFACE -fsanitize=${VOXMOD_SANITIZE})
 endif()
+# VOXMOD_TEST_CXX_FLAGS: flags for the test code alone (targets with the VOXMOD_TEST property), after all the above.
+# CI's sanitizer builds pass -fno-sanitize=undefined: the products' code keeps UBSan, the tests' gtest-heavy code
+# (UBSan's checks nearly double its compile time) keeps AddressSanitizer.
+target_compile_options(voxmod_options INTERFACE
+  "$<$<BOOL:$<TARGET_PROPERTY:VOXMOD_TEST>>:${VOXMOD_TEST_CXX_FLAGS}>")
 if(VOXMOD_BUILD_FUZZ)
   # Coverage instrumentation for every library the fuzz targets link; the targets add -fsanitize=fuzzer.
   target_compile_options(voxmod_options INTERFACE -fsanitize=fuzzer-no-link)
