@@ -15,7 +15,7 @@ if(VOXMOD_SANITIZE)
   target_link_options(voxmod_options INTERFACE -fsanitize=${VOXMOD_SANITIZE})
 endif()
 # VOXMOD_TEST_CXX_FLAGS: flags for the test code alone (targets with the VOXMOD_TEST property), after all the above.
-# CI's sanitizer builds pass -fno-sanitize=undefined: the products' code keeps UBSan, the tests' gtest-heavy code
+# CI's ASan + UBSan build passes -fno-sanitize=undefined: voxmod's own code keeps UBSan, the tests' gtest-heavy code
 # (UBSan's checks nearly double its compile time) keeps AddressSanitizer.
 target_compile_options(voxmod_options INTERFACE
   "$<$<BOOL:$<TARGET_PROPERTY:VOXMOD_TEST>>:${VOXMOD_TEST_CXX_FLAGS}>")
