@@ -12,7 +12,9 @@
 // nearest site) splits the line into independent pieces, so each pass works only on the runs between zeros.
 // Memory: one uint32 per voxel of the box, from calloc, written only where a value is not zero, so pages that stay
 // zero (the empty space around a part inside its bounding box) are never faulted in; nothing else the size of the
-// grid. igea at R = 1000 (box 694 M voxels, 2.6 GiB of address space): 1.9 GiB resident.
+// grid. The blocks of 2 MiB that the passes write most of are advised onto 2 MiB pages first (Linux), up to a sixth
+// more resident memory than 4 KiB pages alone. igea at R = 1000 (box 694 M voxels, 2.6 GiB of address space):
+// 2.2 GB resident (the whole process, grid and mesh included, 2.35 GB).
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
