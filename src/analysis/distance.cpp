@@ -321,19 +321,23 @@ class PlaneLines {
         scratch_(len_),
         tile_(size_t(kTile * len_)),
         masks_(size_t(words_ * 64), 0),
-        columns_(size_t(words_ * 64)) {}
+        columns_(size_t(words_ * 64)),
+        rows_(size_t(len_)) {}
   uint32_t transform(int64_t o) {
     uint32_t mx = 0;
     const glm::ivec3 lo = f_.boxMin();
     const int64_t wpr = g_.wordsPerRow();
+    for (int64_t q = 0; q < len_; ++q) {  // the grid rows along the lines, found once for every tile
+      rows_[size_t(q)] = axis_ == 1 ? g_.rowWords(lo.y + int32_t(q), lo.z + int32_t(o))
+                                    : g_.rowWords(lo.y + int32_t(o), lo.z + int32_t(q));
+    }
     for (int64_t x0 = 0; x0 < nx_; x0 += kTile) {
       const int64_t w = std::min(kTile, nx_ - x0);
       const uint64_t wmask = w == 64 ? ~uint64_t(0) : (uint64_t(1) << w) - 1;
       const int64_t xp = int64_t(lo.x) + x0 + 1, w0 = xp >> 6, sh = xp & 63;  // padded x of the tile's first voxel
       uint64_t any = 0;
       for (int64_t q = 0; q < len_; ++q) {
-        const uint64_t* row = axis_ == 1 ? g_.rowWords(lo.y + int32_t(q), lo.z + int32_t(o))
-                                         : g_.rowWords(lo.y + int32_t(o), lo.z + int32_t(q));
+        const uint64_t* row = rows_[size_t(q)];
         uint64_t bits = row[w0] >> sh;
         if (sh && w0 + 1 < wpr) bits |= row[w0 + 1] << (64 - sh);
         if (!border_) bits = ~bits;  // clearance: the empty voxels carry the values
@@ -343,10 +347,12 @@ class PlaneLines {
       }
       if (!any) continue;  // all zeros: already final
       uint32_t* base = f_.data() + o * outer_stride_ + x0;
-      for (int64_t q = 0; q < len_; ++q) {
-        if (!masks_[size_t(q)]) continue;
+      for (int64_t q = 0; q < len_; ++q) {  // the values from the first voxel with one to the last
+        const uint64_t m = masks_[size_t(q)];
+        if (!m) continue;
+        const int64_t j0 = std::countr_zero(m), j1 = 64 - std::countl_zero(m);
         const uint32_t* src = base + q * line_stride_;
-        std::copy(src, src + w, tile_.data() + q * kTile);
+        std::copy(src + j0, src + j1, tile_.data() + q * kTile + j0);
       }
       for (int64_t b = 0; b < words_; ++b) {
         uint64_t* m = masks_.data() + b * 64;  // masks_ has words_ * 64 entries, those past len_ stay zero
@@ -401,8 +407,9 @@ class PlaneLines {
   int64_t nx_, len_, words_, outer_stride_, line_stride_;
   LineScratch scratch_;
   std::vector<uint32_t> tile_;
-  std::vector<uint64_t> masks_;    // the tile's voxels with values, a word per step along the lines
-  std::vector<uint64_t> columns_;  // the same, transposed: words_ words per line
+  std::vector<uint64_t> masks_;        // the tile's voxels with values, a word per step along the lines
+  std::vector<uint64_t> columns_;      // the same, transposed: words_ words per line
+  std::vector<const uint64_t*> rows_;  // the grid's bit row at each step along the plane's lines
 };
 
 // Passes 1 and 2 slice by slice (a Y line lies in its slice, so the slice is transformed along Y while the X pass
