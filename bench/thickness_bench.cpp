@@ -1,12 +1,16 @@
 // Distance and thickness benchmarks: the shared mesh igea_refined_508k voxelized at R = 512 by vox::voxelizeSolid
 // (override with VOXMOD_BENCH_MESH=<name> and VOXMOD_BENCH_R=<R>, e.g. 1000).
-//   distance        exact Euclidean distance transform (SPEC section 6) of the filled voxels
-//   thickness       local thickness from that field (the field is copied first, outside the timing)
-//   hot_spots       regional maxima of the distance field with their dynamics
+//   distance/0      exact Euclidean distance transform (SPEC section 6) of the filled voxels, packed rows; first_ms:
+//                   the first of the iterations alone, which pays for the process's fresh memory as a CLI run does
+//   distance/1      the same computed dense, as local thickness and hot spots take it
+//   dense_copy      a dense copy of the packed field (what computing it dense saves)
+//   thickness       local thickness from the dense field (its copy made outside the timing)
+//   hot_spots       regional maxima of the dense distance field with their dynamics
 //   thin_walls      thin-wall regions below 10% of the largest thickness
 // Peak memory of one step alone: run with --benchmark_filter=<name> under /usr/bin/time -v.
 //
 //   build/bench/thickness_bench --benchmark_filter=distance
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -24,10 +28,11 @@ namespace {
 
 const vox::VoxelGrid& benchGrid() { return vox::bench::benchGridFromEnv("igea_refined_508k", "512"); }
 
+// The distance field, dense (what hot spots and local thickness step through).
 const vox::DistanceField& benchDistance() {
   static std::unique_ptr<vox::DistanceField> field;
   if (field) return *field;
-  auto d = vox::computeDistance(benchGrid());
+  auto d = vox::computeDistance(benchGrid(), {}, vox::DistanceLayout::kDense);
   if (!d) {
     std::fprintf(stderr, "%s\n", d.error().message.c_str());
     std::exit(1);
@@ -38,8 +43,16 @@ const vox::DistanceField& benchDistance() {
 
 void distance(benchmark::State& state) {
   const vox::VoxelGrid& g = benchGrid();
+  const auto layout = state.range(0) ? vox::DistanceLayout::kDense : vox::DistanceLayout::kPackedRows;
+  bool first = true;
   for (auto _ : state) {
-    auto d = vox::computeDistance(g);
+    const auto t0 = std::chrono::steady_clock::now();
+    auto d = vox::computeDistance(g, {}, layout);
+    if (first) {
+      state.counters["first_ms"] =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      first = false;
+    }
     if (!d) state.SkipWithError(d.error().message.c_str());
     const vox::Dims b = d->boxDims();
     state.counters["box_voxels"] = double(b.count());
@@ -48,13 +61,24 @@ void distance(benchmark::State& state) {
   }
 }
 
+void denseCopy(benchmark::State& state) {
+  auto d = vox::computeDistance(benchGrid());
+  if (!d) {
+    state.SkipWithError(d.error().message.c_str());
+    return;
+  }
+  for (auto _ : state) {
+    vox::DistanceField dense = d->denseCopy();
+    if (!dense.data()) state.SkipWithError("no memory for the dense copy");
+    benchmark::DoNotOptimize(dense.data());
+  }
+}
+
 void thickness(benchmark::State& state) {
   const vox::DistanceField& d = benchDistance();
   for (auto _ : state) {
     state.PauseTiming();
-    vox::DistanceField copy(d.gridDims(), d.frame(), d.boxMin(), d.boxDims(), d.outside());
-    std::copy(d.data(), d.data() + d.boxDims().count(), copy.data());
-    copy.setMaxSquared(d.maxSquared());
+    vox::DistanceField copy = d.denseCopy();
     state.ResumeTiming();
     auto t = vox::computeThickness(std::move(copy));
     if (!t) state.SkipWithError(t.error().message.c_str());
@@ -93,7 +117,14 @@ void thinWalls(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(distance)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime()->Iterations(3);
+BENCHMARK(distance)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime()
+    ->Iterations(3);
+BENCHMARK(denseCopy)->Name("dense_copy")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 BENCHMARK(thickness)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime()->Iterations(1);
 BENCHMARK(hotSpots)
     ->Name("hot_spots")

@@ -28,9 +28,52 @@ namespace vox {
 
 DistanceField::DistanceField(Dims grid_dims, GridFrame frame, glm::ivec3 box_min, Dims box_dims, uint32_t outside)
     : grid_dims_(grid_dims), frame_(std::move(frame)), box_min_(box_min), box_dims_(box_dims), outside_(outside) {
-  if (box_dims_.count() > 0) {
-    data_.reset(static_cast<uint32_t*>(std::calloc(size_t(box_dims_.count()), sizeof(uint32_t))));
+  stored_ = box_dims_.count();
+  if (stored_ > 0) data_.reset(static_cast<uint32_t*>(std::calloc(size_t(stored_), sizeof(uint32_t))));
+}
+
+DistanceField::DistanceField(Dims grid_dims, GridFrame frame, glm::ivec3 box_min, Dims box_dims, uint32_t outside,
+                             std::vector<Row> spans)
+    : grid_dims_(grid_dims),
+      frame_(std::move(frame)),
+      box_min_(box_min),
+      box_dims_(box_dims),
+      outside_(outside),
+      rows_(std::move(spans)) {
+  if (box_dims_.count() == 0) {
+    rows_.clear();
+    return;
   }
+  for (Row& r : rows_) {
+    r.base = stored_ - r.lo;
+    stored_ += r.hi - r.lo;
+  }
+  if (stored_ > 0) data_.reset(static_cast<uint32_t*>(std::calloc(size_t(stored_), sizeof(uint32_t))));
+}
+
+DistanceField DistanceField::denseCopy() const {
+  DistanceField c(grid_dims_, frame_, box_min_, box_dims_, outside_);
+  c.max_squared_ = max_squared_;
+  if (!c.data()) return c;
+  if (isDense()) {
+    std::copy(data(), data() + stored_, c.data());
+    return c;
+  }
+  const Dims d = box_dims_;
+  parallelChunks(0, d.nz, 1, threadsFor(d.count() / 4), [&](int, int64_t zb, int64_t ze) {
+    for (int64_t z = zb; z < ze; ++z) {
+      for (int64_t y = 0; y < d.ny; ++y) {
+        const Row r = row(y, z);
+        uint32_t* out = c.data() + (y + int64_t(d.ny) * z) * d.nx;
+        if (outside_ != 0) {
+          std::fill(out, out + r.lo, outside_);
+          std::fill(out + r.hi, out + d.nx, outside_);
+        }
+        std::copy(data() + r.base + r.lo, data() + r.base + r.hi, out + r.lo);
+      }
+    }
+  });
+  return c;
 }
 
 namespace {
@@ -88,6 +131,30 @@ Box filledBox(const VoxelGrid& g) {
   return box;
 }
 
+// Each row's span of filled voxels inside the box (box x), parallel over slices: the rows of a packed distance field.
+std::vector<DistanceField::Row> filledSpans(const VoxelGrid& g, const Box& box) {
+  const glm::ivec3 size = box.hi - box.lo;
+  std::vector<DistanceField::Row> spans(size_t(int64_t(size.y) * size.z));
+  const int64_t begin = int64_t(box.lo.x) + 1, end = int64_t(box.hi.x) + 1;  // padded x of the box's rows
+  parallelChunks(0, size.z, 1, threadsFor(int64_t(size.y) * size.z * g.wordsPerRow()),
+                 [&](int, int64_t zb, int64_t ze) {
+                   for (int64_t zi = zb; zi < ze; ++zi) {
+                     for (int32_t yi = 0; yi < size.y; ++yi) {
+                       const uint64_t* row = g.rowWords(box.lo.y + yi, box.lo.z + int32_t(zi));
+                       const int64_t first = nextBit(row, begin, end, true);
+                       if (first >= end) continue;
+                       int64_t w = (end - 1) >> 6;
+                       uint64_t bits = row[w] & ((end & 63) ? (uint64_t(1) << (end & 63)) - 1 : ~uint64_t(0));
+                       while (!bits) bits = row[--w];  // stops at first's word at the latest
+                       const int64_t last = w * 64 + 63 - std::countl_zero(bits);
+                       spans[size_t(yi + int64_t(size.y) * zi)] =
+                           DistanceField::Row{0, int32_t(first - begin), int32_t(last + 1 - begin)};
+                     }
+                   }
+                 });
+  return spans;
+}
+
 // Asks the kernel for 2 MiB pages over the blocks of the field's memory that the passes write most of, before anything
 // is written (the advice applies to pages not yet touched). A page is written when it holds a voxel with a value
 // (filled for a distance, empty for a clearance); pages left zero, the space about the part inside its box, are never
@@ -112,8 +179,9 @@ void adviseHugePages(const VoxelGrid& g, DistanceField& f, bool to_empty) {
     for (int64_t zi = zb; zi < ze; ++zi) {
       for (int32_t yi = 0; yi < d.ny; ++yi) {
         const uint64_t* row = g.rowWords(lo.y + yi, lo.z + int32_t(zi));
-        const uintptr_t out = start + uintptr_t((int64_t(yi) + int64_t(d.ny) * zi) * d.nx) * sizeof(uint32_t);
-        const int64_t begin = int64_t(lo.x) + 1, stop = int64_t(lo.x) + d.nx + 1;  // padded x of the box's row
+        const DistanceField::Row r = f.row(yi, zi);
+        const int64_t begin = int64_t(lo.x) + 1 + r.lo, stop = int64_t(lo.x) + 1 + r.hi;  // padded x of the row's span
+        const uintptr_t out = start + uintptr_t((r.base + r.lo) * int64_t(sizeof(uint32_t)));
         for (int64_t xp = begin; xp < stop;) {
           const int64_t a = nextBit(row, xp, stop, to_empty);
           if (a >= stop) break;
@@ -170,8 +238,9 @@ void rowsX(const VoxelGrid& g, DistanceField& f, bool to_empty, int64_t zi) {
   const int32_t z = lo.z + int32_t(zi);
   for (int32_t yi = 0; yi < d.ny; ++yi) {
     const uint64_t* row = g.rowWords(lo.y + yi, z);
-    uint32_t* out = data + (int64_t(yi) + int64_t(d.ny) * zi) * d.nx;         // out[xp - begin]: voxel x = xp - 1
+    const DistanceField::Row r = f.row(yi, zi);
     const int64_t begin = int64_t(lo.x) + 1, end = int64_t(lo.x) + d.nx + 1;  // padded x range of the box
+    const int64_t out = r.base - begin;  // data[out + xp]: voxel x = xp - 1 (inside the row's span)
     if (to_empty) {
       // runs of filled voxels [a, b) (padded x); the bits at a - 1 and b are empty
       for (int64_t xp = begin; xp < end;) {
@@ -180,7 +249,7 @@ void rowsX(const VoxelGrid& g, DistanceField& f, bool to_empty, int64_t zi) {
         const int64_t b = nextBit(row, a, end + 1, false);  // the bit after the box is empty
         for (int64_t q = a; q < b; ++q) {
           const int64_t dist = std::min(q - (a - 1), b - q);
-          out[q - begin] = uint32_t(dist * dist);
+          data[out + q] = uint32_t(dist * dist);
         }
         xp = b;
       }
@@ -195,7 +264,7 @@ void rowsX(const VoxelGrid& g, DistanceField& f, bool to_empty, int64_t zi) {
           int64_t dist = INT64_MAX;
           if (left) dist = q - (a - 1);
           if (right) dist = std::min(dist, b - q);
-          out[q - begin] = dist == INT64_MAX ? kInf : uint32_t(dist * dist);
+          data[out + q] = dist == INT64_MAX ? kInf : uint32_t(dist * dist);
         }
         xp = b;
       }
@@ -316,20 +385,20 @@ class PlaneLines {
         nx_(f.boxDims().nx),
         len_(axis == 1 ? f.boxDims().ny : f.boxDims().nz),
         words_((len_ + 63) / 64),
-        outer_stride_(axis == 1 ? nx_ * f.boxDims().ny : nx_),
-        line_stride_(axis == 1 ? nx_ : nx_ * f.boxDims().ny),
         scratch_(len_),
         tile_(size_t(kTile * len_)),
         masks_(size_t(words_ * 64), 0),
         columns_(size_t(words_ * 64)),
-        rows_(size_t(len_)) {}
+        rows_(size_t(len_)),
+        bases_(size_t(len_)) {}
   uint32_t transform(int64_t o) {
     uint32_t mx = 0;
     const glm::ivec3 lo = f_.boxMin();
     const int64_t wpr = g_.wordsPerRow();
-    for (int64_t q = 0; q < len_; ++q) {  // the grid rows along the lines, found once for every tile
-      rows_[size_t(q)] = axis_ == 1 ? g_.rowWords(lo.y + int32_t(q), lo.z + int32_t(o))
-                                    : g_.rowWords(lo.y + int32_t(o), lo.z + int32_t(q));
+    for (int64_t q = 0; q < len_; ++q) {  // the grid's and the field's rows along the lines, found once for all tiles
+      const int64_t y = axis_ == 1 ? q : o, z = axis_ == 1 ? o : q;
+      rows_[size_t(q)] = g_.rowWords(lo.y + int32_t(y), lo.z + int32_t(z));
+      bases_[size_t(q)] = f_.row(y, z).base;
     }
     for (int64_t x0 = 0; x0 < nx_; x0 += kTile) {
       const int64_t w = std::min(kTile, nx_ - x0);
@@ -346,13 +415,13 @@ class PlaneLines {
         any |= bits;
       }
       if (!any) continue;  // all zeros: already final
-      uint32_t* base = f_.data() + o * outer_stride_ + x0;
+      uint32_t* data = f_.data();
       for (int64_t q = 0; q < len_; ++q) {  // the values from the first voxel with one to the last
         const uint64_t m = masks_[size_t(q)];
         if (!m) continue;
         const int64_t j0 = std::countr_zero(m), j1 = 64 - std::countl_zero(m);
-        const uint32_t* src = base + q * line_stride_;
-        std::copy(src + j0, src + j1, tile_.data() + q * kTile + j0);
+        const uint32_t* src = data + bases_[size_t(q)] + x0 + j0;  // inside the row's span
+        std::copy(src, src + (j1 - j0), tile_.data() + q * kTile + j0);
       }
       for (int64_t b = 0; b < words_; ++b) {
         uint64_t* m = masks_.data() + b * 64;  // masks_ has words_ * 64 entries, those past len_ stay zero
@@ -385,13 +454,13 @@ class PlaneLines {
       for (int64_t q = 0; q < len_; ++q) {
         uint64_t m = masks_[size_t(q)];
         if (!m) continue;
-        uint32_t* dst = base + q * line_stride_;
+        const int64_t dst = bases_[size_t(q)] + x0;  // data[dst + j] for the voxels with values, in the row's span
         if (m == wmask) {
-          std::copy(tile_.data() + q * kTile, tile_.data() + q * kTile + w, dst);
+          std::copy(tile_.data() + q * kTile, tile_.data() + q * kTile + w, data + dst);
         } else {
           for (; m; m &= m - 1) {
             const int j = std::countr_zero(m);
-            dst[j] = tile_[size_t(q * kTile + j)];
+            data[dst + j] = tile_[size_t(q * kTile + j)];
           }
         }
       }
@@ -404,12 +473,13 @@ class PlaneLines {
   DistanceField& f_;
   int axis_;
   bool border_;
-  int64_t nx_, len_, words_, outer_stride_, line_stride_;
+  int64_t nx_, len_, words_;
   LineScratch scratch_;
   std::vector<uint32_t> tile_;
   std::vector<uint64_t> masks_;        // the tile's voxels with values, a word per step along the lines
   std::vector<uint64_t> columns_;      // the same, transposed: words_ words per line
   std::vector<const uint64_t*> rows_;  // the grid's bit row at each step along the plane's lines
+  std::vector<int64_t> bases_;         // and the field's (DistanceField::Row::base)
 };
 
 // Passes 1 and 2 slice by slice (a Y line lies in its slice, so the slice is transformed along Y while the X pass
@@ -441,7 +511,7 @@ uint32_t transformBox(const VoxelGrid& g, DistanceField& f, bool to_empty, Progr
   return *std::max_element(maxima.begin(), maxima.end());
 }
 
-Result<DistanceField> transform(const VoxelGrid& grid, bool to_empty, const ProgressFn& progress) {
+Result<DistanceField> transform(const VoxelGrid& grid, bool to_empty, bool packed, const ProgressFn& progress) {
   const char* what = to_empty ? "distance transform" : "clearance transform";
   if (grid.empty()) return makeError(ErrorCode::kInvalidArgument, std::string(what) + ": the grid is empty");
   const Box filled = filledBox(grid);
@@ -453,7 +523,11 @@ Result<DistanceField> transform(const VoxelGrid& grid, bool to_empty, const Prog
     return f;
   }
   const glm::ivec3 size = box.hi - box.lo;
-  DistanceField f(grid.dims(), grid.frame(), box.lo, Dims{size.x, size.y, size.z}, to_empty ? 0 : kInf);
+  const Dims dims{size.x, size.y, size.z};
+  // packed: a distance field's rows' spans of filled voxels (a clearance field, the whole grid, whose rows' empty
+  // voxels mostly run from end to end, is dense)
+  DistanceField f = packed ? DistanceField(grid.dims(), grid.frame(), box.lo, dims, 0, filledSpans(grid, box))
+                           : DistanceField(grid.dims(), grid.frame(), box.lo, dims, to_empty ? 0 : kInf);
   if (!f.data()) {
     return makeError(ErrorCode::kLimit, std::string(what) + ": cannot allocate " +
                                             std::to_string(f.memoryBytes() >> 20) + " MiB for the distances");
@@ -470,12 +544,12 @@ Result<DistanceField> transform(const VoxelGrid& grid, bool to_empty, const Prog
 
 }  // namespace
 
-Result<DistanceField> computeDistance(const VoxelGrid& grid, const ProgressFn& progress) {
-  return transform(grid, true, progress);
+Result<DistanceField> computeDistance(const VoxelGrid& grid, const ProgressFn& progress, DistanceLayout layout) {
+  return transform(grid, true, layout == DistanceLayout::kPackedRows, progress);
 }
 
 Result<DistanceField> computeClearance(const VoxelGrid& grid, const ProgressFn& progress) {
-  return transform(grid, false, progress);
+  return transform(grid, false, false, progress);
 }
 
 VoxelGrid peelByDistance(const VoxelGrid& grid, const DistanceField& distance, double distance_model) {
@@ -497,10 +571,10 @@ VoxelGrid peelByDistance(const VoxelGrid& grid, const DistanceField& distance, d
       const int32_t z = lo.z + int32_t(zi);
       if (!grid.layerAllocated(z)) continue;
       for (int32_t yi = 0; yi < d.ny; ++yi) {
-        const uint32_t* row = data + (int64_t(yi) + int64_t(d.ny) * zi) * d.nx;
+        const DistanceField::Row r = distance.row(yi, zi);
         uint64_t* words = nullptr;
-        for (int32_t xi = 0; xi < d.nx; ++xi) {
-          const uint32_t s = row[xi];
+        for (int32_t xi = r.lo; xi < r.hi; ++xi) {
+          const uint32_t s = data[r.base + xi];
           if (s == 0 || int64_t(s) > smax) continue;
           if (!words) words = out.mutableRowWords(lo.y + yi, z);
           const int64_t xp = int64_t(lo.x) + xi + 1;

@@ -152,6 +152,14 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
   if (d.count() >= int64_t(UINT32_MAX)) {
     return makeError(ErrorCode::kLimit, "hot spots: the model's bounding box has more than 2^32 voxels");
   }
+  if (!distance.isDense()) {  // the sweeps index the box by constant strides
+    const DistanceField dense = distance.denseCopy();
+    if (!dense.data()) {
+      return makeError(ErrorCode::kLimit,
+                       "hot spots: cannot allocate " + std::to_string(d.count() >> 18) + " MiB for the field");
+    }
+    return findHotSpots(dense, params, progress);
+  }
   const int64_t nx = d.nx, ny = d.ny, nz = d.nz, layer = nx * ny;
   const uint32_t* data = distance.data();
   analysis_detail::ProgressGate gate(progress);

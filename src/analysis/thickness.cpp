@@ -228,13 +228,6 @@ void ballWindow(Centre& c, Field&& field) {
   }
 }
 
-DistanceField copyField(const DistanceField& f) {
-  DistanceField c(f.gridDims(), f.frame(), f.boxMin(), f.boxDims(), f.outside());
-  if (c.data()) std::memcpy(c.data(), f.data(), f.memoryBytes());
-  c.setMaxSquared(f.maxSquared());
-  return c;
-}
-
 ThicknessStats statistics(const DistanceField& r, int32_t bins) {
   ThicknessStats st;
   const double h = r.voxelSize();
@@ -319,7 +312,17 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
     return makeError(ErrorCode::kInvalidArgument, "local thickness needs a distance field, not a clearance field");
   }
   Thickness out;
-  out.radius = std::move(distance);
+  if (distance.isDense()) {
+    out.radius = std::move(distance);
+  } else {  // the painting steps through the box by constant strides
+    out.radius = distance.denseCopy();
+    distance = DistanceField();
+    if (out.radius.boxDims().count() > 0 && !out.radius.data()) {
+      return makeError(ErrorCode::kLimit, "local thickness: cannot allocate " +
+                                              std::to_string(out.radius.boxDims().count() >> 18) +
+                                              " MiB for the field");
+    }
+  }
   DistanceField& f = out.radius;
   const Dims d = f.boxDims();
   ProgressGate gate(progress);
@@ -455,10 +458,10 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
 
 Result<Thickness> computeThickness(const DistanceField& distance, const ThicknessParams& params,
                                    const ProgressFn& progress) {
-  DistanceField copy = copyField(distance);
+  DistanceField copy = distance.denseCopy();
   if (distance.boxDims().count() > 0 && !copy.data()) {
     return makeError(ErrorCode::kLimit, "local thickness: cannot allocate " +
-                                            std::to_string(distance.memoryBytes() >> 20) + " MiB for the field");
+                                            std::to_string(distance.boxDims().count() >> 18) + " MiB for the field");
   }
   return computeThickness(std::move(copy), params, progress);
 }

@@ -51,7 +51,8 @@ void requestThickness(AppState& state) {
     const auto part = [&progress](double from, double to) {
       return ProgressFn([&progress, from, to](double f) { return !progress || progress(from + (to - from) * f); });
     };
-    auto distance = computeDistance(grid, part(0.0, 0.1));
+    // dense: hot spots and local thickness step through the box by strides
+    auto distance = computeDistance(grid, part(0.0, 0.1), DistanceLayout::kDense);
     if (!distance) return R(distance.error());
     auto hot = findHotSpots(*distance, {}, part(0.1, 0.35));
     if (!hot) return R(hot.error());

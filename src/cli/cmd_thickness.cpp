@@ -101,10 +101,18 @@ int runThickness(const ThicknessOptions& o) {
   const VoxelGrid& grid = model->grid;
   const std::string units = grid.frame().units;
   const double t0 = nowSeconds();
-  auto distance = computeDistance(grid, terminalProgress("distance"));
+  // dense: hot spots and local thickness step through the box by strides
+  auto distance = computeDistance(grid, terminalProgress("distance"), DistanceLayout::kDense);
   if (!distance) return out.fail(distance.error());
   const double t1 = nowSeconds();
-  auto thickness = computeThickness(*distance, ThicknessParams{}, terminalProgress("thickness"));
+  auto spots = findHotSpots(*distance);
+  if (!spots) return out.fail(spots.error());
+  const double t_spots = nowSeconds();
+  const double distance_max = distance->maxModel();
+  // local thickness paints into the field itself unless --distance still needs it
+  auto thickness = o.distance_out.empty()
+                       ? computeThickness(std::move(distance).value(), ThicknessParams{}, terminalProgress("thickness"))
+                       : computeThickness(*distance, ThicknessParams{}, terminalProgress("thickness"));
   if (!thickness) return out.fail(thickness.error());
   const double t2 = nowSeconds();
 
@@ -117,17 +125,15 @@ int runThickness(const ThicknessOptions& o) {
   d["max"] = s.max;
   d["mean"] = s.mean;
   d["histogram"] = {{"edges", s.edges}, {"counts", s.counts}};
-  d["distance_max"] = distance->maxModel();
+  d["distance_max"] = distance_max;
   out.say("local thickness over " + std::to_string(s.voxels) + " voxels: min " + significant(s.min, 4) + ", max " +
           significant(s.max, 4) + ", mean " + significant(s.mean, 4) + " " + units + "; deepest voxel " +
-          significant(distance->maxModel(), 4) + " from the surface");
+          significant(distance_max, 4) + " from the surface");
   if (o.min_wall > 0.0) {
     auto thin = findThinWalls(*thickness, o.min_wall);
     if (!thin) return out.fail(thin.error());
     reportThinWalls(*thin, units, out);
   }
-  auto spots = findHotSpots(*distance);
-  if (!spots) return out.fail(spots.error());
   reportHotSpots(*spots, o.hot_spots_shown, out);
 
   std::vector<io::PendingFile> files;
@@ -163,7 +169,7 @@ int runThickness(const ThicknessOptions& o) {
     out.say("wrote " + wrote);
   }
   d["distance_s"] = t1 - t0;
-  d["thickness_s"] = t2 - t1;
+  d["thickness_s"] = t2 - t_spots;
   return out.finish();
 }
 

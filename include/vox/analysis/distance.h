@@ -10,15 +10,17 @@
 // pass 1 along X straight from the grid's bit words (runs found with word operations, no byte copy of the grid),
 // then Y and Z in place, parallel over lines with per-thread scratch. Every zero of a line (a voxel that is its own
 // nearest site) splits the line into independent pieces, so each pass works only on the runs between zeros.
-// Memory: one uint32 per voxel of the box, from calloc, written only where a value is not zero, so pages that stay
-// zero (the empty space around a part inside its bounding box) are never faulted in; nothing else the size of the
-// grid. The blocks of 2 MiB that the passes write most of are advised onto 2 MiB pages first (Linux), up to a sixth
-// more resident memory than 4 KiB pages alone. igea at R = 1000 (box 694 M voxels, 2.6 GiB of address space):
-// 2.2 GB resident (the whole process, grid and mesh included, 2.35 GB).
+// Memory: a distance field stores one uint32 per voxel of each row's span of filled voxels (packed rows, below), a
+// clearance field one per voxel of the grid, from calloc, written only where a value is not zero, so pages that stay
+// zero are never faulted in; nothing else the size of the grid. The blocks of 2 MiB that the passes write most of are
+// advised onto 2 MiB pages first (Linux), up to a sixth more resident memory than 4 KiB pages alone. igea at
+// R = 1000 (box 694 M voxels, spans 284 M): 1.1 GB (the whole process, grid and mesh included, 1.24 GB; a dense box
+// touched 2.2 GB).
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -30,12 +32,32 @@ namespace vox {
 
 // Squared distances over a box of the grid (voxel coordinates box_min .. box_min + box_dims - 1, all inside the
 // grid). Voxels of the grid outside the box have the value `outside` (0 for a distance field: they are all empty).
+//
+// Two layouts of the values. Dense: every voxel of the box, x fastest, then y, then z (what consumers that step
+// through the box by constant strides need: local thickness, hot spots). Packed rows: each row of the box keeps only
+// its span, from its first voxel with a value to its last, the rows one after another; the voxels of a row outside
+// its span have the value `outside`. A distance field is computed packed (igea at R = 1000: 1.15 GB instead of the
+// 2.2 GB a dense field touches, its rows' ends outside the part sharing pages with the part); denseCopy() makes
+// the dense field where one is needed.
 class DistanceField {
  public:
   static constexpr uint32_t kInfinite = UINT32_MAX;  // clearance in a grid without filled voxels
 
+  // Where a row of the box lies: the values of box x in [lo, hi) at data()[base + x].
+  struct Row {
+    int64_t base = 0;
+    int32_t lo = 0, hi = 0;
+  };
+
   DistanceField() = default;
+  // Dense, every value zero.
   DistanceField(Dims grid_dims, GridFrame frame, glm::ivec3 box_min, Dims box_dims, uint32_t outside);
+  // Packed rows, every stored value zero: spans[y + ny z] gives row (y, z)'s span [lo, hi) in box x (lo == hi: none);
+  // the bases are assigned here.
+  DistanceField(Dims grid_dims, GridFrame frame, glm::ivec3 box_min, Dims box_dims, uint32_t outside,
+                std::vector<Row> spans);
+  DistanceField(DistanceField&&) = default;
+  DistanceField& operator=(DistanceField&&) = default;
 
   const Dims& gridDims() const { return grid_dims_; }
   const GridFrame& frame() const { return frame_; }
@@ -47,14 +69,23 @@ class DistanceField {
     return x >= box_min_.x && y >= box_min_.y && z >= box_min_.z && x < box_min_.x + box_dims_.nx &&
            y < box_min_.y + box_dims_.ny && z < box_min_.z + box_dims_.nz;
   }
-  // Index into data() of a voxel inside the box (grid coordinates).
+  bool isDense() const { return rows_.empty(); }
+  // Row (y, z) of the box (box coordinates), either layout.
+  Row row(int64_t y, int64_t z) const {
+    const int64_t r = y + int64_t(box_dims_.ny) * z;
+    return isDense() ? Row{r * box_dims_.nx, 0, box_dims_.nx} : rows_[size_t(r)];
+  }
+  // Index into data() of a voxel inside the box (grid coordinates), dense layout only.
   int64_t boxIndex(int64_t x, int64_t y, int64_t z) const {
     return (x - box_min_.x) + int64_t(box_dims_.nx) * ((y - box_min_.y) + int64_t(box_dims_.ny) * (z - box_min_.z));
   }
 
-  // Squared distance (voxel units^2) of a voxel of the grid; `outside` for voxels outside the box.
+  // Squared distance (voxel units^2) of a voxel of the grid; `outside` for voxels outside the box or their row's span.
   uint32_t squared(int64_t x, int64_t y, int64_t z) const {
-    return inBox(x, y, z) ? data_.get()[boxIndex(x, y, z)] : outside_;
+    if (!inBox(x, y, z)) return outside_;
+    const int64_t xi = x - box_min_.x;
+    const Row r = row(y - box_min_.y, z - box_min_.z);
+    return xi >= r.lo && xi < r.hi ? data_.get()[r.base + xi] : outside_;
   }
   double voxels(int64_t x, int64_t y, int64_t z) const { return toVoxels(squared(x, y, z)); }
   double model(int64_t x, int64_t y, int64_t z) const { return voxels(x, y, z) * voxelSize(); }
@@ -65,13 +96,20 @@ class DistanceField {
   double maxVoxels() const { return toVoxels(max_squared_); }
   double maxModel() const { return maxVoxels() * voxelSize(); }
 
-  // The box's values, x fastest, then y, then z (boxDims().count() of them).
+  // The stored values (storedValues() of them): dense, the box's, x fastest, then y, then z; packed, the rows' spans
+  // (see row()).
   const uint32_t* data() const { return data_.get(); }
   uint32_t* data() { return data_.get(); }
+  int64_t storedValues() const { return stored_; }
   uint32_t outside() const { return outside_; }
-  size_t memoryBytes() const { return size_t(box_dims_.count()) * sizeof(uint32_t); }
+  // The values and the rows' table.
+  size_t memoryBytes() const { return size_t(stored_) * sizeof(uint32_t) + rows_.size() * sizeof(Row); }
 
   void setMaxSquared(uint32_t m) { max_squared_ = m; }
+
+  // A dense copy (of either layout); a field without values when its memory cannot be allocated (data() null while
+  // the box is not empty).
+  DistanceField denseCopy() const;
 
  private:
   struct Free {
@@ -83,14 +121,22 @@ class DistanceField {
   Dims box_dims_{};
   uint32_t outside_ = 0;
   uint32_t max_squared_ = 0;
+  int64_t stored_ = 0;
+  std::vector<Row> rows_;                   // packed rows; empty when dense
   std::unique_ptr<uint32_t[], Free> data_;  // calloc: pages nothing writes (zeros) are never touched
 };
 
-// Distance of every filled voxel to the empty space (0 in empty voxels). The box is the filled voxels' bounding box.
-// Cost: O(box voxels), parallel; memory: 4 bytes per box voxel.
-Result<DistanceField> computeDistance(const VoxelGrid& grid, const ProgressFn& progress = {});
+enum class DistanceLayout { kPackedRows, kDense };
+
+// Distance of every filled voxel to the empty space (0 in empty voxels). The box is the filled voxels' bounding box,
+// stored as packed rows, or dense for consumers that step through the box by strides (local thickness, hot spots:
+// computing it dense costs what packed rows cost, where a dense copy afterwards touches the whole box's memory again,
+// igea at R = 1000: 1.3 s). Cost: O(box voxels), parallel; memory: 4 bytes per voxel of the rows' spans (packed) or
+// of the rows that meet the part (dense).
+Result<DistanceField> computeDistance(const VoxelGrid& grid, const ProgressFn& progress = {},
+                                      DistanceLayout layout = DistanceLayout::kPackedRows);
 // Clearance of every empty voxel to the material (0 in filled voxels, DistanceField::kInfinite everywhere when the
-// grid has no filled voxel). The box is the whole grid.
+// grid has no filled voxel). The box is the whole grid, dense.
 Result<DistanceField> computeClearance(const VoxelGrid& grid, const ProgressFn& progress = {});
 
 // Round skin removal (SPEC section 6): the grid without every filled voxel whose distance is at most

@@ -38,7 +38,7 @@ struct ThicknessStats {
 
 struct Thickness {
   // Squared radius R^2 (voxel units^2) of the largest inscribed ball containing each filled voxel, over the distance
-  // field's box; 0 in empty voxels. Thickness = 2 R h.
+  // field's box (dense layout); 0 in empty voxels. Thickness = 2 R h.
   DistanceField radius;
   ThicknessStats stats;
   int64_t ball_centres = 0;  // balls painted (the distance ridge left by the containment test)
@@ -52,10 +52,10 @@ struct Thickness {
 // within nine voxels on each axis (tested exactly on the voxel centres) is skipped; the rest are painted largest
 // first, each voxel once, threads owning layers of 64-voxel blocks, with AVX-512 or AVX2 where the processor has it.
 // Cost: about the open voxels' bricks along each kept ball's boundary, which on bulky parts at high resolution is large
-// (docs/performance.md); memory: a copy of the field, about 1 bit per voxel of the box rounded up to 64 voxels on
+// (docs/performance.md); memory: a dense copy of the field, about 1 bit per voxel of the box rounded up to 64 voxels on
 // each axis, 12 bytes per kept ball and a table of 438 bytes per squared radius up to the
-// largest (the rvalue overload reuses the field: pass std::move(field) when it is not needed afterwards; it is lost
-// on error).
+// largest (the rvalue overload reuses a dense field: pass std::move(field) when it is not needed afterwards; it is
+// lost on error; a packed one is copied dense and released).
 Result<Thickness> computeThickness(const DistanceField& distance, const ThicknessParams& params = {},
                                    const ProgressFn& progress = {});
 Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessParams& params = {},
@@ -98,7 +98,7 @@ struct HotSpot {
 };
 // Regional maxima of the distance field (26-connected plateaus), largest radius first; the first is the global
 // maximum, the orientation-free core. Memory: 2 bytes per voxel of the field's box (with 32768 summits
-// or more 4, and 6 while the labels widen).
+// or more 4, and 6 while the labels widen), and a dense copy of a packed field (pass a dense one where there is).
 Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const HotSpotParams& params = {},
                                           const ProgressFn& progress = {});
 

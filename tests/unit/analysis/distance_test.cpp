@@ -37,9 +37,13 @@ std::vector<uint32_t> bruteDistance(const VoxelGrid& g, bool to_empty) {
   return out;
 }
 
+// The distance in both layouts (packed rows, dense) and the clearance.
 void expectMatchesBruteForce(const VoxelGrid& g, const std::string& what) {
-  for (bool to_empty : {true, false}) {
-    auto f = to_empty ? computeDistance(g) : computeClearance(g);
+  for (int kind : {0, 1, 2}) {
+    const bool to_empty = kind < 2;
+    auto f = kind == 0   ? computeDistance(g)
+             : kind == 1 ? computeDistance(g, {}, DistanceLayout::kDense)
+                         : computeClearance(g);
     ASSERT_TRUE(f.ok()) << what;
     const std::vector<uint32_t> expect = bruteDistance(g, to_empty);
     uint32_t mx = 0;
@@ -113,12 +117,73 @@ TEST(Distance, boxIsTheFilledBoundingBoxAndValuesHaveUnits) {
   EXPECT_DOUBLE_EQ(f->maxModel(), 3.0);
   EXPECT_EQ(f->squared(0, 0, 0), 0u);  // outside the box
   EXPECT_EQ(f->squared(10, 5, 3), 1u);
-  EXPECT_LE(f->memoryBytes(), size_t(11 * 11 * 11 * 4));
+  EXPECT_EQ(f->storedValues(), 11 * 11 * 11);  // every row of a cube is filled from end to end
 
   auto c = computeClearance(VoxelGrid(Dims{3, 3, 3}));
   ASSERT_TRUE(c.ok());
   EXPECT_EQ(c->squared(1, 1, 1), DistanceField::kInfinite);
   EXPECT_TRUE(std::isinf(c->voxels(1, 1, 1)));
+}
+
+// A distance field keeps each row's span of filled voxels; the voxels of the box outside it read 0, and the dense copy
+// and the field computed dense hold the same values in box order. A clearance field is dense.
+TEST(Distance, packedRowsHoldEachRowsSpanOfFilledVoxels) {
+  VoxelGrid g = test::ballGrid(Dims{41, 37, 33}, {20.0, 18.0, 16.0}, 15.0);
+  test::fillBox(g, {30, 2, 3}, {31, 3, 4});  // a voxel apart from the ball, in a row of its own
+  auto f = computeDistance(g);
+  ASSERT_TRUE(f.ok());
+  EXPECT_FALSE(f->isDense());
+  const glm::ivec3 lo = f->boxMin();
+  const Dims d = f->boxDims();
+  int64_t filled_rows = 0, stored = 0;
+  for (int32_t z = 0; z < d.nz; ++z)
+    for (int32_t y = 0; y < d.ny; ++y) {
+      int32_t first = -1, last = -1;
+      for (int32_t x = 0; x < d.nx; ++x)
+        if (g.get(lo.x + x, lo.y + y, lo.z + z)) {
+          if (first < 0) first = x;
+          last = x;
+        }
+      const DistanceField::Row r = f->row(y, z);
+      if (first < 0) {
+        EXPECT_EQ(r.hi - r.lo, 0) << "row " << y << ", " << z;
+        continue;
+      }
+      ++filled_rows;
+      stored += last + 1 - first;
+      EXPECT_EQ(r.lo, first) << "row " << y << ", " << z;
+      EXPECT_EQ(r.hi, last + 1) << "row " << y << ", " << z;
+    }
+  EXPECT_GT(filled_rows, 0);
+  EXPECT_EQ(f->storedValues(), stored);
+  EXPECT_LT(f->storedValues(), d.count() * 3 / 5);  // a ball fills about half its box's rows' length
+  EXPECT_EQ(f->squared(lo.x, lo.y, lo.z), 0u);      // a box corner outside the ball: outside its row's span
+
+  auto computed = computeDistance(g, {}, DistanceLayout::kDense);
+  ASSERT_TRUE(computed.ok());
+  EXPECT_TRUE(computed->isDense());
+  EXPECT_EQ(computed->maxSquared(), f->maxSquared());
+  const DistanceField dense = f->denseCopy();
+  ASSERT_NE(dense.data(), nullptr);
+  EXPECT_TRUE(dense.isDense());
+  EXPECT_EQ(dense.storedValues(), d.count());
+  EXPECT_EQ(dense.maxSquared(), f->maxSquared());
+  int64_t mismatches = 0;
+  for (int32_t z = 0; z < g.nz(); ++z)
+    for (int32_t y = 0; y < g.ny(); ++y)
+      for (int32_t x = 0; x < g.nx(); ++x) {
+        const uint32_t v = f->squared(x, y, z);
+        EXPECT_EQ(v != 0, g.get(x, y, z));
+        if (dense.squared(x, y, z) != v) ++mismatches;
+        if (dense.inBox(x, y, z) && dense.data()[dense.boxIndex(x, y, z)] != v) ++mismatches;
+        if (computed->inBox(x, y, z) && computed->data()[computed->boxIndex(x, y, z)] != v) ++mismatches;
+        if (computed->squared(x, y, z) != v) ++mismatches;
+      }
+  EXPECT_EQ(mismatches, 0);
+
+  auto c = computeClearance(g);
+  ASSERT_TRUE(c.ok());
+  EXPECT_TRUE(c->isDense());
 }
 
 TEST(Distance, cancels) {

@@ -31,8 +31,13 @@ namespace {
 // the path whose lowest value is highest. A maximum that reaches none never dies.
 std::vector<HotSpot> bruteHotSpots(const DistanceField& f, const HotSpotParams& params) {
   const Dims d = f.boxDims();
-  const uint32_t* s = f.data();
   const int64_t n = d.count();
+  std::vector<uint32_t> values(static_cast<size_t>(n));  // read voxel by voxel: either layout (dense or packed rows)
+  for (int64_t i = 0; i < n; ++i) {
+    values[size_t(i)] =
+        f.squared(f.boxMin().x + i % d.nx, f.boxMin().y + (i / d.nx) % d.ny, f.boxMin().z + i / (int64_t(d.nx) * d.ny));
+  }
+  const uint32_t* s = values.data();
   auto neighbours = [&](int64_t i, auto&& visit) {
     const int64_t x = i % d.nx, y = (i / d.nx) % d.ny, z = i / (int64_t(d.nx) * d.ny);
     for (int64_t dz = -1; dz <= 1; ++dz)
