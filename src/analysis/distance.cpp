@@ -12,6 +12,7 @@
 #include <bit>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -100,6 +101,17 @@ struct Box {
 };
 
 // Bounding box of the filled voxels (empty box when there are none), parallel over layers.
+// The first and last set bits of a row of wpr words (padded x), {-1, -1} when none is set.
+inline std::pair<int64_t, int64_t> setBitRange(const uint64_t* row, int64_t wpr) {
+  int64_t first = -1, last = -1;
+  for (int64_t w = 0; w < wpr; ++w) {
+    if (!row[w]) continue;
+    if (first < 0) first = w * 64 + std::countr_zero(row[w]);
+    last = w * 64 + 63 - std::countl_zero(row[w]);
+  }
+  return {first, last};
+}
+
 Box filledBox(const VoxelGrid& g) {
   const int threads = threadsFor(g.allocatedLayers() * g.wordsPerLayer());
   std::vector<Box> part(size_t(threads), Box{glm::ivec3(INT32_MAX), glm::ivec3(INT32_MIN)});
@@ -109,13 +121,7 @@ Box filledBox(const VoxelGrid& g) {
     for (int32_t z = int32_t(z0); z < int32_t(z1); ++z) {
       if (!g.layerAllocated(z)) continue;
       for (int32_t y = 0; y < g.ny(); ++y) {
-        const uint64_t* row = g.rowWords(y, z);
-        int64_t first = -1, last = -1;
-        for (int64_t w = 0; w < wpr; ++w) {
-          if (!row[w]) continue;
-          if (first < 0) first = w * 64 + std::countr_zero(row[w]);
-          last = w * 64 + 63 - std::countl_zero(row[w]);
-        }
+        const auto [first, last] = setBitRange(g.rowWords(y, z), wpr);
         if (first < 0) continue;
         b.lo = glm::min(b.lo, glm::ivec3(int32_t(first - 1), y, z));
         b.hi = glm::max(b.hi, glm::ivec3(int32_t(last), y + 1, z + 1));  // last padded bit = voxel last - 1
@@ -131,27 +137,22 @@ Box filledBox(const VoxelGrid& g) {
   return box;
 }
 
-// Each row's span of filled voxels inside the box (box x), parallel over slices: the rows of a packed distance field.
+// Each row's span of filled voxels (box x), parallel over slices: the rows of a packed distance field. The box is
+// the filled bounding box, so every filled voxel of a row lies inside it.
 std::vector<DistanceField::Row> filledSpans(const VoxelGrid& g, const Box& box) {
   const glm::ivec3 size = box.hi - box.lo;
   std::vector<DistanceField::Row> spans(size_t(int64_t(size.y) * size.z));
-  const int64_t begin = int64_t(box.lo.x) + 1, end = int64_t(box.hi.x) + 1;  // padded x of the box's rows
-  parallelChunks(0, size.z, 1, threadsFor(int64_t(size.y) * size.z * g.wordsPerRow()),
-                 [&](int, int64_t zb, int64_t ze) {
-                   for (int64_t zi = zb; zi < ze; ++zi) {
-                     for (int32_t yi = 0; yi < size.y; ++yi) {
-                       const uint64_t* row = g.rowWords(box.lo.y + yi, box.lo.z + int32_t(zi));
-                       const int64_t first = nextBit(row, begin, end, true);
-                       if (first >= end) continue;
-                       int64_t w = (end - 1) >> 6;
-                       uint64_t bits = row[w] & ((end & 63) ? (uint64_t(1) << (end & 63)) - 1 : ~uint64_t(0));
-                       while (!bits) bits = row[--w];  // stops at first's word at the latest
-                       const int64_t last = w * 64 + 63 - std::countl_zero(bits);
-                       spans[size_t(yi + int64_t(size.y) * zi)] =
-                           DistanceField::Row{0, int32_t(first - begin), int32_t(last + 1 - begin)};
-                     }
-                   }
-                 });
+  const int64_t wpr = g.wordsPerRow(), begin = int64_t(box.lo.x) + 1;  // padded x of the box's first voxel
+  parallelChunks(0, size.z, 1, threadsFor(int64_t(size.y) * size.z * wpr), [&](int, int64_t zb, int64_t ze) {
+    for (int64_t zi = zb; zi < ze; ++zi) {
+      for (int32_t yi = 0; yi < size.y; ++yi) {
+        const auto [first, last] = setBitRange(g.rowWords(box.lo.y + yi, box.lo.z + int32_t(zi)), wpr);
+        if (first < 0) continue;
+        spans[size_t(yi + int64_t(size.y) * zi)] =
+            DistanceField::Row{0, int32_t(first - begin), int32_t(last + 1 - begin)};
+      }
+    }
+  });
   return spans;
 }
 

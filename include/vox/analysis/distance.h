@@ -10,12 +10,12 @@
 // pass 1 along X straight from the grid's bit words (runs found with word operations, no byte copy of the grid),
 // then Y and Z in place, parallel over lines with per-thread scratch. Every zero of a line (a voxel that is its own
 // nearest site) splits the line into independent pieces, so each pass works only on the runs between zeros.
-// Memory: a distance field stores one uint32 per voxel of each row's span of filled voxels (packed rows, below), a
-// clearance field one per voxel of the grid, from calloc, written only where a value is not zero, so pages that stay
-// zero are never faulted in; nothing else the size of the grid. The blocks of 2 MiB that the passes write most of are
-// advised onto 2 MiB pages first (Linux), up to a sixth more resident memory than 4 KiB pages alone. igea at
-// R = 1000 (box 694 M voxels, spans 284 M): 1.1 GB (the whole process, grid and mesh included, 1.24 GB; a dense box
-// touched 2.2 GB).
+// Memory: a distance field stores one uint32 per voxel of each row's span of filled voxels (packed rows, below; or
+// per voxel of its box, dense, when asked for), a clearance field one per voxel of the grid, from calloc, written only
+// where a value is not zero, so pages that stay zero are never faulted in; nothing else the size of the grid. The
+// blocks of 2 MiB that the passes write most of are advised onto 2 MiB pages first (Linux), up to a sixth more resident
+// memory than 4 KiB pages alone. igea at R = 1000 (box 694 M voxels, spans 284 M): 1.1 GB (the whole process, grid and
+// mesh included, 1.24 GB; a dense box touched 2.2 GB).
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -36,9 +36,9 @@ namespace vox {
 // Two layouts of the values. Dense: every voxel of the box, x fastest, then y, then z (what consumers that step
 // through the box by constant strides need: local thickness, hot spots). Packed rows: each row of the box keeps only
 // its span, from its first voxel with a value to its last, the rows one after another; the voxels of a row outside
-// its span have the value `outside`. A distance field is computed packed (igea at R = 1000: 1.15 GB instead of the
-// 2.2 GB a dense field touches, its rows' ends outside the part sharing pages with the part); denseCopy() makes
-// the dense field where one is needed.
+// its span have the value `outside`. A distance field is computed packed unless asked for dense (igea at R = 1000:
+// 1.1 GB instead of the 2.2 GB a dense field touches, its rows' ends outside the part sharing pages with the part);
+// denseCopy() makes a dense field from a packed one.
 class DistanceField {
  public:
   static constexpr uint32_t kInfinite = UINT32_MAX;  // clearance in a grid without filled voxels

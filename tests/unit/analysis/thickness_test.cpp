@@ -295,9 +295,11 @@ TEST(Thickness, histogramAndCancellation) {
   auto clearance = computeClearance(g);
   ASSERT_TRUE(clearance.ok());
   EXPECT_FALSE(computeThickness(*clearance).ok());
-  // the field can be handed over instead of copied
+  // the field can be handed over instead of copied (a packed one is made dense: the radius field is dense)
+  EXPECT_FALSE(dist->isDense());
   auto moved = computeThickness(std::move(dist.value()), ThicknessParams{3});
   ASSERT_TRUE(moved.ok());
+  EXPECT_TRUE(moved->radius.isDense());
   EXPECT_EQ(moved->stats.counts, t->stats.counts);
 }
 
