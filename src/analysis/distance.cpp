@@ -21,6 +21,7 @@
 #include <sys/mman.h>
 #endif
 
+#include "analysis/distance_lanes.h"
 #include "analysis/progress_gate.h"
 #include "vox/analysis/distance.h"
 #include "vox/core/parallel.h"
@@ -290,11 +291,13 @@ struct LineScratch {
 };
 
 // Lower envelope over the sites of piece [a, b) of line f (n long): zeros at a - 1 and b when they lie in the line
-// or when `kBorder` (ends count as zeros: a distance line, whose values inside a piece are all finite), and every
-// finite value inside. Writes the piece in place and raises mx to its largest value. The envelope's top parabola is
-// kept apart from the stack below it, so that a site that hides nothing is compared without a load.
+// or when `kBorder` (ends count as zeros: a distance line, whose values inside a piece are all finite; when `sites`
+// is given only the sites it marks are taken, analysis/distance_lanes.h), and every finite value inside. Leaves the
+// parabolas in s.p[0, k] and returns k, or -1 when the piece has no site (it stays infinite). The envelope's top
+// parabola is kept apart from the stack below it, so that a site that hides nothing is compared without a load.
 template <bool kBorder>
-void envelopePiece(uint32_t* f, int64_t stride, int64_t n, int64_t a, int64_t b, LineScratch& s, uint32_t& mx) {
+int64_t buildEnvelope(const uint32_t* f, int64_t stride, int64_t n, int64_t a, int64_t b, const uint64_t* sites,
+                      LineScratch& s) {
   Parabola* p = s.p.data();
   int64_t k = 0;  // p[0, k) below the top t
   Parabola t{};
@@ -311,7 +314,7 @@ void envelopePiece(uint32_t* f, int64_t stride, int64_t n, int64_t a, int64_t b,
       t = Parabola{b, b * b, kNever, 1};
       last = false;
     } else {
-      return;  // no site: the piece stays infinite
+      return -1;
     }
   }
   auto push = [&](int64_t x, int64_t fx) {
@@ -329,25 +332,47 @@ void envelopePiece(uint32_t* f, int64_t stride, int64_t n, int64_t a, int64_t b,
       return;
     }
   };
-  for (; q < b; ++q) {
-    const uint32_t fq = f[q * stride];
-    if (kBorder || fq != kInf) push(q, fq);
+  if (kBorder && sites) {
+    for (int64_t w = a >> 6; w * 64 < b; ++w) {  // q = a here
+      uint64_t m = sites[w];
+      if (w == a >> 6) m &= ~uint64_t(0) << (a & 63);
+      if ((w + 1) * 64 > b) m &= ~(~uint64_t(0) << (b & 63));
+      for (; m; m &= m - 1) {
+        const int64_t x = w * 64 + std::countr_zero(m);
+        push(x, f[x * stride]);
+      }
+    }
+  } else {
+    for (; q < b; ++q) {
+      const uint32_t fq = f[q * stride];
+      if (kBorder || fq != kInf) push(q, fq);
+    }
   }
   if (last) push(b, 0);
   p[k] = t;
-  // Parabola i (i >= 1) is lowest from the first whole position at or after num / den, ceil(num / den): the quotient
-  // of two integers below 2^32 and 2^16 in double precision lies farther than a rounding from every integer it is
-  // not, so truncating it and stepping up where that falls short of num is exact. The parabola lowest at q is then
-  // the count of those starting at or before q: a running sum over the positions, without a branch per position.
+  return k;
+}
+
+// Parabola i (i >= 1) is lowest from the first whole position at or after num / den, ceil(num / den): the quotient
+// of two integers below 2^32 and 2^16 in double precision lies farther than a rounding from every integer it is
+// not, so truncating it and stepping up where that falls short of num is exact. Clamped to [a, b] (the first
+// parabola, and any lowest from before the piece, start at a; one starting at b is lowest nowhere in it).
+inline int64_t firstLowest(const Parabola& p, int64_t a, int64_t b) {
+  const auto c = int64_t(double(p.num) / double(p.den));
+  return std::clamp(c + (c * p.den < p.num), a, b);
+}
+
+// Writes piece [a, b) of line f from its envelope s.p[0, k] and raises mx to its largest value. The parabola lowest
+// at q is the count of those starting at or before q: a running sum over the positions, without a branch per
+// position.
+void writePiece(uint32_t* f, int64_t stride, int64_t a, int64_t b, int64_t k, LineScratch& s, uint32_t& mx) {
+  const Parabola* p = s.p.data();
   int32_t* takeover = s.takeover.data();
   std::fill(takeover, takeover + (b - a) + 1, 0);
-  for (int64_t i = 1; i <= k; ++i) {
-    const auto c = int64_t(double(p[i].num) / double(p[i].den));
-    ++takeover[std::clamp(c + (c * p[i].den < p[i].num), a, b) - a];
-  }
+  for (int64_t i = 1; i <= k; ++i) ++takeover[firstLowest(p[i], a, b) - a];
   int64_t j = 0;
   uint32_t m = mx;
-  for (q = a; q < b; ++q) {
+  for (int64_t q = a; q < b; ++q) {
     j += takeover[q - a];
     const int64_t dq = q - p[j].site;
     const auto v = uint32_t(dq * dq + (p[j].g - p[j].site * p[j].site));
@@ -377,7 +402,7 @@ inline void transpose64(uint64_t a[64]) {
 // finite value written.
 class PlaneLines {
  public:
-  static constexpr int64_t kTile = 64;
+  static constexpr int64_t kTile = analysis_detail::kLanes;
   PlaneLines(const VoxelGrid& g, DistanceField& f, int axis, bool border)
       : g_(g),
         f_(f),
@@ -387,9 +412,14 @@ class PlaneLines {
         len_(axis == 1 ? f.boxDims().ny : f.boxDims().nz),
         words_((len_ + 63) / 64),
         scratch_(len_),
-        tile_(size_t(kTile * len_)),
+        tile_(size_t(kTile * (len_ + 2 * kPad)), 0),
         masks_(size_t(words_ * 64), 0),
+        keep_(size_t(words_ * 64), 0),
         columns_(size_t(words_ * 64)),
+        sites_(size_t(words_ * 64)),
+        lanes8_(border && analysis_detail::vectorLanes()),
+        starts_(lanes8_ ? size_t(len_ * 8) : 0, analysis_detail::kNoStart),
+        values_(lanes8_ ? size_t(len_ * 8) : 0),
         rows_(size_t(len_)),
         bases_(size_t(len_)) {}
   uint32_t transform(int64_t o) {
@@ -417,39 +447,36 @@ class PlaneLines {
       }
       if (!any) continue;  // all zeros: already final
       uint32_t* data = f_.data();
-      for (int64_t q = 0; q < len_; ++q) {  // the values from the first voxel with one to the last
+      uint32_t* tile = tile_.data() + kPad * kTile;  // step q of line j: tile[q * kTile + j]
+      for (int64_t q = 0; q < len_; ++q) {           // the values from the first voxel with one to the last
         const uint64_t m = masks_[size_t(q)];
-        if (!m) continue;
+        uint32_t* dst = tile + q * kTile;
+        if (!m) {
+          if (lanes8_) std::fill(dst, dst + kTile, 0u);  // keepSites reads every step: zeros, as in the field
+          continue;
+        }
         const int64_t j0 = std::countr_zero(m), j1 = 64 - std::countl_zero(m);
         const uint32_t* src = data + bases_[size_t(q)] + x0 + j0;  // inside the row's span
-        std::copy(src, src + (j1 - j0), tile_.data() + q * kTile + j0);
+        if (lanes8_) std::fill(dst, dst + j0, 0u);
+        std::copy(src, src + (j1 - j0), dst + j0);  // zeros where the voxels between have none
+        if (lanes8_) std::fill(dst + j1, dst + kTile, 0u);
       }
+      // a distance line's sites that its envelope needs (the zeros past its ends are the tile's padding)
+      if (lanes8_) analysis_detail::keepSites(tile, len_, masks_.data(), keep_.data());
       for (int64_t b = 0; b < words_; ++b) {
-        uint64_t* m = masks_.data() + b * 64;  // masks_ has words_ * 64 entries, those past len_ stay zero
-        uint64_t t[64];
-        std::copy(m, m + 64, t);
-        transpose64(t);
-        for (int64_t j = 0; j < 64; ++j) columns_[size_t(j * words_ + b)] = t[j];
+        transposeInto(masks_.data() + b * 64, columns_.data(), b);  // entries past len_ stay zero
+        if (lanes8_) transposeInto(keep_.data() + b * 64, sites_.data(), b);
       }
-      for (int64_t j = 0; j < w; ++j) {
-        const uint64_t* col = columns_.data() + j * words_;
-        uint32_t* line = tile_.data() + j;
-        // runs [a, e) of set bits along the line
-        for (int64_t q = 0; q < len_;) {
-          int64_t wi = q >> 6;
-          uint64_t cur = col[wi] & (~uint64_t(0) << (q & 63));
-          while (!cur && ++wi < words_) cur = col[wi];
-          if (!cur) break;
-          const int64_t a = wi * 64 + std::countr_zero(cur);
-          uint64_t inv = ~col[wi] & (~uint64_t(0) << (a & 63));
-          while (!inv && ++wi < words_) inv = ~col[wi];
-          const int64_t e = inv ? std::min(len_, wi * 64 + std::countr_zero(inv)) : len_;
-          if (border_) {
-            envelopePiece<true>(line, kTile, len_, a, e, scratch_, mx);
-          } else {
-            envelopePiece<false>(line, kTile, len_, a, e, scratch_, mx);
-          }
-          q = e;
+      if (lanes8_) {
+        for (int64_t j0 = 0; j0 < w; j0 += 8) mx = std::max(mx, distanceLanes8(tile, j0, std::min<int64_t>(8, w - j0)));
+      } else {
+        for (int64_t j = 0; j < w; ++j) {
+          uint32_t* line = tile + j;
+          forRuns(columns_.data() + j * words_, [&](int64_t a, int64_t e) {
+            const int64_t k = border_ ? buildEnvelope<true>(line, kTile, len_, a, e, nullptr, scratch_)
+                                      : buildEnvelope<false>(line, kTile, len_, a, e, nullptr, scratch_);
+            if (k >= 0) writePiece(line, kTile, a, e, k, scratch_, mx);
+          });
         }
       }
       for (int64_t q = 0; q < len_; ++q) {
@@ -457,11 +484,11 @@ class PlaneLines {
         if (!m) continue;
         const int64_t dst = bases_[size_t(q)] + x0;  // data[dst + j] for the voxels with values, in the row's span
         if (m == wmask) {
-          std::copy(tile_.data() + q * kTile, tile_.data() + q * kTile + w, data + dst);
+          std::copy(tile + q * kTile, tile + q * kTile + w, data + dst);
         } else {
           for (; m; m &= m - 1) {
             const int j = std::countr_zero(m);
-            data[dst + j] = tile_[size_t(q * kTile + j)];
+            data[dst + j] = tile[q * kTile + j];
           }
         }
       }
@@ -470,6 +497,55 @@ class PlaneLines {
   }
 
  private:
+  static constexpr int64_t kPad = analysis_detail::kSitePad;  // zero steps before and after the tile's lines
+  // The runs [a, e) of set bits of a line's words (words_ of them), in order: f(a, e).
+  template <class F>
+  void forRuns(const uint64_t* col, F&& f) const {
+    for (int64_t q = 0; q < len_;) {
+      int64_t wi = q >> 6;
+      uint64_t cur = col[wi] & (~uint64_t(0) << (q & 63));
+      while (!cur && ++wi < words_) cur = col[wi];
+      if (!cur) break;
+      const int64_t a = wi * 64 + std::countr_zero(cur);
+      uint64_t inv = ~col[wi] & (~uint64_t(0) << (a & 63));
+      while (!inv && ++wi < words_) inv = ~col[wi];
+      const int64_t e = inv ? std::min(len_, wi * 64 + std::countr_zero(inv)) : len_;
+      f(a, e);
+      q = e;
+    }
+  }
+  // Distance lines j0 .. j0 + n - 1 (n <= 8) of the tile: each line's envelopes mark where their parabolas start
+  // being lowest, then analysis_detail::writeLanes8 writes the eight lines' values at once. Returns their largest.
+  uint32_t distanceLanes8(uint32_t* tile, int64_t j0, int64_t n) {
+    int64_t q0 = len_, q1 = 0;
+    for (int64_t l = 0; l < n; ++l) {
+      const int64_t j = j0 + l;
+      const uint64_t* col = columns_.data() + j * words_;
+      const uint64_t* sites = sites_.data() + j * words_;
+      const uint32_t* line = tile + j;
+      forRuns(col, [&](int64_t a, int64_t e) {
+        q0 = std::min(q0, a);
+        q1 = std::max(q1, e);
+        const int64_t k = buildEnvelope<true>(line, kTile, len_, a, e, sites, scratch_);
+        const Parabola* p = scratch_.p.data();
+        for (int64_t i = 0; i <= k; ++i) {
+          const int64_t at = firstLowest(p[i], a, e);
+          if (at == e) break;  // and every later one
+          starts_[size_t(at * 8 + l)] = int32_t(p[i].site);
+          values_[size_t(at * 8 + l)] = int32_t(p[i].g - p[i].site * p[i].site);
+        }
+      });
+    }
+    if (q0 >= q1) return 0;
+    return analysis_detail::writeLanes8(tile, masks_.data(), starts_.data(), values_.data(), j0, q0, q1, 0);
+  }
+  // Word b of each of 64 lines (words_ words a line) from 64 steps' words of one bit per line.
+  void transposeInto(const uint64_t* steps, uint64_t* lines, int64_t b) const {
+    uint64_t t[64];
+    std::copy(steps, steps + 64, t);
+    transpose64(t);
+    for (int64_t j = 0; j < 64; ++j) lines[j * words_ + b] = t[j];
+  }
   const VoxelGrid& g_;
   DistanceField& f_;
   int axis_;
@@ -477,8 +553,13 @@ class PlaneLines {
   int64_t nx_, len_, words_;
   LineScratch scratch_;
   std::vector<uint32_t> tile_;
-  std::vector<uint64_t> masks_;        // the tile's voxels with values, a word per step along the lines
-  std::vector<uint64_t> columns_;      // the same, transposed: words_ words per line
+  std::vector<uint64_t> masks_;    // the tile's voxels with values, a word per step along the lines
+  std::vector<uint64_t> keep_;     // those a distance line's envelope needs as sites
+  std::vector<uint64_t> columns_;  // masks_ transposed: words_ words per line
+  std::vector<uint64_t> sites_;    // keep_ transposed
+  bool lanes8_;  // a distance's lines with the vector steps: keepSites, eight lines written at once (distanceLanes8)
+  std::vector<int32_t> starts_;  // analysis_detail::writeLanes8's starts and values
+  std::vector<int32_t> values_;
   std::vector<const uint64_t*> rows_;  // the grid's bit row at each step along the plane's lines
   std::vector<int64_t> bases_;         // and the field's (DistanceField::Row::base)
 };

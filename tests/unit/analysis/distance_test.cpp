@@ -1,11 +1,16 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "analysis/distance_lanes.h"
 #include "grids.h"
 #include "vox/analysis/distance.h"
 
@@ -63,43 +68,230 @@ void expectMatchesBruteForce(const VoxelGrid& g, const std::string& what) {
   }
 }
 
+// The passes as a processor without AVX2 runs them (analysis_detail::vectorLanes() false) while it lives.
+struct ScalarLanes {
+  ScalarLanes() { analysis_detail::setVectorLanes(false); }
+  ~ScalarLanes() { analysis_detail::setVectorLanes(true); }
+};
+
+// Separable brute force of the squared distance to the nearest empty voxel (the grid's outside empty): along X, then
+// Y, then Z, each step the smallest (q - p)^2 + value over every position p of the line and two past each end (zeros).
+// O(n^2) a line, for grids too large for bruteDistance.
+std::vector<uint32_t> separableDistance(const VoxelGrid& g) {
+  const int n[3] = {g.nx(), g.ny(), g.nz()};
+  std::vector<uint32_t> v(size_t(g.dims().count()));
+  for (int z = 0; z < g.nz(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x) {
+        uint32_t best = 0;
+        if (g.get(x, y, z)) {
+          int64_t d = std::min(x + 1, g.nx() - x);
+          for (int p = 0; p < g.nx(); ++p)
+            if (!g.get(p, y, z)) d = std::min<int64_t>(d, std::abs(p - x));
+          best = uint32_t(d * d);
+        }
+        v[size_t(g.index(x, y, z))] = best;
+      }
+  for (int axis = 1; axis < 3; ++axis) {
+    std::vector<int64_t> line(size_t(n[axis]));
+    const int other = axis == 1 ? 2 : 1;
+    for (int o = 0; o < n[other]; ++o)
+      for (int x = 0; x < g.nx(); ++x) {
+        auto at = [&](int q) -> uint32_t& {
+          return axis == 1 ? v[size_t(g.index(x, q, o))] : v[size_t(g.index(x, o, q))];
+        };
+        for (int q = 0; q < n[axis]; ++q) line[size_t(q)] = at(q);
+        for (int q = 0; q < n[axis]; ++q) {
+          int64_t best = std::min<int64_t>(int64_t(q + 1) * (q + 1), int64_t(n[axis] - q) * (n[axis] - q));
+          for (int p = 0; p < n[axis]; ++p) best = std::min(best, int64_t(q - p) * (q - p) + line[size_t(p)]);
+          at(q) = uint32_t(best);
+        }
+      }
+  }
+  return v;
+}
+
 TEST(Distance, matchesBruteForceOnAssortedGrids) {
-  expectMatchesBruteForce(VoxelGrid(Dims{7, 5, 3}), "empty");
+  for (bool vector_lanes : {true, false}) {
+    SCOPED_TRACE(vector_lanes ? "vector steps where the processor has them" : "scalar steps");
+    std::unique_ptr<ScalarLanes> scalar;
+    if (!vector_lanes) scalar = std::make_unique<ScalarLanes>();
+    expectMatchesBruteForce(VoxelGrid(Dims{7, 5, 3}), "empty");
+    {
+      VoxelGrid g(Dims{9, 7, 5});
+      test::fillBox(g, {0, 0, 0}, {9, 7, 5});
+      expectMatchesBruteForce(g, "full");
+    }
+    {
+      VoxelGrid g(Dims{1, 1, 1});
+      g.set(0, 0, 0);
+      expectMatchesBruteForce(g, "single voxel grid");
+    }
+    {
+      VoxelGrid g(Dims{11, 13, 9});
+      g.set(5, 6, 4);
+      expectMatchesBruteForce(g, "single voxel");
+    }
+    {
+      VoxelGrid g(Dims{13, 11, 7});
+      test::fillBox(g, {0, 2, 0}, {13, 9, 4});  // touches the grid's x and z borders
+      expectMatchesBruteForce(g, "box on the border");
+    }
+    expectMatchesBruteForce(test::ballGrid(Dims{15, 17, 13}, {7.3, 8.1, 6.2}, 6.4), "ball");
+    for (uint32_t seed = 1; seed <= 4; ++seed) {
+      expectMatchesBruteForce(test::randomBoxes(Dims{17, 9 + int(seed), 11}, 5, seed), "boxes " + std::to_string(seed));
+      expectMatchesBruteForce(test::randomGrid(Dims{9, 7, 5 + int(seed)}, 0.3 * seed, seed),
+                              "noise " + std::to_string(seed));
+    }
+    // rows longer than a word, a box that does not start at the grid origin
+    expectMatchesBruteForce(test::randomBoxes(Dims{70, 6, 5}, 4, 11), "boxes across words");
+    expectMatchesBruteForce(test::randomGrid(Dims{130, 3, 4}, 0.85, 12), "noise across words");
+    expectMatchesBruteForce(test::ballGrid(Dims{1, 19, 1}, {0.5, 9.5, 0.5}, 7.0), "a line");
+    // lines along Y and Z longer than one and two words (the passes find their pieces in words of 64 steps)
+    expectMatchesBruteForce(test::randomBoxes(Dims{5, 140, 4}, 4, 13), "boxes along y");
+    expectMatchesBruteForce(test::randomBoxes(Dims{4, 5, 150}, 4, 14), "boxes along z");
+    expectMatchesBruteForce(test::randomGrid(Dims{3, 67, 66}, 0.85, 15), "noise in long y and z lines");
+    expectMatchesBruteForce(test::ballGrid(Dims{3, 3, 131}, {1.5, 1.5, 65.5}, 64.0), "a line along z");
+  }
+}
+
+// Solids thick enough that most sites of the Y and Z lines are left out of the envelopes (distance_lanes.h), with
+// lines longer than a word, tiles of 64 lines and a last tile and group of eight lines cut short: both layouts, with
+// the vector steps and without, against the separable brute force.
+TEST(Distance, matchesSeparableBruteForceOnThickSolids) {
+  std::vector<std::pair<std::string, VoxelGrid>> grids;
+  grids.emplace_back("ball", test::ballGrid(Dims{75, 70, 68}, {37.2, 34.9, 33.6}, 33.5));
   {
-    VoxelGrid g(Dims{9, 7, 5});
-    test::fillBox(g, {0, 0, 0}, {9, 7, 5});
-    expectMatchesBruteForce(g, "full");
+    VoxelGrid g = test::randomBoxes(Dims{141, 69, 77}, 7, 21);
+    const VoxelGrid ball = test::ballGrid(Dims{141, 69, 77}, {90.5, 30.2, 40.7}, 29.0);
+    for (int z = 0; z < g.nz(); ++z)
+      for (int y = 0; y < g.ny(); ++y)
+        for (int x = 0; x < g.nx(); ++x)
+          if (ball.get(x, y, z)) g.set(x, y, z, true);
+    grids.emplace_back("boxes and a ball", std::move(g));
   }
   {
-    VoxelGrid g(Dims{1, 1, 1});
-    g.set(0, 0, 0);
-    expectMatchesBruteForce(g, "single voxel grid");
+    VoxelGrid g = test::ballGrid(Dims{70, 131, 66}, {35.0, 65.0, 33.0}, 32.0);  // a shell with a hole through it
+    const VoxelGrid inner = test::ballGrid(Dims{70, 131, 66}, {35.4, 65.3, 32.8}, 26.0);
+    for (int z = 0; z < g.nz(); ++z)
+      for (int y = 0; y < g.ny(); ++y)
+        for (int x = 0; x < g.nx(); ++x)
+          if (inner.get(x, y, z) || (std::abs(x - 20) < 4 && std::abs(z - 40) < 5)) g.set(x, y, z, false);
+    grids.emplace_back("shell", std::move(g));
   }
-  {
-    VoxelGrid g(Dims{11, 13, 9});
-    g.set(5, 6, 4);
-    expectMatchesBruteForce(g, "single voxel");
+  for (const auto& [what, g] : grids) {
+    const std::vector<uint32_t> expect = separableDistance(g);
+    const uint32_t mx = *std::max_element(expect.begin(), expect.end());
+    for (bool vector_lanes : {true, false}) {
+      std::unique_ptr<ScalarLanes> scalar;
+      if (!vector_lanes) scalar = std::make_unique<ScalarLanes>();
+      for (DistanceLayout layout : {DistanceLayout::kPackedRows, DistanceLayout::kDense}) {
+        auto f = computeDistance(g, {}, layout);
+        ASSERT_TRUE(f.ok()) << what;
+        int64_t mismatches = 0;
+        for (int z = 0; z < g.nz(); ++z)
+          for (int y = 0; y < g.ny(); ++y)
+            for (int x = 0; x < g.nx(); ++x) {
+              const uint32_t e = expect[size_t(g.index(x, y, z))];
+              if (f->squared(x, y, z) != e && ++mismatches <= 5) {
+                ADD_FAILURE() << what << (vector_lanes ? "" : " (scalar)") << " at " << x << "," << y << "," << z
+                              << ": " << f->squared(x, y, z) << " expected " << e;
+              }
+            }
+        EXPECT_EQ(mismatches, 0) << what;
+        EXPECT_EQ(f->maxSquared(), mx) << what;
+      }
+    }
   }
-  {
-    VoxelGrid g(Dims{13, 11, 7});
-    test::fillBox(g, {0, 2, 0}, {13, 9, 4});  // touches the grid's x and z borders
-    expectMatchesBruteForce(g, "box on the border");
+}
+
+// Random tiles of kLanes lines whose values look like squared distances (smooth, with ridges, zeros between runs)
+// or are noise up to the largest squared distance a grid can hold. `rows` has the kSitePad steps each side.
+std::vector<uint32_t> randomTile(int64_t len, std::mt19937& rng, bool noise) {
+  using analysis_detail::kLanes, analysis_detail::kSitePad;
+  std::vector<uint32_t> rows(size_t((len + 2 * kSitePad) * kLanes), 0);
+  std::uniform_int_distribution<uint32_t> big(0, 3u * 8193u * 8193u);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int64_t j = 0; j < kLanes; ++j) {
+    const double c = u(rng) * double(len), r = 5 + u(rng) * double(len), s = 0.3 + u(rng);
+    for (int64_t q = 0; q < len; ++q) {
+      uint32_t& v = rows[size_t((q + kSitePad) * kLanes + j)];
+      if (noise) {
+        v = u(rng) < 0.2 ? 0 : big(rng);
+      } else {
+        const double d = r - s * std::abs(double(q) - c) + 3 * std::sin(0.3 * double(q + j));
+        v = d <= 1 ? 0 : uint32_t(d * d + u(rng) * 4);
+      }
+    }
   }
-  expectMatchesBruteForce(test::ballGrid(Dims{15, 17, 13}, {7.3, 8.1, 6.2}, 6.4), "ball");
-  for (uint32_t seed = 1; seed <= 4; ++seed) {
-    expectMatchesBruteForce(test::randomBoxes(Dims{17, 9 + int(seed), 11}, 5, seed), "boxes " + std::to_string(seed));
-    expectMatchesBruteForce(test::randomGrid(Dims{9, 7, 5 + int(seed)}, 0.3 * seed, seed),
-                            "noise " + std::to_string(seed));
+  return rows;
+}
+
+TEST(DistanceLanes, aSiteLeftOutIsBeatenEverywhereAndTheLowestStay) {
+  using analysis_detail::kLanes, analysis_detail::kSitePad;
+  std::mt19937 rng(7);
+  int64_t left_out = 0, sites = 0;
+  for (int round = 0; round < 40; ++round) {
+    const int64_t len = 1 + int64_t(rng() % 150);
+    const std::vector<uint32_t> rows = randomTile(len, rng, round % 4 == 3);
+    const uint32_t* tile = rows.data() + kSitePad * kLanes;
+    std::vector<uint64_t> masks(static_cast<size_t>(len)), keep(static_cast<size_t>(len));
+    for (auto& m : masks) m = (uint64_t(rng()) << 32 | rng()) | (round % 2 ? ~uint64_t(0) : 0);
+    analysis_detail::keepSitesScalar(tile, len, masks.data(), keep.data());
+    for (int64_t j = 0; j < kLanes; ++j) {
+      auto h = [&](int64_t q) -> int64_t { return q < -kSitePad || q >= len + kSitePad ? 0 : tile[q * kLanes + j]; };
+      for (int64_t q = 0; q < len; ++q) {
+        const bool asked = (masks[size_t(q)] >> j) & 1, kept = (keep[size_t(q)] >> j) & 1;
+        ASSERT_TRUE(asked || !kept) << "a site nobody asked about is kept";
+        if (!asked) continue;
+        ++sites;
+        if (kept) continue;
+        ++left_out;
+        // beaten strictly at every position near the line (far away the nearest zero past an end beats it)
+        for (int64_t p = -len - 20; p < 2 * len + 20; ++p) {
+          const int64_t own = (p - q) * (p - q) + h(q);
+          bool beaten = false;
+          for (int64_t r = -kSitePad - 1; r < len + kSitePad + 1 && !beaten; ++r) {
+            beaten = r != q && (p - r) * (p - r) + h(r) < own;
+          }
+          ASSERT_TRUE(beaten) << "line " << j << " site " << q << " is lowest at " << p;
+        }
+      }
+      // the lowest value at each step over the sites not left out is that over every site
+      auto leftOut = [&](int64_t r) {
+        return r >= 0 && r < len && ((masks[size_t(r)] >> j) & 1) && !((keep[size_t(r)] >> j) & 1);
+      };
+      for (int64_t p = 0; p < len; ++p) {
+        int64_t all = INT64_MAX, kept = INT64_MAX;
+        for (int64_t r = -kSitePad - 1; r < len + kSitePad + 1; ++r) {
+          const int64_t v = (p - r) * (p - r) + h(r);
+          all = std::min(all, v);
+          if (!leftOut(r)) kept = std::min(kept, v);
+        }
+        ASSERT_EQ(kept, all) << "line " << j << " step " << p;
+      }
+    }
   }
-  // rows longer than a word, a box that does not start at the grid origin
-  expectMatchesBruteForce(test::randomBoxes(Dims{70, 6, 5}, 4, 11), "boxes across words");
-  expectMatchesBruteForce(test::randomGrid(Dims{130, 3, 4}, 0.85, 12), "noise across words");
-  expectMatchesBruteForce(test::ballGrid(Dims{1, 19, 1}, {0.5, 9.5, 0.5}, 7.0), "a line");
-  // lines along Y and Z longer than one and two words (the passes find their pieces in words of 64 steps)
-  expectMatchesBruteForce(test::randomBoxes(Dims{5, 140, 4}, 4, 13), "boxes along y");
-  expectMatchesBruteForce(test::randomBoxes(Dims{4, 5, 150}, 4, 14), "boxes along z");
-  expectMatchesBruteForce(test::randomGrid(Dims{3, 67, 66}, 0.85, 15), "noise in long y and z lines");
-  expectMatchesBruteForce(test::ballGrid(Dims{3, 3, 131}, {1.5, 1.5, 65.5}, 64.0), "a line along z");
+  EXPECT_GT(left_out, sites / 4) << "the test leaves out few sites: " << left_out << " of " << sites;
+}
+
+TEST(DistanceLanes, vectorTestMatchesTheScalarOne) {
+  using analysis_detail::kLanes, analysis_detail::kSitePad;
+  if (!analysis_detail::vectorLanes()) GTEST_SKIP() << "this processor has no AVX2: the vector steps do not run";
+  std::mt19937 rng(11);
+  for (int round = 0; round < 200; ++round) {
+    const int64_t len = 1 + int64_t(rng() % 700);
+    const std::vector<uint32_t> rows = randomTile(len, rng, round % 3 == 2);
+    const uint32_t* tile = rows.data() + kSitePad * kLanes;
+    std::vector<uint64_t> masks(static_cast<size_t>(len)), keep(masks.size()), expect(masks.size());
+    for (auto& m : masks) {
+      m = uint64_t(rng()) << 32 | rng();
+      if (round % 5 == 0) m &= 0x00ff00000000ff0full;  // groups of eight without a bit are skipped
+    }
+    analysis_detail::keepSites(tile, len, masks.data(), keep.data());
+    analysis_detail::keepSitesScalar(tile, len, masks.data(), expect.data());
+    ASSERT_EQ(keep, expect) << "round " << round << ", " << len << " steps";
+  }
 }
 
 TEST(Distance, boxIsTheFilledBoundingBoxAndValuesHaveUnits) {
