@@ -408,16 +408,16 @@ class PlaneLines {
         f_(f),
         axis_(axis),
         border_(border),
+        lanes8_(border && analysis_detail::vectorLanes()),
         nx_(f.boxDims().nx),
         len_(axis == 1 ? f.boxDims().ny : f.boxDims().nz),
         words_((len_ + 63) / 64),
         scratch_(len_),
         tile_(size_t(kTile * (len_ + 2 * kPad)), 0),
         masks_(size_t(words_ * 64), 0),
-        keep_(size_t(words_ * 64), 0),
+        keep_(lanes8_ ? size_t(words_ * 64) : 0, 0),
         columns_(size_t(words_ * 64)),
-        sites_(size_t(words_ * 64)),
-        lanes8_(border && analysis_detail::vectorLanes()),
+        sites_(lanes8_ ? size_t(words_ * 64) : 0),
         starts_(lanes8_ ? size_t(len_ * 8) : 0, analysis_detail::kNoStart),
         values_(lanes8_ ? size_t(len_ * 8) : 0),
         rows_(size_t(len_)),
@@ -550,6 +550,7 @@ class PlaneLines {
   DistanceField& f_;
   int axis_;
   bool border_;
+  bool lanes8_;  // a distance's lines with the vector steps: keepSites, eight lines written at once (distanceLanes8)
   int64_t nx_, len_, words_;
   LineScratch scratch_;
   std::vector<uint32_t> tile_;
@@ -557,8 +558,7 @@ class PlaneLines {
   std::vector<uint64_t> keep_;     // those a distance line's envelope needs as sites
   std::vector<uint64_t> columns_;  // masks_ transposed: words_ words per line
   std::vector<uint64_t> sites_;    // keep_ transposed
-  bool lanes8_;  // a distance's lines with the vector steps: keepSites, eight lines written at once (distanceLanes8)
-  std::vector<int32_t> starts_;  // analysis_detail::writeLanes8's starts and values
+  std::vector<int32_t> starts_;    // analysis_detail::writeLanes8's starts and values
   std::vector<int32_t> values_;
   std::vector<const uint64_t*> rows_;  // the grid's bit row at each step along the plane's lines
   std::vector<int64_t> bases_;         // and the field's (DistanceField::Row::base)
