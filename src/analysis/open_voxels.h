@@ -200,7 +200,7 @@ class OpenVoxels {
                       // and consecutive ones often share a coordinate
     // The bricks' values to fill, brick_near[i0 + i] and brick_far[i0 + i] for i < bricks, the first brick's first
     // voxel at `first` from c: left to the walk (fillBricks in analysis/open_voxels_walk.inc), which fills them with
-    // its own instructions, sixteen at a time with AVX-512.
+    // its own instructions, sixteen at a time with AVX-512, eight with AVX2.
     int32_t i0 = 0, bricks = 0, first = 0;
     // Returns false when the values are those of the last ball already. lo..hi: the voxels along the axis that the
     // walk visits (the ball's reach, within the box and the ball's window); blocks, nodes and bricks outside them are

@@ -87,8 +87,64 @@ TEST(Thickness, matchesBruteForceOfTheDefinition) {
   }
 }
 
+// The definition painted naively: every filled voxel's ball, max over the balls.
+std::vector<uint32_t> naivePainting(const VoxelGrid& g, const DistanceField& dist) {
+  std::vector<uint32_t> expect(size_t(g.dims().count()), 0);
+  for (int z = 0; z < g.nz(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x) {
+        const int s = int(dist.squared(x, y, z));
+        if (!s) continue;
+        const int r = int(std::sqrt(double(s))) + 1;
+        for (int dz = -r; dz <= r; ++dz)
+          for (int dy = -r; dy <= r; ++dy)
+            for (int dx = -r; dx <= r; ++dx) {
+              if (dx * dx + dy * dy + dz * dz >= s) continue;
+              uint32_t& e = expect[size_t(g.index(x + dx, y + dy, z + dz))];
+              e = std::max(e, uint32_t(s));
+            }
+      }
+  return expect;
+}
+
+// Walls whose middle voxels have equal neighbours on both sides (the crests where the central differences of the
+// distance are zero, which try the offsets toward their largest neighbour, or only the 26), a tilted slab and a
+// cylinder along y: thick enough in y and z for the containment test's rows away from the box's faces, and large
+// enough for two threads (where the machine has them) taking slabs of two slices, against the naive painting.
+TEST(Thickness, crestsAndSlabsMatchNaivePainting) {
+  const Dims d{80, 82, 84};
+  const glm::dvec3 n = glm::normalize(glm::dvec3(0.3, 0.5, 1.0));
+  const VoxelGrid g = shapeGrid(d, [&](glm::dvec3 p) {
+    const bool plate = p.z > 4 && p.z < 13 && p.x > 2 && p.x < 78;              // 9 thick: a crest at z = 8.5
+    const bool fin = p.x > 20 && p.x < 27 && p.z >= 13 && p.z < 40 && p.y > 5;  // 7 thick, standing on it
+    const bool slab = std::abs(glm::dot(p - glm::dvec3(23, 26, 50), n)) < 5.5 && p.z >= 40;  // tilted
+    const double rr = (p.x - 23) * (p.x - 23) + (p.z - 30) * (p.z - 30);
+    const bool cylinder = rr < 64 && p.y > 10 && p.y < 42;  // radius 8 along y
+    return plate || fin || slab || cylinder;
+  });
+  auto dist = computeDistance(g);
+  ASSERT_TRUE(dist.ok());
+  const std::vector<uint32_t> expect = naivePainting(g, *dist);
+  auto t = computeThickness(*dist);
+  ASSERT_TRUE(t.ok());
+  int64_t mismatches = 0, filled = 0;
+  for (int z = 0; z < g.nz(); ++z)
+    for (int y = 0; y < g.ny(); ++y)
+      for (int x = 0; x < g.nx(); ++x) {
+        filled += g.get(x, y, z);
+        const uint32_t want = expect[size_t(g.index(x, y, z))];
+        if (t->radius.squared(x, y, z) != want && ++mismatches <= 5) {
+          ADD_FAILURE() << "at " << x << "," << y << "," << z << ": " << t->radius.squared(x, y, z) << " expected "
+                        << want;
+        }
+      }
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_GT(filled, 20000);
+  EXPECT_LT(t->ball_centres, filled / 4);  // most balls dropped, the crests' among them
+}
+
 // A grid large enough for several threads (noise, so most balls are small, and three large balls), against the
-// definition painted naively: every filled voxel's ball, max over the balls.
+// definition painted naively.
 TEST(Thickness, largeGridMatchesNaivePainting) {
   VoxelGrid g = test::randomGrid(Dims{110, 90, 80}, 0.6, 7);
   for (const glm::dvec3 c : {glm::dvec3(30.2, 40.7, 30.1), glm::dvec3(70.5, 45.5, 50.5), glm::dvec3(60, 30, 20)}) {
@@ -100,21 +156,7 @@ TEST(Thickness, largeGridMatchesNaivePainting) {
   }
   auto dist = computeDistance(g);
   ASSERT_TRUE(dist.ok());
-  std::vector<uint32_t> expect(size_t(g.dims().count()), 0);
-  for (int z = 0; z < g.nz(); ++z)
-    for (int y = 0; y < g.ny(); ++y)
-      for (int x = 0; x < g.nx(); ++x) {
-        const int s = int(dist->squared(x, y, z));
-        if (!s) continue;
-        const int r = int(std::sqrt(double(s))) + 1;
-        for (int dz = -r; dz <= r; ++dz)
-          for (int dy = -r; dy <= r; ++dy)
-            for (int dx = -r; dx <= r; ++dx) {
-              if (dx * dx + dy * dy + dz * dz >= s) continue;
-              uint32_t& e = expect[size_t(g.index(x + dx, y + dy, z + dz))];
-              e = std::max(e, uint32_t(s));
-            }
-      }
+  const std::vector<uint32_t> expect = naivePainting(g, *dist);
   // The statistics of a field large enough to be counted on several threads.
   int64_t voxels = 0;
   double sum = 0;
