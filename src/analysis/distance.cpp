@@ -449,6 +449,14 @@ class PlaneLines {
       uint32_t* data = f_.data();
       uint32_t* tile = tile_.data() + kPad * kTile;  // step q of line j: tile[q * kTile + j]
       for (int64_t q = 0; q < len_; ++q) {           // the values from the first voxel with one to the last
+        if (q + kRowsAhead < len_) {                 // (the voxels that copy reads there)
+          if (const uint64_t m = masks_[size_t(q + kRowsAhead)]) {
+            const int64_t j0 = std::countr_zero(m), j1 = 64 - std::countl_zero(m);
+            const uint32_t* ahead = data + bases_[size_t(q + kRowsAhead)] + x0;
+            for (int64_t j = j0; j < j1; j += 16) __builtin_prefetch(ahead + j);
+            __builtin_prefetch(ahead + j1 - 1);
+          }
+        }
         const uint64_t m = masks_[size_t(q)];
         uint32_t* dst = tile + q * kTile;
         if (!m) {
@@ -498,6 +506,7 @@ class PlaneLines {
 
  private:
   static constexpr int64_t kPad = analysis_detail::kSitePad;  // zero steps before and after the tile's lines
+  static constexpr int64_t kRowsAhead = 8;  // the rows a tile reads are asked for this many rows ahead
   // The runs [a, e) of set bits of a line's words (words_ of them), in order: f(a, e).
   template <class F>
   void forRuns(const uint64_t* col, F&& f) const {
