@@ -452,9 +452,9 @@ class PlaneLines {
         if (q + kRowsAhead < len_) {                 // (the voxels that copy reads there)
           if (const uint64_t m = masks_[size_t(q + kRowsAhead)]) {
             const int64_t j0 = std::countr_zero(m), j1 = 64 - std::countl_zero(m);
-            const uint32_t* ahead = data + bases_[size_t(q + kRowsAhead)] + x0;
-            for (int64_t j = j0; j < j1; j += 16) __builtin_prefetch(ahead + j);
-            __builtin_prefetch(ahead + j1 - 1);
+            const uint32_t* ahead = data + bases_[size_t(q + kRowsAhead)] + x0 + j0;  // inside the row's span
+            for (int64_t j = 0; j < j1 - j0; j += 16) __builtin_prefetch(ahead + j);
+            __builtin_prefetch(ahead + (j1 - j0 - 1));
           }
         }
         const uint64_t m = masks_[size_t(q)];

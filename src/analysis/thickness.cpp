@@ -52,7 +52,7 @@ struct Offset {
 // larger balls fall back to the continuous test (exact too, only weaker).
 class LatticeCover {
  public:
-  static constexpr int64_t kMaxTable = int64_t(1) << 18;  // balls up to radius 512: 1 MiB per class
+  static constexpr int64_t kMaxTable = int64_t(1) << 18;  // balls up to radius 512: 512 KiB per class
   // Neighbours up to kReach voxels away on each axis are tried (219 offset classes, 6,858 offsets): a ball that is
   // not inside its face or diagonal neighbour's is often inside one a few voxels farther along the gradient, and
   // every ball dropped here saves painting it (igea at R = 512: reach 2 leaves 4.5 times as many balls as reach 5,
@@ -131,7 +131,8 @@ class LatticeCover {
   // the tabled balls (r <= 512) and offsets up to 9 voxels on each axis.
   analysis_detail::HugeArray<int16_t> far_;  // read at scattered rows: on 2 MiB pages where the kernel gives them
   // The same values by class: a voxel's first tests try one class each, the offsets that held its neighbours' balls,
-  // and a class's column (200 KB at R = 1000) stays in the caches where the rows of the table (44 MB) do not.
+  // and a class's column (200 KB at R = 1000) stays in the caches where the rows of the table (44 MB) do not. (The
+  // table twice: 88 MB at R = 1000, 230 MB for balls up to radius 512.)
   analysis_detail::HugeArray<int16_t> columns_;
 };
 
@@ -174,8 +175,10 @@ class RidgeOffsets {
         }
     for (const Offset& o : all_)
       if (o.d2 <= 3) lists_[size_t(key(0, 0, 0))].push_back(o);
+    // (a box whose steps reach past 32 bits, slices of more than 238 M voxels, keeps no steps: stepsFit())
+    steps_fit_ = int64_t(K) * (1 + nx + plane) <= INT32_MAX;
     steps_.resize(lists_.size());
-    for (size_t i = 0; i < lists_.size(); ++i)
+    for (size_t i = 0; i < lists_.size() && steps_fit_; ++i)
       for (const Offset& o : lists_[i]) steps_[i].push_back(Step{int32_t(o.delta), o.cls});
   }
   // An offset as the test inside the box reads it: its step in memory and its class, in 8 bytes (the lists of steps
@@ -205,6 +208,7 @@ class RidgeOffsets {
   }
   const std::vector<Offset>& offsets(size_t list) const { return lists_[list]; }
   const std::vector<Step>& steps(size_t list) const { return steps_[list]; }
+  bool stepsFit() const { return steps_fit_; }
 
  private:
   static constexpr int kSide = 2 * kSteps + 1;
@@ -223,6 +227,7 @@ class RidgeOffsets {
   std::vector<Offset> all_;
   std::vector<std::vector<Offset>> lists_;
   std::vector<std::vector<Step>> steps_;  // lists_ as steps
+  bool steps_fit_ = true;
 };
 
 struct Centre {
@@ -388,7 +393,7 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
     std::vector<std::vector<Centre>> buckets(static_cast<size_t>(nz));
     const int threads = threadsFor(d.count() / 4);
     std::atomic<int64_t> done{0};
-    // 1. The centres whose ball is not inside a neighbour's larger ball. The box is walked in slabs of kSlab slices,
+    // 1. The centres whose ball is not inside a neighbour's larger ball. The box is walked in slabs of up to 8 slices,
     // each in columns kTile voxels wide, row by row and in a row slice by slice: what the offsets read about one row
     // of a column, 19 rows of 82 voxels in each of the slab's slices and the 18 about them, stays in the second-level
     // cache (igea at R = 1000: 15 s against 25 s slice by slice, where every row was read again for each of the 19
@@ -432,12 +437,12 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
           for (int64_t y = 0; y < ny; ++y)
             for (int64_t z = z0; z < z1; ++z) {
               const uint32_t* row = data + plane * z + nx * y;
-              if (y < K || z < K || y >= ny - K || z >= nz - K) {  // offsets may leave the box
+              if (y < K || z < K || y >= ny - K || z >= nz - K || !ridge.stepsFit()) {  // offsets may leave the box
                 for (int64_t x = x0; x < x1; ++x)
                   if (row[x] && !heldAnywhere(x, y, z, row[x])) keep(x, y, z, row[x], false);
                 continue;
               }
-              const Step** up = above.data() + (z - z0) * kTile - x0;
+              const Step** up = above.data() + (z - z0) * kTile;  // up[x - x0]
               // first pass: the steps that held the neighbours before along x and y, where no offset leaves the box
               // and the table holds the ball
               const Step* last = nullptr;
@@ -445,7 +450,7 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
               for (int64_t x = x0; x < x1; ++x) {
                 const int64_t s = row[x];
                 if (!s) {
-                  up[x] = nullptr;
+                  up[x - x0] = nullptr;
                   continue;
                 }
                 if (x >= K && x < nx - K && s <= cover.limit()) {
@@ -455,11 +460,11 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
                     return (sn > s) & (cover.column(o->cls)[s] + s < sn);
                   };
                   if (last && holds(last)) {
-                    up[x] = last;
+                    up[x - x0] = last;
                     continue;
                   }
-                  if (up[x] && holds(up[x])) {
-                    last = up[x];
+                  if (up[x - x0] && holds(up[x - x0])) {
+                    last = up[x - x0];
                     continue;
                   }
                 }
@@ -471,7 +476,7 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
               for (int i = 0; i < n; ++i) {
                 if (i + kAhead < n) cover.prefetch(row[rest[size_t(i + kAhead)]]);
                 const int64_t x = rest[size_t(i)], s = row[x];
-                up[x] = nullptr;
+                up[x - x0] = nullptr;
                 const bool interior = x >= K && x < nx - K;
                 if (!interior || s > cover.limit()) {
                   if (!heldAnywhere(x, y, z, s)) keep(x, y, z, s, interior);
@@ -495,7 +500,7 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
                   }
                 }
                 if (hit) {
-                  up[x] = before = hit;
+                  up[x - x0] = before = hit;
                 } else {
                   keep(x, y, z, s, true);
                 }

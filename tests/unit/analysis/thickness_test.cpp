@@ -108,19 +108,21 @@ std::vector<uint32_t> naivePainting(const VoxelGrid& g, const DistanceField& dis
 }
 
 // Walls whose middle voxels have equal neighbours on both sides (the crests where the central differences of the
-// distance are zero, which try the offsets toward their largest neighbour, or only the 26), a tilted slab and a
-// cylinder along y: thick enough in y and z for the containment test's rows away from the box's faces, and large
-// enough for two threads (where the machine has them) taking slabs of two slices, against the naive painting.
+// distance are zero, which try the offsets toward their largest neighbour, or only the 26): a plate and a fin both
+// at least nine voxels from the filled box's faces, where the containment test reads its offsets unchecked, with a
+// tilted slab and a cylinder along y; a box of 90 x 90 x 76 voxels, which two threads share where the machine has
+// them (slabs of two slices; one thread takes slabs of four), against the naive painting.
 TEST(Thickness, crestsAndSlabsMatchNaivePainting) {
-  const Dims d{80, 82, 84};
+  const Dims d{90, 90, 84};
   const glm::dvec3 n = glm::normalize(glm::dvec3(0.3, 0.5, 1.0));
   const VoxelGrid g = shapeGrid(d, [&](glm::dvec3 p) {
-    const bool plate = p.z > 4 && p.z < 13 && p.x > 2 && p.x < 78;              // 9 thick: a crest at z = 8.5
-    const bool fin = p.x > 20 && p.x < 27 && p.z >= 13 && p.z < 40 && p.y > 5;  // 7 thick, standing on it
+    const bool foot = p.z < 4 && p.x < 6 && p.y < 6;                            // the box from z = 0
+    const bool plate = p.z > 10 && p.z < 19 && p.x > 2 && p.x < 88;             // 9 thick: its crest at z = 14
+    const bool fin = p.x > 20 && p.x < 27 && p.z >= 19 && p.z < 40 && p.y > 5;  // 7 thick: its crest at x = 23
     const bool slab = std::abs(glm::dot(p - glm::dvec3(23, 26, 50), n)) < 5.5 && p.z >= 40;  // tilted
     const double rr = (p.x - 23) * (p.x - 23) + (p.z - 30) * (p.z - 30);
     const bool cylinder = rr < 64 && p.y > 10 && p.y < 42;  // radius 8 along y
-    return plate || fin || slab || cylinder;
+    return foot || plate || fin || slab || cylinder;
   });
   auto dist = computeDistance(g);
   ASSERT_TRUE(dist.ok());
