@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <cassert>
+#include <functional>
+#include <new>
+#include <stdexcept>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include "app/action_functions.h"
 #include "app/operations.h"
+#include "app/parts.h"
 
 namespace vox::app {
 namespace {
@@ -140,8 +144,9 @@ bool dispatch(AppState& state, ActionId id) { return dispatch(state, id, ActionA
 
 Status dispatch(AppState& state, ActionId id, const ActionArgs& args) { return dispatch(state, action(id), args); }
 
-Status dispatch(AppState& state, const Action& a, const ActionArgs& args) {
-  if (!actionEnabled(state, a)) return notNow(a, "is not available now");
+namespace {
+
+Status runAction(AppState& state, const Action& a, const ActionArgs& args) {
   if (a.checked && args.words.size() == 1) {  // a toggle set on or off
     const std::string& w = args.words[0];
     const bool on = w == "on" || w == "1" || w == "true";
@@ -158,6 +163,74 @@ Status dispatch(AppState& state, const Action& a, const ActionArgs& args) {
   }
   state.redraw_frames = std::max(state.redraw_frames, 2);
   return Ok{};
+}
+
+// The document as it was before an action that threw: the model shown and its parts follow it.
+void restoreDocument(AppState& state, Document before) {
+  state.doc = std::move(before);
+  if (state.doc.model) {
+    state.model = state.doc.model->grid;
+    state.model_version = state.doc.model->version;
+    applyPartsScope(state);
+  }
+  state.viewport.dirty = true;
+}
+
+// Runs `run` now. An exception (memory it could not have, a fault in voxmod) becomes its error, and the document is
+// as it was before: no action ends the process or leaves half a change behind.
+Status runGuarded(AppState& state, const std::string& what, const std::function<Status(AppState&)>& run) {
+  Document before = state.doc;  // a cheap copy: grid layers are shared
+  try {
+    return run(state);
+  } catch (const std::bad_alloc&) {
+    restoreDocument(state, std::move(before));
+    return makeError(ErrorCode::kLimit,
+                     "'" + what + "' needs more memory than this machine can give; nothing was changed");
+  } catch (const std::exception& e) {
+    restoreDocument(state, std::move(before));
+    return makeError(ErrorCode::kInvalidArgument,
+                     "'" + what + "' failed (" + std::string(e.what()) + "); nothing was changed");
+  }
+}
+
+Status runGuarded(AppState& state, const Action& a, const ActionArgs& args) {
+  return runGuarded(state, a.label, [&](AppState& s) { return runAction(s, a, args); });
+}
+
+}  // namespace
+
+Status dispatch(AppState& state, const Action& a, const ActionArgs& args) {
+  if (!actionEnabled(state, a)) return notNow(a, "is not available now");
+  if (!state.building_frame) return runGuarded(state, a, args);
+  // A widget's action waits until the frame is built: the frame goes on drawing from the state it started with.
+  state.deferred_actions.push_back([&a, args](AppState& s) {
+    if (!actionEnabled(s, a)) return;  // no longer available by the time it runs, as a disabled button's click
+    if (Status st = runGuarded(s, a, args); !st) reportError(s, st.error().message);
+  });
+  state.redraw_frames = std::max(state.redraw_frames, 2);
+  return Ok{};
+}
+
+void runBetweenFrames(AppState& state, const std::string& what, std::function<void(AppState&)> run) {
+  auto guarded = [what, run = std::move(run)](AppState& s) {
+    const Status st = runGuarded(s, what, [&](AppState& t) {
+      run(t);
+      return Status(Ok{});
+    });
+    if (!st) reportError(s, st.error().message);
+  };
+  if (state.building_frame) {
+    state.deferred_actions.push_back(std::move(guarded));
+    state.redraw_frames = std::max(state.redraw_frames, 2);
+  } else {
+    guarded(state);
+  }
+}
+
+void runDeferredActions(AppState& state) {
+  std::vector<std::function<void(AppState&)>> queue = std::move(state.deferred_actions);
+  state.deferred_actions.clear();
+  for (auto& run : queue) run(state);
 }
 
 void dispatchValues(AppState& state, ActionId id, std::vector<std::string> words) {

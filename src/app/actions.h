@@ -6,6 +6,7 @@
 // An action runs without values (a menu item, a shortcut, a button: `run`) or with them (a script line, a panel that
 // already has them: `run_with`), e.g. "open" shows the file browser, "open part.stl" opens that file; "peel" peels the
 // Skin panel's N layers, "peel 3" three. A toggle given "on" or "off" is set to that.
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -128,13 +129,23 @@ const Action* findAction(const std::string& name);
 // Runs the action without values when it is enabled; returns whether it ran.
 bool dispatch(AppState& state, ActionId id);
 // Runs the action with values (none: as dispatch above). Fails, saying why, when the action is not enabled now or
-// the values do not fit. A toggle given on|off runs only when it is not already so.
+// the values do not fit. A toggle given on|off runs only when it is not already so. An action that throws fails
+// with its error and leaves the document as it was.
+// While the frame's widgets are drawn (AppState::building_frame) an enabled action is queued instead and runs,
+// errors shown in a dialog, in runDeferredActions once the frame is built: a widget's action never changes the state
+// the rest of the frame draws from.
 Status dispatch(AppState& state, ActionId id, const ActionArgs& args);
 Status dispatch(AppState& state, const Action& a, const ActionArgs& args);
 // From a panel whose values always fit (an axis it lists, an index in range): as dispatch with them; a refusal
 // (the action not enabled now) is ignored, as a disabled menu item's click is.
 void dispatchValues(AppState& state, ActionId id, std::vector<std::string> words);
 bool actionEnabled(const AppState& state, const Action& a);
+// Runs `run` (a dialog's choice that is no action of the table: the unsaved-changes prompt's Save and Discard) as an
+// action runs: between frames when a frame is being built, an exception shown as the error of `what` with the
+// document left as it was.
+void runBetweenFrames(AppState& state, const std::string& what, std::function<void(AppState&)> run);
+// Runs the actions the last frame's widgets gave, in order (the frame loop calls it between frames).
+void runDeferredActions(AppState& state);
 // Why an export that needs a computed result is off now, for its menu item's tooltip, e.g. "Needs the skin layers:
 // open the Skin removal panel (Ctrl+3) and let it finish"; empty while it is on, and for the other actions.
 std::string disabledReason(const AppState& state, const Action& a);

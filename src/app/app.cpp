@@ -12,7 +12,9 @@
 #include <malloc.h>
 #endif
 #include <cstring>
+#include <exception>
 #include <filesystem>
+#include <new>
 #include <string>
 #include <system_error>
 
@@ -22,7 +24,9 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // ErrorCheckEndFrameRecover: a frame whose drawing threw still ends
 
+#include "app/actions.h"
 #include "app/app_state.h"
 #include "app/operations.h"
 #include "app/panels/panels.h"
@@ -143,8 +147,10 @@ std::unique_ptr<Harness> makeHarness(const Options& options, AppState& state, in
   }
   h->screenshot_on_idle = options.screenshot;
   if (!options.screenshot.empty()) state.voxelize_after_load = true;
-  setWidgetRecorder([raw = h.get()](const std::string& name, ImVec2 a, ImVec2 b) {
-    raw->widget_rects.push_back({name, a.x, a.y, b.x, b.y});
+  setWidgetRecorder([raw = h.get()](const std::string& label, const char* kind, ImVec2 a, ImVec2 b) {
+    std::string name = label;
+    if (const size_t hidden = name.find("##"); hidden != std::string::npos) name.replace(hidden, 2, "@");
+    raw->widget_rects.push_back({std::move(name), kind, a.x, a.y, b.x, b.y});
   });
   return h;
 }
@@ -184,13 +190,56 @@ void handleWindowEvents(AppState& state, const Harness* h) {
   }
 }
 
+// A frame whose drawing threw: ImGui's windows and stacks are closed so the frame can end, the actions its widgets
+// gave are dropped (they were given against a picture that was not finished) and the error is shown. The document
+// is untouched: drawing only reads it, and actions wait until the frame is built.
+void recoverFrame(AppState& state, const std::exception& e) {
+  ImGui::ErrorCheckEndFrameRecover(nullptr);
+  state.deferred_actions.clear();
+  const bool memory = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
+  reportError(state, memory ? std::string("Drawing the window needed more memory than this machine can give")
+                            : std::string("Drawing the window failed: ") + e.what());
+}
+
+// The document's update between frames (finished background work taken in): an exception there is shown, not fatal.
+void updateDocumentGuarded(AppState& state) {
+  try {
+    updateDocument(state);
+  } catch (const std::bad_alloc&) {
+    reportError(state, "Taking in finished work needed more memory than this machine can give");
+  } catch (const std::exception& e) {
+    reportError(state, std::string("Taking in finished work failed: ") + e.what());
+  }
+}
+
+// The harness's press or typing (harness.h), one step this frame, in place of what the mouse and keyboard gave.
+void feedSyntheticInput(Harness* h) {
+  if (!h || !h->input.active) return;
+  SyntheticInput& in = h->input;
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = ImVec2(in.x, in.y);
+  io.MouseDown[0] = in.phase == 1;
+  io.KeyCtrl = in.phase == 3;
+  io.KeysDown[GLFW_KEY_A] = in.phase == 3;
+  if (in.phase == 4) io.AddInputCharactersUTF8(in.text.c_str());
+  io.KeysDown[GLFW_KEY_ENTER] = in.phase == 5;
+  if (++in.phase >= in.steps()) in.active = false;
+}
+
 // Builds the UI and draws it into the back buffer; returns the times the phases started (build, draw, swap).
-std::array<double, 3> drawUi(AppState& state, bool finish) {
+std::array<double, 3> drawUi(AppState& state, bool finish, Harness* h) {
   std::array<double, 3> t{nowSeconds(), 0.0, 0.0};
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  feedSyntheticInput(h);
   ImGui::NewFrame();
-  drawFrame(state);
+  state.building_frame = true;  // actions the widgets give wait until the frame is built (actions.h)
+  try {
+    drawFrame(state);
+  } catch (const std::exception& e) {
+    recoverFrame(state, e);
+  }
+  state.building_frame = false;
   state.key_presses.clear();
   ImGui::Render();
   t[1] = nowSeconds();
@@ -239,15 +288,16 @@ void releaseMemory(AppState& state) {
 void runFrame(AppState& state, Harness* h, double& last, std::string& title) {
   const bool animate = waitForFrame(state, h);
   handleWindowEvents(state, h);
-  updateDocument(state);
+  updateDocumentGuarded(state);
   state.viewport.interacting = false;  // set again this frame by drags, a playing section or a script sweep
   if (h && (!modelBusy(state) || h->started)) stepScript(*h, state);
   if (state.quit_requested) return;
   const bool timing = h && h->sweep.running;
   if (h) h->widget_rects.clear();  // drawn again this frame; a script's `state` reads the last frame's
-  const std::array<double, 3> t = drawUi(state, timing);
+  const std::array<double, 3> t = drawUi(state, timing, h);
   if (h) takeScreenshots(*h, state);
   glfwSwapBuffers(state.window);
+  runDeferredActions(state);
   releaseMemory(state);
   const double now = nowSeconds();
   if (timing) {

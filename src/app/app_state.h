@@ -421,6 +421,11 @@ struct AppState {
   int32_t export_width = 0, export_height = 0;  // size of an exported 3D view in pixels; 0: the view's own
   bool close_dialogs = false;  // every open dialog closes itself on the next frame (the close-dialogs action)
 
+  // Actions given while the frame's widgets are drawn (a button, a field, a list row): they run once the frame is
+  // built (runDeferredActions), never against the state the frame is still drawing from (actions.h).
+  bool building_frame = false;
+  std::vector<std::function<void(AppState&)>> deferred_actions;
+
   // Frame bookkeeping.
   int64_t frame = 0;
   double frame_time_s = 0.0;  // duration of the last frame

@@ -13,9 +13,39 @@
 namespace vox::app {
 
 // Where a widget a test driver needs was drawn (window pixels), e.g. "section_slider".
+// A widget's name is its label, with ImGui's hidden "##id" part written "@id" ("Cancel@clearance", "@colour"), or a
+// name a panel gives (markWidget: "section_slider"); its kind is markWidget's ("button", "field", "mark", ...).
 struct WidgetRect {
   std::string name;
+  std::string kind;
   float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+// A press or typing that the harness gives ImGui in place of the mouse and keyboard, one step a frame (app.cpp,
+// feedSyntheticInput): the pointer over (x, y), the button down, up (the click); when typing, then Ctrl+A (select
+// all), the text, and Enter.
+struct SyntheticInput {
+  bool active = false;
+  float x = 0, y = 0;
+  bool typing = false;
+  std::string text;
+  int phase = 0;  // steps given so far
+  int steps() const { return typing ? 7 : 3; }
+};
+
+// press-all: every widget on screen when it started, pressed one after another (fields typed into), each found again
+// by name and occurrence before it is pressed.
+struct PressAll {
+  struct Target {
+    std::string name, kind;
+    int occurrence = 0;  // among the widgets of the same name, in drawing order
+  };
+  std::vector<Target> targets;
+  size_t next = 0;
+  bool collected = false;  // the targets were taken from the widgets on screen
+  bool pressing = false;   // the current target was pressed; its work is awaited
+  int pressed = 0, missing = 0;
+  int64_t errors = 0;  // error dialogs raised (and closed) on the way
 };
 
 // A section sweep (the slider benchmark): the section moves one step per frame, as a slider drag does.
@@ -50,6 +80,8 @@ struct Harness {
   int idle_frames = 0;
 
   std::vector<WidgetRect> widget_rects;  // refilled every frame
+  SyntheticInput input;
+  PressAll press_all;
   // While sweeping: milliseconds of the last frame spent building the UI (including the section and the 3D view's
   // draw calls), rasterizing (3D points and UI, up to glFinish) and swapping buffers.
   double frame_phase_ms[3] = {0.0, 0.0, 0.0};

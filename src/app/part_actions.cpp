@@ -119,13 +119,16 @@ Status showPairAt(AppState& s, const ActionArgs& a) {
 }
 
 Status selectPartsAt(AppState& s, const ActionArgs& a) {
+  // "add N": a Ctrl+click, N added to the selection or taken out of it; else the parts named are the selection.
+  const bool add = a.words[0] == "add";
+  if (add && a.words.size() != 2) return badValues("select-part add takes one part number");
   std::vector<size_t> chosen;
-  for (const std::string& w : a.words) {
-    auto i = partIndex(s, w);
+  for (size_t k = add ? 1 : 0; k < a.words.size(); ++k) {
+    auto i = partIndex(s, a.words[k]);
     if (!i) return i.error();
     chosen.push_back(*i);
   }
-  for (size_t k = 0; k < chosen.size(); ++k) selectPart(s, chosen[k], k > 0);
+  for (size_t k = 0; k < chosen.size(); ++k) selectPart(s, chosen[k], add || k > 0);
   return Ok{};
 }
 
@@ -154,6 +157,7 @@ Status placePartAt(AppState& s, const ActionArgs& a) {
     if (!parseNumber(a.words[size_t(1 + k)], t[k])) {
       return badValues("place-part: '" + a.words[size_t(1 + k)] + "' is not a translation in model units");
     }
+    if (Status st = checkTranslation(s, t[k]); !st) return st;
   }
   PartPlacement p = placementWithTranslation(s, *i, t);
   if (a.words.size() == 7) {

@@ -1,6 +1,8 @@
 #include "app/parts.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <optional>
 #include <utility>
 
@@ -12,6 +14,8 @@
 #include "app/thickness.h"
 #include "app/update.h"
 #include "vox/core/grid_placement.h"
+#include "vox/core/text.h"
+#include "vox/core/units.h"
 #include "vox/io/mesh_file.h"
 #include "vox/io/stl.h"
 #include "vox/io/voxel_file.h"
@@ -59,6 +63,28 @@ VoxelGrid unionAfterPlacing(const Assembly& before, const Assembly& after, size_
   redoUnionIn(u, placed, placed[i].box());
   u.grid.frame() = lattice.frameAt(extent.min);
   return std::move(u.grid);
+}
+
+// Refuses, before anything is allocated, a scene whose box would not fit a grid or whose union would take more than
+// half the memory a large piece of work may plan for (the union is made next to the one before it).
+Status checkSceneSize(const Assembly& scene, const std::string& what) {
+  const glm::ivec3 n = scene.extent().size();
+  const std::string box = std::to_string(n.x) + " x " + std::to_string(n.y) + " x " + std::to_string(n.z);
+  if (n.x > VoxelGrid::kMaxDim || n.y > VoxelGrid::kMaxDim || n.z > VoxelGrid::kMaxDim) {
+    return makeError(ErrorCode::kLimit, what + " would make the parts' box " + box + " voxels; a grid holds at most " +
+                                            std::to_string(VoxelGrid::kMaxDim) +
+                                            " along each axis. Nothing was changed");
+  }
+  const uint64_t row_bytes = (uint64_t(n.x) + 2 + 63) / 64 * 8;
+  const uint64_t bytes = row_bytes * (uint64_t(n.y) + 2) * (uint64_t(n.z) + 2);
+  const uint64_t limit = defaultMemoryLimitBytes() / 2;
+  if (bytes > limit) {
+    return makeError(ErrorCode::kLimit, what + " would make the parts' box " + box +
+                                            " voxels, whose grid needs up to " + formatBytes(bytes) +
+                                            ", more than the " + formatBytes(limit) +
+                                            " this machine can give it. Nothing was changed");
+  }
+  return Ok{};
 }
 
 // A change of how the parts are shown (colour, visibility) as an undo step of its own: the state before it goes on the
@@ -253,11 +279,26 @@ Status placePart(AppState& state, size_t i, const PartPlacement& placement) {
   auto scene = std::make_shared<Assembly>(*parts);
   scene->setPlacement(i, p);
   const std::string label = (turned ? "turn " : "move ") + scene->part(i).name;
+  if (Status s = checkSceneSize(*scene, (turned ? "Turning " : "Moving ") + scene->part(i).name); !s) return s;
   const std::vector<size_t> selected = state.parts_ui.selected;
   VoxelGrid union_of_parts = unionAfterPlacing(*parts, *scene, i, state.doc.model->base);
   commitParts(state, std::move(scene), label, std::move(union_of_parts));
   state.parts_ui.selected = selected;
   applyPartsScope(state);
+  return Ok{};
+}
+
+Status checkTranslation(const AppState& state, double model_units) {
+  const Assembly* parts = currentParts(state);
+  if (!parts) return Ok{};
+  const double voxels = model_units / parts->lattice().voxel_size;
+  if (!std::isfinite(voxels) || std::abs(voxels) > double(VoxelGrid::kMaxDim)) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", model_units);
+    return makeError(ErrorCode::kLimit, std::string("A move of ") + buf + " " + unitsLabel(parts->lattice().units) +
+                                            " is more than the " + std::to_string(VoxelGrid::kMaxDim) +
+                                            " voxels a grid holds along an axis. Nothing was moved");
+  }
   return Ok{};
 }
 

@@ -43,6 +43,8 @@ void applyPartsScope(AppState& state);
 // The union is made again only over the part's old and new boxes (redoUnionIn): O(the words of the parts' rows in
 // those boxes), plus one copy of the union when the extent changes.
 Status placePart(AppState& state, size_t i, const PartPlacement& placement);
+// Fails, saying why, for a translation (model units) that is not a number or moves a part further than a grid holds.
+Status checkTranslation(const AppState& state, double model_units);
 // The placement with part i's translation set from model units (snapped to the nearest whole voxel).
 PartPlacement placementWithTranslation(const AppState& state, size_t i, const glm::dvec3& model_units);
 // The placement with one more quarter turn (+90 degrees) of part i about `axis` (0 X, 1 Y, 2 Z).

@@ -18,7 +18,7 @@ struct Signature {
 };
 
 // The harness's own commands (script.h); every other command is an action of the table (actions.h).
-constexpr std::array<Signature, 9> kHarnessCommands = {{
+constexpr std::array<Signature, 12> kHarnessCommands = {{
     {"echo", 0, -1},
     {"sweep", 1, 2},
     {"screenshot", 1, -1},
@@ -26,6 +26,9 @@ constexpr std::array<Signature, 9> kHarnessCommands = {{
     {"wait", 1, 2},
     {"wait-file", 1, 2},
     {"hover", 1, 3},
+    {"press", 1, -1},
+    {"type", 2, -1},
+    {"press-all", 0, 0},
     {"expect-error", 1, -1},
     {"exit", 0, 0},
 }};

@@ -30,6 +30,13 @@
 //   wait-file PATH [SECONDS]         keep drawing until PATH exists (a test driver's signal), default 60 s
 //   hover WIDGET [FX FY]             move the pointer to a widget recorded by `state` (e.g. xray_image), at
 //                                    fractions FX, FY of its width and height (default the centre)
+//   press WIDGET                     press a widget drawn last frame (a button, checkbox, list row, combo, ...) with
+//                                    the mouse as ImGui sees it: over it, down, up; then wait for the work it started.
+//                                    WIDGET is its label, with ImGui's hidden "##id" written "@id" ("Cancel@parts")
+//   type TEXT WIDGET                 click the field WIDGET, select all, type TEXT (one word) and press Enter
+//   press-all                        press every widget on screen, one after another (fields are given "2"), each
+//                                    found again before it is pressed; dialogs and error messages it raises are
+//                                    closed on the way, and the count of presses and errors is printed
 //   expect-error TEXT                the next command must fail with an error containing TEXT (its error dialog
 //                                    stays up); any other outcome fails the script
 //   echo TEXT                        print TEXT to stdout
@@ -54,7 +61,8 @@ struct ScriptCommand {
 // window opens. Errors read "FILE:LINE: message".
 Result<std::vector<ScriptCommand>> parseScript(const std::string& text, const std::string& name);
 Result<std::vector<ScriptCommand>> loadScript(const std::filesystem::path& path);
-// True for the harness's own commands (echo, sweep, screenshot, state, wait, wait-file, hover, expect-error, exit).
+// True for the harness's own commands (echo, sweep, screenshot, state, wait, wait-file, hover, press, type,
+// press-all, expect-error, exit).
 bool isHarnessCommand(const std::string& name);
 
 }  // namespace vox::app

@@ -124,8 +124,8 @@ WidgetRecorder& widgetRecorder() {
 }
 }  // namespace
 
-void markWidget(const std::string& name) {
-  if (const WidgetRecorder& r = widgetRecorder()) r(name, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
+void markWidget(const std::string& name, const char* kind) {
+  if (const WidgetRecorder& r = widgetRecorder()) r(name, kind, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
 }
 
 void setWidgetRecorder(WidgetRecorder recorder) { widgetRecorder() = std::move(recorder); }
@@ -133,7 +133,7 @@ void setWidgetRecorder(WidgetRecorder recorder) { widgetRecorder() = std::move(r
 void actionCheckbox(AppState& state, ActionId id, const char* label) {
   const Action& a = action(id);
   bool on = a.checked && a.checked(state);
-  if (ImGui::Checkbox(label, &on)) dispatch(state, id);
+  if (widget::Checkbox(label, &on)) dispatch(state, id);
 }
 
 void setToggle(AppState& state, ActionId id, bool on) { dispatchValues(state, id, {on ? "on" : "off"}); }

@@ -3,8 +3,10 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 
 #include <imgui.h>
+#include <imgui_stdlib.h>  // InputText on a std::string, which widget::InputText forwards to
 
 #include "app/actions.h"
 #include "app/app_state.h"
@@ -46,10 +48,84 @@ void wrappedColoured(const ImVec4& colour, const std::string& text);
 void drawScaleBar(ImVec2 at, float pixels_per_unit, const std::string& units, float max_px);
 
 // Where the last widget was drawn, for a test driver that clicks it ("section_slider"): given to the recorder set
-// with setWidgetRecorder (the script harness), nothing without one.
-void markWidget(const std::string& name);
-using WidgetRecorder = std::function<void(const std::string& name, ImVec2 min, ImVec2 max)>;
+// with setWidgetRecorder (the script harness), nothing without one. `kind` says how a driver uses it: "mark" (a
+// name given here), "button", "toggle" (checkbox, radio button), "row" (a selectable), "field" (typed into),
+// "slider", "combo", "colour".
+void markWidget(const std::string& name, const char* kind = "mark");
+using WidgetRecorder = std::function<void(const std::string& name, const char* kind, ImVec2 min, ImVec2 max)>;
 void setWidgetRecorder(WidgetRecorder recorder);
+
+// The panels' and dialogs' widgets: ImGui's, under the same names and arguments, each recorded (markWidget) under its
+// label, so that a test presses the real buttons and types into the real fields (script.h: press, type, press-all).
+namespace widget {
+inline bool recorded(const char* kind, const char* label, bool result) {
+  markWidget(label, kind);
+  return result;
+}
+template <class... A>
+bool Button(const char* label, A&&... a) {
+  return recorded("button", label, ImGui::Button(label, std::forward<A>(a)...));
+}
+template <class... A>
+bool SmallButton(const char* label, A&&... a) {
+  return recorded("button", label, ImGui::SmallButton(label, std::forward<A>(a)...));
+}
+template <class... A>
+bool Checkbox(const char* label, A&&... a) {
+  return recorded("toggle", label, ImGui::Checkbox(label, std::forward<A>(a)...));
+}
+template <class... A>
+bool RadioButton(const char* label, A&&... a) {
+  return recorded("toggle", label, ImGui::RadioButton(label, std::forward<A>(a)...));
+}
+template <class... A>
+bool Selectable(const char* label, A&&... a) {
+  return recorded("row", label, ImGui::Selectable(label, std::forward<A>(a)...));
+}
+template <class... A>
+bool InputDouble(const char* label, A&&... a) {
+  return recorded("field", label, ImGui::InputDouble(label, std::forward<A>(a)...));
+}
+template <class... A>
+bool InputFloat(const char* label, A&&... a) {
+  return recorded("field", label, ImGui::InputFloat(label, std::forward<A>(a)...));
+}
+template <class... A>
+bool InputInt(const char* label, A&&... a) {
+  return recorded("field", label, ImGui::InputInt(label, std::forward<A>(a)...));
+}
+template <class... A>
+bool InputInt2(const char* label, A&&... a) {
+  return recorded("field", label, ImGui::InputInt2(label, std::forward<A>(a)...));
+}
+template <class... A>
+bool InputText(const char* label, A&&... a) {
+  return recorded("field", label, ImGui::InputText(label, std::forward<A>(a)...));
+}
+template <class... A>
+bool SliderFloat(const char* label, A&&... a) {
+  return recorded("slider", label, ImGui::SliderFloat(label, std::forward<A>(a)...));
+}
+template <class... A>
+bool SliderInt(const char* label, A&&... a) {
+  return recorded("slider", label, ImGui::SliderInt(label, std::forward<A>(a)...));
+}
+template <class... A>
+bool Combo(const char* label, A&&... a) {
+  return recorded("combo", label, ImGui::Combo(label, std::forward<A>(a)...));
+}
+// The combo's box is recorded whether or not its list is open (a press opens it; its rows are Selectables).
+template <class... A>
+bool BeginCombo(const char* label, A&&... a) {
+  const bool open = ImGui::BeginCombo(label, std::forward<A>(a)...);
+  markWidget(label, "combo");
+  return open;
+}
+template <class... A>
+bool ColorEdit3(const char* label, A&&... a) {
+  return recorded("colour", label, ImGui::ColorEdit3(label, std::forward<A>(a)...));
+}
+}  // namespace widget
 
 // A checkbox for a toggle of the action table: shows whether it is on, and a click dispatches it.
 void actionCheckbox(AppState& state, ActionId id, const char* label);

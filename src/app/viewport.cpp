@@ -191,7 +191,7 @@ void drawToolbar(AppState& state, ImVec2 pos) {
   const char* short_labels[] = {"Fit", "Iso", "+X", "-X", "+Y", "-Y", "+Z", "-Z"};
   for (size_t i = 0; i < std::size(views); ++i) {
     if (i > 0) ImGui::SameLine(0.0f, 2.0f);
-    if (ImGui::SmallButton(short_labels[i])) dispatch(state, views[i]);
+    if (widget::SmallButton(short_labels[i])) dispatch(state, views[i]);
     if (ImGui::IsItemHovered()) {
       const Action& a = action(views[i]);
       const std::string sc = shortcutText(a.shortcut);

@@ -4,6 +4,8 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include <glm/common.hpp>
 #include <glm/vector_relational.hpp>
@@ -108,7 +110,10 @@ size_t Assembly::addPart(LatticeGrid voxels, const std::string& name) {
   return parts_.size() - 1;
 }
 
-void Assembly::removePart(size_t i) { parts_.erase(parts_.begin() + std::ptrdiff_t(i)); }
+void Assembly::removePart(size_t i) {
+  if (i >= parts_.size()) throw std::out_of_range("Assembly::removePart: no part " + std::to_string(i));
+  parts_.erase(parts_.begin() + std::ptrdiff_t(i));
+}
 
 glm::ivec3 Assembly::snapTranslation(const glm::dvec3& d) const {
   const glm::dvec3 v = d / lattice_.voxel_size;
@@ -116,7 +121,7 @@ glm::ivec3 Assembly::snapTranslation(const glm::dvec3& d) const {
 }
 
 LatticeGrid Assembly::placedVoxels(size_t i) const {
-  const Part& p = parts_[i];
+  const Part& p = parts_.at(i);
   LatticeGrid g = turnQuarter(p.voxels, p.placement.quarter_turns, lattice_);
   g.first += p.placement.translation;
   g.grid.frame() = lattice_.frameAt(g.first, g.grid.frame().source);

@@ -55,11 +55,12 @@ class Assembly {
   void removePart(size_t i);
 
   size_t size() const { return parts_.size(); }
-  const Part& part(size_t i) const { return parts_[i]; }
-  Part& part(size_t i) { return parts_[i]; }  // to edit name, colour, visibility, placement
+  // Part i; an index out of range throws std::out_of_range (never reads past the parts).
+  const Part& part(size_t i) const { return parts_.at(i); }
+  Part& part(size_t i) { return parts_.at(i); }  // to edit name, colour, visibility, placement
   const std::vector<Part>& parts() const { return parts_; }
 
-  void setPlacement(size_t i, const PartPlacement& placement) { parts_[i].placement = placement; }
+  void setPlacement(size_t i, const PartPlacement& placement) { parts_.at(i).placement = placement; }
   // A translation in model units snapped to whole voxels (rounded to the nearest).
   glm::ivec3 snapTranslation(const glm::dvec3& model_units) const;
   // The part's voxels with its placement applied (no copy of the voxels when it has no quarter turns).

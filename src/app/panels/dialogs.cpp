@@ -40,7 +40,7 @@ void drawJobWindow(AppState& state) {
   ImGui::ProgressBar(float(progress), ImVec2(-1.0f, 0.0f), overlay);
   if (cancelling) {
     ImGui::TextDisabled("Cancelling...");
-  } else if (ImGui::Button("Cancel")) {
+  } else if (widget::Button("Cancel")) {
     dispatch(state, ActionId::kCancelJob);
   }
   ImGui::End();
@@ -64,7 +64,7 @@ void drawErrorDialog(AppState& state) {
     const bool keys = ImGui::GetFrameCount() > state.errors.shown_frame &&
                       (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
                        ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false));
-    if (ImGui::Button("OK", ImVec2(120.0f, 0.0f)) || keys) {
+    if (widget::Button("OK", ImVec2(120.0f, 0.0f)) || keys) {
       state.errors.messages.erase(state.errors.messages.begin());
       ImGui::CloseCurrentPopup();
     }
@@ -88,21 +88,21 @@ void drawUnsavedPrompt(AppState& state) {
     state.after_unsaved_prompt = nullptr;
     return f;
   };
-  const bool save = ImGui::Button("Save", ImVec2(110.0f, 0.0f));
+  const bool save = widget::Button("Save", ImVec2(110.0f, 0.0f));
   markWidget("prompt_save");
   if (save) {
     ImGui::CloseCurrentPopup();
-    saveThen(state, then());
+    runBetweenFrames(state, "Save", [f = then()](AppState& s) { saveThen(s, f); });
   }
   ImGui::SameLine();
-  const bool discard = ImGui::Button("Discard", ImVec2(110.0f, 0.0f));
+  const bool discard = widget::Button("Discard", ImVec2(110.0f, 0.0f));
   markWidget("prompt_discard");
   if (discard) {
     ImGui::CloseCurrentPopup();
-    if (auto f = then()) f(state);
+    if (auto f = then()) runBetweenFrames(state, "Discard", std::move(f));
   }
   ImGui::SameLine();
-  const bool cancel = ImGui::Button("Cancel", ImVec2(110.0f, 0.0f));
+  const bool cancel = widget::Button("Cancel", ImVec2(110.0f, 0.0f));
   markWidget("prompt_cancel");
   if (cancel || state.close_dialogs || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
     ImGui::CloseCurrentPopup();

@@ -10,6 +10,7 @@
 
 #include "app/operations.h"
 #include "app/panels/panels.h"
+#include "app/ui.h"
 
 namespace vox::app {
 namespace {
@@ -57,15 +58,15 @@ void drawFileBrowser(AppState& state) {
   bool activate = drawBrowserEntries(b, footer);
 
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 260.0f);
-  if (ImGui::InputText("##name", &b.file_name, ImGuiInputTextFlags_EnterReturnsTrue)) activate = true;
+  if (widget::InputText("##name", &b.file_name, ImGuiInputTextFlags_EnterReturnsTrue)) activate = true;
   ImGui::SameLine();
-  ImGui::Checkbox("All files", &b.show_all_files);
+  widget::Checkbox("All files", &b.show_all_files);
   ImGui::SameLine();
-  if (ImGui::Button(isSave(b.purpose) ? "Save" : "Open", ImVec2(80.0f, 0.0f))) activate = true;
+  if (widget::Button(isSave(b.purpose) ? "Save" : "Open", ImVec2(80.0f, 0.0f))) activate = true;
   ImGui::SameLine();
   // Escape closes the browser, unless it is closing an error shown over it.
   const bool escape = state.errors.messages.empty() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
-  if (ImGui::Button("Cancel", ImVec2(80.0f, 0.0f)) || state.close_dialogs || escape) {
+  if (widget::Button("Cancel", ImVec2(80.0f, 0.0f)) || state.close_dialogs || escape) {
     b.then = nullptr;
     ImGui::CloseCurrentPopup();
   } else if (activate && !b.file_name.empty()) {
@@ -75,7 +76,7 @@ void drawFileBrowser(AppState& state) {
     // The picture's own size, whatever the window's (e.g. 3840 x 2160 for a slide); 0 x 0 is the view as shown.
     int size[2] = {state.export_width, state.export_height};
     ImGui::SetNextItemWidth(160.0f);
-    if (ImGui::InputInt2("pixels (0: as shown)", size)) {
+    if (widget::InputInt2("pixels (0: as shown)", size)) {
       state.export_width = std::clamp(size[0], 0, 8192);
       state.export_height = std::clamp(size[1], 0, 8192);
     }

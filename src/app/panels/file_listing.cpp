@@ -64,19 +64,19 @@ void listDirectory(FileBrowser& b) {
 }
 
 void drawBrowserNavigation(FileBrowser& b) {
-  if (ImGui::Button("Up")) {
+  if (widget::Button("Up")) {
     b.directory = b.directory.parent_path();
     b.needs_listing = true;
   }
   ImGui::SameLine();
-  if (ImGui::Button("Home")) {
+  if (widget::Button("Home")) {
     if (const char* home = std::getenv("HOME")) b.directory = home;
     b.needs_listing = true;
   }
   ImGui::SameLine();
   std::string dir_text = b.directory.string();
   ImGui::SetNextItemWidth(-1.0f);
-  if (ImGui::InputText("##dir", &dir_text, ImGuiInputTextFlags_EnterReturnsTrue)) {
+  if (widget::InputText("##dir", &dir_text, ImGuiInputTextFlags_EnterReturnsTrue)) {
     b.directory = dir_text;
     b.needs_listing = true;
   }
@@ -89,7 +89,7 @@ bool drawBrowserEntries(FileBrowser& b, float footer) {
     for (const FileBrowser::Entry& e : b.entries) {
       const std::string label = e.is_directory ? "[dir]  " + e.name + "/" : "       " + e.name;
       const bool selected = !e.is_directory && e.name == b.file_name;
-      if (ImGui::Selectable(label.c_str(), selected, ImGuiSelectableFlags_AllowDoubleClick)) {
+      if (widget::Selectable(label.c_str(), selected, ImGuiSelectableFlags_AllowDoubleClick)) {
         if (e.is_directory) {
           if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
             b.directory /= e.name;

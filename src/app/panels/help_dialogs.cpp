@@ -9,6 +9,7 @@
 
 #include "app/actions.h"
 #include "app/panels/panels.h"
+#include "app/ui.h"
 
 namespace vox::app {
 
@@ -44,7 +45,7 @@ void drawControlsDialog(AppState& state) {
     }
     ImGui::EndTable();
   }
-  if (ImGui::Button("Close", ImVec2(120.0f, 0.0f)) || state.close_dialogs ||
+  if (widget::Button("Close", ImVec2(120.0f, 0.0f)) || state.close_dialogs ||
       ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
     ImGui::CloseCurrentPopup();
   }
@@ -64,7 +65,7 @@ void drawAboutDialog(AppState& state) {
   ImGui::Spacing();
   ImGui::Text("Dear ImGui %s, GLFW %s", ImGui::GetVersion(), glfwGetVersionString());
   ImGui::Text("OpenGL: %s", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
-  if (ImGui::Button("Close", ImVec2(120.0f, 0.0f)) || state.close_dialogs ||
+  if (widget::Button("Close", ImVec2(120.0f, 0.0f)) || state.close_dialogs ||
       ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
     ImGui::CloseCurrentPopup();
   }

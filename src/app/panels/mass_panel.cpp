@@ -21,27 +21,27 @@ namespace {
 void materialControls(AppState& state) {
   const std::string units = state.model.frame().units;
   ImGui::SetNextItemWidth(120.0f);
-  if (ImGui::BeginCombo("Model units", unitsLabel(units).c_str())) {
+  if (widget::BeginCombo("Model units", unitsLabel(units).c_str())) {
     for (std::string_view u : kLengthUnits) {
-      if (ImGui::Selectable(unitsLabel(u).c_str(), u == units)) setModelUnits(state, std::string(u));
+      if (widget::Selectable(unitsLabel(u).c_str(), u == units)) setModelUnits(state, std::string(u));
     }
     ImGui::EndCombo();
   }
   helpMarker("What the model's coordinates are in. STL files do not say; .vxm files keep what you choose here.");
   MassUi& ui = state.mass_ui;
   ImGui::SetNextItemWidth(120.0f);
-  if (ImGui::BeginCombo("Material", ui.material.c_str())) {
-    if (ImGui::Selectable("unit density", ui.density <= 0.0)) ui = MassUi{};
+  if (widget::BeginCombo("Material", ui.material.c_str())) {
+    if (widget::Selectable("unit density", ui.density <= 0.0)) ui = MassUi{};
     for (const Material& m : commonMaterials()) {
-      if (ImGui::Selectable(m.name, ui.material == m.name)) ui = MassUi{m.name, m.density_kg_m3};
+      if (widget::Selectable(m.name, ui.material == m.name)) ui = MassUi{m.name, m.density_kg_m3};
     }
-    if (ImGui::Selectable("custom", ui.material == "custom"))
+    if (widget::Selectable("custom", ui.material == "custom"))
       ui = MassUi{"custom", ui.density > 0 ? ui.density : 1000.0};
     ImGui::EndCombo();
   }
   if (ui.density <= 0.0) return;  // unit density: no kg/m^3 to show
   ImGui::SetNextItemWidth(120.0f);
-  if (ImGui::InputDouble("kg/m^3", &ui.density, 0.0, 0.0, "%.6g")) {
+  if (widget::InputDouble("kg/m^3", &ui.density, 0.0, 0.0, "%.6g")) {
     ui.density = std::max(ui.density, 0.0);
     ui.material = ui.density > 0.0 ? "custom" : "unit density";
   }

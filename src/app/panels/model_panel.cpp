@@ -91,17 +91,17 @@ void modelSection(AppState& state) {
 
 void viewSection(AppState& state) {
   heading("Display");
-  if (ImGui::RadioButton("Classic (thesis table)", !state.view.lit)) setToggle(state, ActionId::kViewLit, false);
+  if (widget::RadioButton("Classic (thesis table)", !state.view.lit)) setToggle(state, ActionId::kViewLit, false);
   ImGui::SameLine();
-  if (ImGui::RadioButton("Lit", state.view.lit)) setToggle(state, ActionId::kViewLit, true);
+  if (widget::RadioButton("Lit", state.view.lit)) setToggle(state, ActionId::kViewLit, true);
   actionCheckbox(state, ActionId::kViewRound, "Round points");
   helpMarker("Thesis 6.2 'point smooth': draws each voxel as a disc instead of a square.");
   bool auto_size = state.view.point_size_px <= 0.0f;
-  if (ImGui::Checkbox("Automatic point size", &auto_size)) state.view.point_size_px = auto_size ? 0.0f : 3.0f;
+  if (widget::Checkbox("Automatic point size", &auto_size)) state.view.point_size_px = auto_size ? 0.0f : 3.0f;
   helpMarker(
       "Automatic: each point is as large as a voxel appears on screen (times sqrt 2), so the surface stays "
       "closed at any zoom.");
-  if (!auto_size) ImGui::SliderFloat("Point size (px)", &state.view.point_size_px, 1.0f, 16.0f, "%.0f");
+  if (!auto_size) widget::SliderFloat("Point size (px)", &state.view.point_size_px, 1.0f, 16.0f, "%.0f");
   actionCheckbox(state, ActionId::kViewLod, "Coarser points while moving");
   helpMarker(
       "While the view or a slider is dragged, draw a 2x, 4x ... downsampled model so the software renderer "
@@ -115,7 +115,7 @@ void drawModelPanel(AppState& state) {
     ImGui::TextWrapped(
         "No file is open. Use File > Open, drop an STL, .vxm or .binvox file on the window, or pick "
         "one under File > Open Recent.");
-    if (ImGui::Button("Open...")) dispatch(state, ActionId::kOpen);
+    if (widget::Button("Open...")) dispatch(state, ActionId::kOpen);
     viewSection(state);
     return;
   }
@@ -123,7 +123,7 @@ void drawModelPanel(AppState& state) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", state.doc.path.string().c_str());
   if (state.doc.mesh) meshSection(state);
   if (state.doc.mesh) {
-    if (ImGui::Button(state.doc.model ? "Voxelize again..." : "Voxelize...")) dispatch(state, ActionId::kVoxelize);
+    if (widget::Button(state.doc.model ? "Voxelize again..." : "Voxelize...")) dispatch(state, ActionId::kVoxelize);
   }
   if (state.doc.model) modelSection(state);
   viewSection(state);

@@ -43,13 +43,13 @@ void drawSplit(AppState& state) {
   const bool voxel_model = state.doc.mesh == nullptr;
   if (voxel_model) {
     int c = state.parts_ui.connectivity == Connectivity::kFace ? 6 : 26;
-    ImGui::RadioButton("6-connected", &c, 6);
+    widget::RadioButton("6-connected", &c, 6);
     ImGui::SameLine();
-    ImGui::RadioButton("26-connected", &c, 26);
+    widget::RadioButton("26-connected", &c, 26);
     state.parts_ui.connectivity = c == 6 ? Connectivity::kFace : Connectivity::kAll;
   }
   ImGui::BeginDisabled(!actionEnabled(state, action(ActionId::kSplitBodies)));
-  if (ImGui::Button(voxel_model ? "Split into connected components" : "Split into bodies")) {
+  if (widget::Button(voxel_model ? "Split into connected components" : "Split into bodies")) {
     dispatchValues(state, ActionId::kSplitBodies,
                    {voxel_model && state.parts_ui.connectivity == Connectivity::kAll ? "26" : "6"});
   }
@@ -57,7 +57,7 @@ void drawSplit(AppState& state) {
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(!actionEnabled(state, action(ActionId::kAddPart)));
-  if (ImGui::Button("Add part from file...")) dispatch(state, ActionId::kAddPart);
+  if (widget::Button("Add part from file...")) dispatch(state, ActionId::kAddPart);
   ImGui::EndDisabled();
 }
 
@@ -71,7 +71,7 @@ void drawPartRow(AppState& state, const Assembly& parts, size_t i, int64_t voxel
   // The swatch opens a colour picker; the part's points are drawn in the colour as it is picked. A change while the
   // picker was already active in the last frame continues its drag ("drag"): the whole drag is one undo step.
   float colour[3] = {p.colour.x, p.colour.y, p.colour.z};
-  const bool changed = ImGui::ColorEdit3(
+  const bool changed = widget::ColorEdit3(
       "##colour", colour, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_NoLabel | ImGuiColorEditFlags_NoTooltip);
   const bool dragging = ui.colour_drag_part == i;
   if (ImGui::IsItemActive()) {
@@ -88,14 +88,14 @@ void drawPartRow(AppState& state, const Assembly& parts, size_t i, int64_t voxel
   if (i == 0) markWidget("part_colour_first");
   ImGui::SameLine();
   bool visible = p.visible;
-  if (ImGui::Checkbox("##visible", &visible)) {
+  if (widget::Checkbox("##visible", &visible)) {
     dispatchValues(state, ActionId::kPartVisible, {std::to_string(i + 1), visible ? "on" : "off"});
   }
   ImGui::TableSetColumnIndex(1);
   const std::string label = std::to_string(i + 1) + "  " + p.name;
-  if (ImGui::Selectable(label.c_str(), selected, ImGuiSelectableFlags_SpanAllColumns)) {
+  if (widget::Selectable(label.c_str(), selected, ImGuiSelectableFlags_SpanAllColumns)) {
     if (ImGui::GetIO().KeyCtrl) {
-      selectPart(state, i, true);
+      dispatchValues(state, ActionId::kSelectPart, {"add", std::to_string(i + 1)});
     } else {
       dispatchValues(state, ActionId::kSelectPart, {std::to_string(i + 1)});
     }
@@ -132,17 +132,17 @@ void drawPartOperations(AppState& state, const Assembly& parts) {
   int scope = ui.scope_selected ? 1 : 0;
   ImGui::TextUnformatted("Section, X-ray, mass on:");
   ImGui::SameLine();
-  if (ImGui::RadioButton("all parts", &scope, 0)) dispatchValues(state, ActionId::kPartsScope, {"union"});
+  if (widget::RadioButton("all parts", &scope, 0)) dispatchValues(state, ActionId::kPartsScope, {"union"});
   ImGui::SameLine();
-  if (ImGui::RadioButton("selected part", &scope, 1)) dispatchValues(state, ActionId::kPartsScope, {"selected"});
+  if (widget::RadioButton("selected part", &scope, 1)) dispatchValues(state, ActionId::kPartsScope, {"selected"});
 
   const char* ops[] = {"union", "intersection", "difference", "xor"};
   int op = int(ui.op);
   ImGui::SetNextItemWidth(120.0f);
-  if (ImGui::Combo("##op", &op, ops, 4)) ui.op = PartOp(op);
+  if (widget::Combo("##op", &op, ops, 4)) ui.op = PartOp(op);
   ImGui::SameLine();
   ImGui::BeginDisabled(ui.selected.size() < 2);
-  if (ImGui::Button("Boolean of the two selected")) dispatchValues(state, ActionId::kPartBoolean, {ops[op]});
+  if (widget::Button("Boolean of the two selected")) dispatchValues(state, ActionId::kPartBoolean, {ops[op]});
   markWidget("part_boolean");
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && ui.selected.size() >= 2) {
@@ -150,7 +150,7 @@ void drawPartOperations(AppState& state, const Assembly& parts) {
                       parts.part(ui.selected[1]).name.c_str());
   }
   ImGui::BeginDisabled(ui.selected.empty() || parts.size() < 2);
-  if (ImGui::Button("Remove the selected part")) dispatch(state, ActionId::kRemovePart);
+  if (widget::Button("Remove the selected part")) dispatch(state, ActionId::kRemovePart);
   ImGui::EndDisabled();
 }
 
@@ -176,7 +176,7 @@ void drawPlacement(AppState& state, const Assembly& parts) {
   for (int k = 0; k < 3; ++k) {
     if (k > 0) ImGui::SameLine();
     ImGui::SetNextItemWidth(90.0f);
-    ImGui::InputDouble(axes[k], &ui.translation_edit[k], 0.0, 0.0, "%.4g");
+    widget::InputDouble(axes[k], &ui.translation_edit[k], 0.0, 0.0, "%.4g");
     if (k == 0) markWidget("part_move_x");
     edited = edited || ImGui::IsItemDeactivatedAfterEdit();
   }
@@ -192,12 +192,12 @@ void drawPlacement(AppState& state, const Assembly& parts) {
   const char* axis_words[3] = {"x", "y", "z"};
   for (int k = 0; k < 3; ++k) {
     if (k > 0) ImGui::SameLine();
-    if (ImGui::Button(turn_labels[k]))
+    if (widget::Button(turn_labels[k]))
       dispatchValues(state, ActionId::kTurnPart, {std::to_string(i + 1), axis_words[k]});
   }
   ImGui::SameLine();
   ImGui::BeginDisabled(p.placement.identity());
-  if (ImGui::Button("Reset")) {
+  if (widget::Button("Reset")) {
     dispatchValues(state, ActionId::kPlacePart, {std::to_string(i + 1), "0", "0", "0", "0", "0", "0"});
   }
   ImGui::EndDisabled();
@@ -212,14 +212,14 @@ void drawPlacement(AppState& state, const Assembly& parts) {
 void drawClearance(AppState& state) {
   const PartsUi& ui = state.parts_ui;
   ImGui::BeginDisabled(ui.selected.size() < 2 || state.clearance_job.active());
-  if (ImGui::Button("Clearance of the two selected")) dispatch(state, ActionId::kClearance);
+  if (widget::Button("Clearance of the two selected")) dispatch(state, ActionId::kClearance);
   markWidget("part_clearance");
   ImGui::EndDisabled();
   if (state.clearance_job.active()) {
     ImGui::SameLine();
     ImGui::Text("Finding the clearance... %.1f s", nowSeconds() - state.job_started);
     ImGui::SameLine();
-    if (ImGui::Button("Cancel##clearance")) dispatch(state, ActionId::kCancelJob);
+    if (widget::Button("Cancel##clearance")) dispatch(state, ActionId::kCancelJob);
   }
   const std::string text = clearanceText(state);
   if (!text.empty()) ImGui::TextWrapped("%s", text.c_str());
@@ -251,7 +251,7 @@ void drawPairList(AppState& state, const Assembly& parts, const Interference& in
     ImGui::TableSetColumnIndex(0);
     ImGui::PushID(i);
     const bool shown = state.parts_ui.pair == i;
-    if (ImGui::Selectable(parts.part(size_t(p.a)).name.c_str(), shown, ImGuiSelectableFlags_SpanAllColumns)) {
+    if (widget::Selectable(parts.part(size_t(p.a)).name.c_str(), shown, ImGuiSelectableFlags_SpanAllColumns)) {
       dispatchValues(state, ActionId::kInterferencePair, {std::to_string(shown ? 0 : i + 1)});
     }
     if (i == 0) markWidget("interference_first_pair");
@@ -277,7 +277,7 @@ void drawInterference(AppState& state, const Assembly& parts) {
     ImGui::TextUnformatted("Finding interference...");
     ImGui::ProgressBar(float(state.interference_job.progress()), ImVec2(-1.0f, 0.0f), overlay);
     ImGui::BeginDisabled(state.interference_job.cancelRequested());
-    if (ImGui::Button("Cancel##interference")) dispatch(state, ActionId::kCancelInterference);
+    if (widget::Button("Cancel##interference")) dispatch(state, ActionId::kCancelInterference);
     markWidget("interference_cancel");
     ImGui::EndDisabled();
   } else {
@@ -285,7 +285,7 @@ void drawInterference(AppState& state, const Assembly& parts) {
       ImGui::TextUnformatted("Cancelled.");
     }
     ImGui::TextWrapped("Which parts share voxels, how many, and where.");
-    if (ImGui::Button("Find interference")) dispatch(state, ActionId::kInterference);
+    if (widget::Button("Find interference")) dispatch(state, ActionId::kInterference);
     markWidget("find_interference");
   }
 }
@@ -296,7 +296,7 @@ void drawProgress(AppState& state) {
   std::snprintf(overlay, sizeof overlay, "%.0f%%   %.1f s", state.parts_job.progress() * 100.0,
                 nowSeconds() - state.job_started);
   ImGui::ProgressBar(float(state.parts_job.progress()), ImVec2(-1.0f, 0.0f), overlay);
-  if (ImGui::Button("Cancel##parts")) state.parts_job.cancel();
+  if (widget::Button("Cancel##parts")) state.parts_job.cancel();
 }
 
 }  // namespace

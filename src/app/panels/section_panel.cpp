@@ -41,8 +41,8 @@ void drawFullResolution(AppState& state) {
       state.doc.coarse_level, state.doc.path.filename().string().c_str(), axisName(s.axis), full);
   if (state.full_section_job.running()) {
     ImGui::ProgressBar(float(state.full_section_job.progress()), ImVec2(-1.0f, 0.0f), "reading the file");
-    if (ImGui::Button("Cancel##full_section")) state.full_section_job.cancel();
-  } else if (ImGui::Button("Read it from the file")) {
+    if (widget::Button("Cancel##full_section")) state.full_section_job.cancel();
+  } else if (widget::Button("Read it from the file")) {
     startFullSection(state);
   }
   markWidget("full_section_button");
@@ -71,7 +71,7 @@ void drawSectionPanel(AppState& state) {
   for (int a = 0; a < 3; ++a) {
     ImGui::SameLine();
     const std::string label = std::string(1, char('X' + a)) + "##axis";
-    if (ImGui::RadioButton(label.c_str(), &axis, a)) {
+    if (widget::RadioButton(label.c_str(), &axis, a)) {
       const Axis to = Axis(a);
       dispatchValues(state, ActionId::kSectionAt, {axisName(to), std::to_string(axisLength(state, to) / 2)});
     }
@@ -81,7 +81,7 @@ void drawSectionPanel(AppState& state) {
   s.index = std::clamp(s.index, 0, std::max(n - 1, 0));
 
   ImGui::SetNextItemWidth(-1.0f);
-  ImGui::SliderInt("##section_index", &s.index, 0, std::max(n - 1, 0), "index %d");
+  widget::SliderInt("##section_index", &s.index, 0, std::max(n - 1, 0), "index %d");
   markWidget("section_slider");
   if (ImGui::IsItemActive()) {
     s.playing = false;
@@ -95,21 +95,21 @@ void drawSectionPanel(AppState& state) {
   }
 
   // Step and play: the buttons dispatch the same actions as the Section menu and PgUp / PgDn / Space.
-  if (ImGui::Button("|<")) dispatchValues(state, ActionId::kSectionAt, {axisName(s.axis), "0"});
+  if (widget::Button("|<")) dispatchValues(state, ActionId::kSectionAt, {axisName(s.axis), "0"});
   ImGui::SameLine();
-  if (ImGui::Button("<")) dispatch(state, ActionId::kSectionPrev);
+  if (widget::Button("<")) dispatch(state, ActionId::kSectionPrev);
   ImGui::SameLine();
-  if (ImGui::Button(s.playing ? "Pause" : "Play", ImVec2(60.0f, 0.0f))) dispatch(state, ActionId::kSectionPlay);
+  if (widget::Button(s.playing ? "Pause" : "Play", ImVec2(60.0f, 0.0f))) dispatch(state, ActionId::kSectionPlay);
   ImGui::SameLine();
-  if (ImGui::Button(">")) dispatch(state, ActionId::kSectionNext);
+  if (widget::Button(">")) dispatch(state, ActionId::kSectionNext);
   ImGui::SameLine();
-  if (ImGui::Button(">|")) {
+  if (widget::Button(">|")) {
     dispatchValues(state, ActionId::kSectionAt, {axisName(s.axis), std::to_string(n - 1)});
   }
   ImGui::SetNextItemWidth(120.0f);
-  if (ImGui::InputInt("Step", &s.step)) s.step = std::clamp(s.step, 1, std::max(1, n));
+  if (widget::InputInt("Step", &s.step)) s.step = std::clamp(s.step, 1, std::max(1, n));
   ImGui::SetNextItemWidth(120.0f);
-  ImGui::SliderFloat("Sections / s", &s.play_speed, 1.0f, 60.0f, "%.0f");
+  widget::SliderFloat("Sections / s", &s.play_speed, 1.0f, 60.0f, "%.0f");
 
   if (section) {
     heading("This section");
@@ -134,13 +134,13 @@ void drawSectionPanel(AppState& state) {
   actionCheckbox(state, ActionId::kViewCut, "Cut away the model at the section");
   if (state.view.cut_away) {
     int keep = state.view.keep_above ? 1 : 0;
-    ImGui::RadioButton("Keep below", &keep, 0);
+    widget::RadioButton("Keep below", &keep, 0);
     ImGui::SameLine();
-    ImGui::RadioButton("Keep above", &keep, 1);
+    widget::RadioButton("Keep above", &keep, 1);
     state.view.keep_above = keep == 1;
   }
   ImGui::Spacing();
-  if (ImGui::Button("Export section PNG...")) dispatch(state, ActionId::kExportSectionPng);
+  if (widget::Button("Export section PNG...")) dispatch(state, ActionId::kExportSectionPng);
 }
 
 }  // namespace vox::app

@@ -23,7 +23,7 @@ void actionButton(AppState& state, ActionId id, const char* label, const char* r
   const Action& a = action(id);
   const bool enabled = actionEnabled(state, a);
   if (!enabled) ImGui::BeginDisabled();
-  if (ImGui::Button(label, ImVec2(width, 0.0f))) dispatch(state, id);
+  if (widget::Button(label, ImVec2(width, 0.0f))) dispatch(state, id);
   if (!enabled) ImGui::EndDisabled();
   markWidget(rect_name);
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
@@ -37,10 +37,10 @@ void roundPeelRow(AppState& state, const ModelSnapshot& snap, float w) {
   if (state.skin.peel_distance <= 0.0f) state.skin.peel_distance = float(snap.grid.voxelSize());
   ImGui::SetNextItemWidth(w);
   const std::string fmt = "%.4g " + unitsLabel(snap.grid.frame().units);
-  ImGui::InputFloat("##peel_distance", &state.skin.peel_distance, 0.0f, 0.0f, fmt.c_str());
+  widget::InputFloat("##peel_distance", &state.skin.peel_distance, 0.0f, 0.0f, fmt.c_str());
   state.skin.peel_distance = std::max(state.skin.peel_distance, 0.0f);
   ImGui::SameLine();
-  if (ImGui::Button("Peel by distance", ImVec2(2.0f * w + ImGui::GetStyle().ItemSpacing.x, 0.0f))) {
+  if (widget::Button("Peel by distance", ImVec2(2.0f * w + ImGui::GetStyle().ItemSpacing.x, 0.0f))) {
     dispatchValues(state, ActionId::kPeelDistance, {std::to_string(state.skin.peel_distance)});
   }
   markWidget("peel_distance");
@@ -74,7 +74,7 @@ void drawSkinPanel(AppState& state) {
   actionButton(state, ActionId::kPeelN, ("Peel " + std::to_string(state.skin.peel_count)).c_str(), "peel_n", w);
   ImGui::SameLine();
   ImGui::SetNextItemWidth(w);
-  if (ImGui::InputInt("##peel_n", &state.skin.peel_count))
+  if (widget::InputInt("##peel_n", &state.skin.peel_count))
     state.skin.peel_count = std::clamp(state.skin.peel_count, 1, 100000);
   ImGui::SameLine();
   actionButton(state, ActionId::kPeelCore, "Peel to core", "peel_core", w);
@@ -135,7 +135,7 @@ void drawSkinPanel(AppState& state) {
     ImGui::GetWindowDrawList()->AddLine(ImVec2(x, r0.y), ImVec2(x, r1.y), IM_COL32(255, 80, 80, 255), 2.0f);
   }
 
-  ImGui::Checkbox("Show the core through the model", &state.view.show_core);
+  widget::Checkbox("Show the core through the model", &state.view.show_core);
   helpMarker(
       "Draws the voxels of the last layer (the thickest region) in magenta over the model, so you can see "
       "where it lies before peeling down to it.");

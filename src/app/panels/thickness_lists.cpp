@@ -50,7 +50,7 @@ void drawThinWallList(AppState& state, const ThinWalls& thin, const std::string&
     ImGui::TableSetColumnIndex(0);
     ImGui::PushID(i);
     const bool selected = selectedRegion(state) == &g;
-    if (ImGui::Selectable(groupDigits(g.voxels).c_str(), selected, ImGuiSelectableFlags_SpanAllColumns)) {
+    if (widget::Selectable(groupDigits(g.voxels).c_str(), selected, ImGuiSelectableFlags_SpanAllColumns)) {
       dispatchValues(state, ActionId::kThinRegion, {std::to_string(i + 1)});
     }
     ImGui::PopID();
@@ -87,7 +87,7 @@ void drawHotSpotList(AppState& state, const ThicknessResult& r, const std::strin
     ImGui::TableSetColumnIndex(0);
     ImGui::PushID(i);
     const bool selected = selectedHotSpot(state) == &s;
-    if (ImGui::Selectable(std::to_string(i + 1).c_str(), selected, ImGuiSelectableFlags_SpanAllColumns)) {
+    if (widget::Selectable(std::to_string(i + 1).c_str(), selected, ImGuiSelectableFlags_SpanAllColumns)) {
       dispatchValues(state, ActionId::kHotSpot, {std::to_string(i + 1)});
     }
     ImGui::PopID();

@@ -26,11 +26,11 @@ const ThicknessResult* thicknessOrStatus(AppState& state) {
     wrappedColoured(kErrorColour, "Thickness could not be computed: " + e->message);
   } else if (state.thickness_ui.cancelled_version == state.model_version) {
     ImGui::TextUnformatted("Cancelled.");
-    if (ImGui::Button("Compute thickness")) retryThickness(state);
+    if (widget::Button("Compute thickness")) retryThickness(state);
   } else {
     ImGui::TextUnformatted("Computing distance, thickness and hot spots...");
     ImGui::ProgressBar(float(state.thickness.progress()), ImVec2(-1.0f, 0.0f));
-    if (ImGui::Button("Cancel")) cancelThickness(state);
+    if (widget::Button("Cancel")) cancelThickness(state);
     markWidget("thickness_cancel");
   }
   return nullptr;
@@ -77,7 +77,7 @@ void drawThicknessPanel(AppState& state) {
   float v = float(wall);
   ImGui::SetNextItemWidth(-1.0f);
   const std::string fmt = "%.4g " + unitsLabel(units);
-  if (ImGui::SliderFloat("##min_wall", &v, 0.0f, float(st.max), fmt.c_str())) {
+  if (widget::SliderFloat("##min_wall", &v, 0.0f, float(st.max), fmt.c_str())) {
     dispatchValues(state, ActionId::kMinWall, {std::to_string(v)});
   }
   markWidget("min_wall_slider");

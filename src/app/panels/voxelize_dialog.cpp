@@ -33,45 +33,46 @@ const char* modeHelp(FillMode m) {
 void resolutionChoice(VoxelizeDialog& d, const MeshSource& mesh) {
   VoxelizeParams& p = d.params;
   int by_size = d.by_voxel_size ? 1 : 0;
-  ImGui::RadioButton("Resolution", &by_size, 0);
+  widget::RadioButton("Resolution", &by_size, 0);
   ImGui::SameLine();
-  ImGui::RadioButton("Voxel size", &by_size, 1);
+  widget::RadioButton("Voxel size", &by_size, 1);
   d.by_voxel_size = by_size == 1;
   if (!d.by_voxel_size) {
     p.voxel_size = 0.0;
     for (int64_t preset : {100, 200, 400, 1000}) {
       char label[16];
       std::snprintf(label, sizeof label, "%" PRId64, preset);
-      if (ImGui::RadioButton(label, p.resolution == preset)) p.resolution = preset;
+      if (widget::RadioButton(label, p.resolution == preset)) p.resolution = preset;
       ImGui::SameLine();
     }
     ImGui::SetNextItemWidth(110.0f);
     int res = int(p.resolution);
-    if (ImGui::InputInt("voxels on the longest axis", &res, 10, 100)) p.resolution = std::clamp(res, 1, kMaxResolution);
+    if (widget::InputInt("voxels on the longest axis", &res, 10, 100))
+      p.resolution = std::clamp(res, 1, kMaxResolution);
   } else {
     if (p.voxel_size <= 0.0) {
       const glm::dvec3 e = mesh.mesh.bounds().extent();
       p.voxel_size = std::max({e.x, e.y, e.z}) / double(std::max<int64_t>(p.resolution, 1));
     }
     ImGui::SetNextItemWidth(160.0f);
-    ImGui::InputDouble("model units per voxel", &p.voxel_size, 0.0, 0.0, "%.6g");
+    widget::InputDouble("model units per voxel", &p.voxel_size, 0.0, 0.0, "%.6g");
   }
 }
 
 void modeAndUnits(VoxelizeParams& p) {
   ImGui::SetNextItemWidth(160.0f);
-  if (ImGui::BeginCombo("Fill mode", fillModeName(p.mode))) {
+  if (widget::BeginCombo("Fill mode", fillModeName(p.mode))) {
     for (FillMode m : kFillModes) {
-      if (ImGui::Selectable(fillModeName(m), m == p.mode)) p.mode = m;
+      if (widget::Selectable(fillModeName(m), m == p.mode)) p.mode = m;
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", modeHelp(m));
     }
     ImGui::EndCombo();
   }
   ImGui::TextDisabled("%s", modeHelp(p.mode));
   ImGui::SetNextItemWidth(160.0f);
-  if (ImGui::BeginCombo("Units", unitsLabel(p.units).c_str())) {
+  if (widget::BeginCombo("Units", unitsLabel(p.units).c_str())) {
     for (std::string_view u : kLengthUnits) {
-      if (ImGui::Selectable(unitsLabel(u).c_str(), u == p.units)) p.units = std::string(u);
+      if (widget::Selectable(unitsLabel(u).c_str(), u == p.units)) p.units = std::string(u);
     }
     ImGui::EndCombo();
   }
@@ -81,14 +82,14 @@ void modeAndUnits(VoxelizeParams& p) {
 void voxelizeButtons(AppState& state, const VoxelizeParams& p, bool can_start) {
   ImGui::Spacing();
   if (!can_start) ImGui::BeginDisabled();
-  if (ImGui::Button("Voxelize", ImVec2(120.0f, 0.0f)) ||
+  if (widget::Button("Voxelize", ImVec2(120.0f, 0.0f)) ||
       (can_start && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false))) {
     startVoxelize(state, p);
     ImGui::CloseCurrentPopup();
   }
   if (!can_start) ImGui::EndDisabled();
   ImGui::SameLine();
-  if (ImGui::Button("Cancel", ImVec2(120.0f, 0.0f)) ||
+  if (widget::Button("Cancel", ImVec2(120.0f, 0.0f)) ||
       ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
     ImGui::CloseCurrentPopup();
   }

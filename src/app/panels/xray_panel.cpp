@@ -27,13 +27,13 @@ void drawXrayPanel(AppState& state) {
   for (int a = 0; a < 3; ++a) {
     ImGui::SameLine();
     const std::string label = std::string(1, char('X' + a)) + "##xray_axis";
-    if (ImGui::RadioButton(label.c_str(), int(p.axis) == a)) choose(Axis(a), p.mode);
+    if (widget::RadioButton(label.c_str(), int(p.axis) == a)) choose(Axis(a), p.mode);
   }
   const std::pair<XrayMode, const char*> modes[] = {
       {XrayMode::kMin, "Minimum"}, {XrayMode::kMax, "Maximum"}, {XrayMode::kTotal, "Total"}};
   for (const auto& [mode, label] : modes) {
     if (mode != XrayMode::kMin) ImGui::SameLine();
-    if (ImGui::RadioButton(label, p.mode == mode)) choose(p.axis, mode);
+    if (widget::RadioButton(label, p.mode == mode)) choose(p.axis, mode);
     markWidget(std::string("xray_") + xrayModeName(mode));
   }
   ImGui::TextWrapped("%s", p.mode == XrayMode::kMin   ? "Per ray: the thinnest wall it crosses."
@@ -75,9 +75,9 @@ void drawXrayPanel(AppState& state) {
   ImGui::Text("Rays hitting material: %s of %s", groupDigits(x->rays_hit).c_str(),
               groupDigits(int64_t(x->thickness.width) * x->thickness.height).c_str());
   ImGui::Spacing();
-  if (ImGui::Button("Export PNG...")) dispatch(state, ActionId::kExportXrayPng);
+  if (widget::Button("Export PNG...")) dispatch(state, ActionId::kExportXrayPng);
   ImGui::SameLine();
-  if (ImGui::Button("Export CSV...")) dispatch(state, ActionId::kExportXrayCsv);
+  if (widget::Button("Export CSV...")) dispatch(state, ActionId::kExportXrayCsv);
 }
 
 }  // namespace vox::app

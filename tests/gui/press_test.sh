@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# GUI test: the window's real widgets pressed and typed into with the pointer and keys as ImGui sees them (the
+# harness's press, type and press-all, script.h), with an assembly loaded and then one model, under whatever
+# sanitizer the build has. Checks that:
+#   - a Boolean of two selected parts pressed in the Parts panel makes the new part, selected, at its own placement
+#     (the panel drew on from the assembly before it: a part past its end);
+#   - typing 2 into the new part's X field moves it 2 model units in X, and nothing else;
+#   - a move no grid could hold is refused with a message and changes nothing;
+#   - every button, field, toggle, list row and combo of every panel is pressed and the window goes on.
+#
+#   press_test.sh VOXMOD SOURCE_DIR OUT_DIR
+#
+# Exit codes: 0 pass, 1 fail, 77 skipped (no xvfb-run outside CI).
+set -euo pipefail
+
+voxmod=$1
+src=$2
+out=$3
+if ! command -v xvfb-run >/dev/null 2>&1; then
+  [[ "${CI:-}" == "true" ]] && { echo "FAIL: press test needs xvfb-run (scripts/setup.sh installs it)" >&2; exit 1; }
+  echo "SKIP: press test needs xvfb-run" >&2
+  exit 77
+fi
+rm -rf "$out"
+mkdir -p "$out"
+sed -e "s|@SRC@|$src|g" -e "s|@OUT@|$out|g" "$src/tests/gui/press.script" >"$out/press.script"
+
+if ! xvfb-run -a -s "-screen 0 1400x900x24" "$voxmod" --size 1280x800 --script "$out/press.script" \
+    >"$out/voxmod.log" 2>&1; then
+  echo "FAIL: voxmod did not finish the script" >&2
+  tail -n 40 "$out/voxmod.log" >&2
+  exit 1
+fi
+
+checks=0
+fail() {
+  echo "FAIL: $*" >&2
+  exit 1
+}
+get() { sed -n "s/^$2 = //p" "$out/$1"; }
+expect() {  # file key value
+  local v
+  v=$(get "$1" "$2")
+  [[ "$v" == "$3" ]] || fail "$1: $2 is '$v', expected '$3'"
+  checks=$((checks + 1))
+  echo "ok $checks - $1: $2 = $3"
+}
+
+expect after_boolean.txt parts 4
+expect after_boolean.txt selected_parts 4
+expect after_boolean.txt selected_translation "0 0 0"
+expect after_boolean.txt selected_turns "0 0 0"
+h=$(get after_boolean.txt voxel_size)
+tx=$(python3 -c "print(round(2 / $h))")
+((tx > 0)) || fail "a voxel of $h is larger than the move of 2"
+expect after_move.txt selected_translation "$tx 0 0"
+expect after_refusal.txt selected_translation "$tx 0 0"
+expect after_refusal.txt selected_turns "0 0 1"
+grep -q "expected error: .*more than the" "$out/voxmod.log" || fail "the absurd move was not refused with a message"
+
+# Every panel pressed, with the assembly and with one model: 14 rounds, each with more than the 3D view's buttons.
+rounds=$(grep -c "^press-all: pressed" "$out/voxmod.log")
+((rounds == 14)) || fail "expected 14 press-all rounds, found $rounds"
+while read -r n; do
+  ((n > 8)) || fail "a press-all round pressed only $n widgets"
+done < <(sed -n 's/^press-all: pressed \([0-9]*\) widgets.*/\1/p' "$out/voxmod.log")
+total=$(awk '/^press-all: pressed/ { n += $3 } END { print n }' "$out/voxmod.log")
+checks=$((checks + 1))
+echo "ok $checks - $total widgets pressed over $rounds rounds, the window still up"
+expect end.txt has_model 1
+echo "press test: $checks checks passed"
