@@ -2,7 +2,7 @@
 find_package(Threads REQUIRED)
 find_package(glm REQUIRED)                      # libglm-dev
 find_package(ZLIB REQUIRED)                     # zlib1g-dev: CRC-32 of .vxm files
-find_package(nlohmann_json 3.10 REQUIRED)       # nlohmann-json3-dev: CLI --json output
+find_package(nlohmann_json 3.10 REQUIRED)       # nlohmann-json3-dev: CLI --json output, project manifests
 find_package(CLI11 REQUIRED)                    # libcli11-dev: command-line parsing
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)   # libstb-dev: PNG writing (stbi_write_png lives in libstb.so)

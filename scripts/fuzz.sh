@@ -8,7 +8,7 @@ seconds=${1:-60}
 shared=${VOXMOD_SHARED_DIR:-../shared}
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVOXMOD_BUILD_FUZZ=ON \
   -DVOXMOD_BUILD_TESTS=OFF -DVOXMOD_BUILD_BENCH=OFF "-DVOXMOD_SANITIZE=address,undefined" >/dev/null
-cmake --build build-fuzz -j "$(nproc)" --target fuzz_stl fuzz_vxm fuzz_binvox fuzz_mesh_file
+cmake --build build-fuzz -j "$(nproc)" --target fuzz_stl fuzz_vxm fuzz_binvox fuzz_mesh_file fuzz_project
 
 # Seed corpora: small shared meshes and reference grids, plus the malformed-file tests.
 seed() {  # seed <target> <files...>
@@ -21,6 +21,9 @@ seed() {  # seed <target> <files...>
 seed stl models/*.stl tests/data/malformed/*.stl tests/data/quirks/*.stl $shared/meshes/two_disjoint_cubes.stl $shared/meshes/cube_axis_aligned.stl
 seed binvox $shared/reference/*_r64.binvox tests/data/malformed/*.binvox tests/data/quirks/*.binvox tests/data/*.binvox
 seed vxm tests/data/*.vxm tests/data/malformed/*.vxm tests/data/quirks/*.vxm
+# fuzz_project reads each input as a .vxp file and as the manifest of a project with fixed grids: the manifest of
+# those grids seeds it.
+seed project tests/data/project/manifest.json
 # fuzz_mesh_file reads the bytes after the first under the name that byte picks (tests/fuzz/fuzz_mesh_file.cpp):
 # each seed is a file behind the byte of its format. The shared CAD corpus, and small files of tests/data/mesh.
 seed_named() {  # seed_named <index of the name> <files...>
@@ -57,7 +60,7 @@ fuzz_one() {  # fuzz_one <target>: fuzzes it for $seconds, its report in build-f
 }
 
 # One fuzzer per core at a time (each runs on one thread).
-targets=(stl vxm binvox mesh_file)
+targets=(stl vxm binvox mesh_file project)
 status=0
 running=0
 for t in "${targets[@]}"; do

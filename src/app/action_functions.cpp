@@ -43,6 +43,7 @@ Status acceptPath(AppState& s, BrowserPurpose purpose, const ActionArgs& a) {
 
 // ---- Conditions ----
 bool hasModel(const AppState& s) { return s.doc.model.has_value() && !modelBusy(s); }
+bool hasOrphanAutosave(const AppState& s) { return !s.autosave.orphans.empty() && !modelBusy(s); }
 bool hasMesh(const AppState& s) { return s.doc.mesh != nullptr && !s.load_job.active(); }
 bool hasSection(const AppState& s) { return !s.model.empty(); }
 // An X-ray export needs the X-ray computed (the X-ray panel computes it); until then the menu item is off.

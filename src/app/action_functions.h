@@ -7,6 +7,7 @@ namespace vox::app::actions {
 
 // ---- Conditions ----
 bool hasModel(const AppState& s);
+bool hasOrphanAutosave(const AppState& s);  // a window that is gone left unsaved work (autosave.h)
 bool hasMesh(const AppState& s);
 bool hasSection(const AppState& s);
 bool hasXray(const AppState& s);

@@ -29,6 +29,8 @@ const Action kActions[] = {
   {ActionId::kSave,           "save",            "File",    "Save",                               {GLFW_KEY_S, kCtrl},         1, -1, save,          savePath,          hasModel,    nullptr},
   {ActionId::kSaveAs,         "save-as",         "File",    "Save As...",                         {GLFW_KEY_S, kCtrl | kShift}, 1, -1, saveAs,       savePath,          hasModel,    nullptr},
   {ActionId::kSaveParts,      "save-parts",      "File",    "Save each part to a folder...",      kNone,                       1, -1, savePartsDialog, savePartsPath,   hasPartsNow, nullptr},
+  {ActionId::kRecoverAutosave, "recover-autosave", "File", "Recover unsaved work",             kNone,                       0, 0,  recoverAutosave, nullptr,         hasOrphanAutosave, nullptr},
+  {ActionId::kDiscardAutosave, "discard-autosave", nullptr, "Discard the unsaved work found",  kNone,                       0, 0,  discardAutosave, nullptr,         hasOrphanAutosave, nullptr},
   {ActionId::kExportBinvox,   "export-binvox",   "File",    "Export binvox...",                   kNone,                       1, -1, exportBinvox,  exportBinvoxPath,  hasModel,    nullptr},
   {ActionId::kExportSurface,  "export-surface",  "File",    "Export surface mesh (STL, PLY, OBJ, 3MF)...", kNone,              1, -1, exportSurface, exportSurfacePath, hasModel,    nullptr},
   {ActionId::kExportSmoothSurface, "export-smooth-surface", "File", "Export smooth surface mesh...", kNone,            1, -1, exportSmoothSurface, exportSmoothSurfacePath, hasModel, nullptr},

@@ -21,6 +21,8 @@ enum class ActionId {
   kSave,
   kSaveAs,
   kSaveParts,
+  kRecoverAutosave,
+  kDiscardAutosave,
   kExportBinvox,
   kExportSurface,
   kExportSmoothSurface,

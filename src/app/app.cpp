@@ -289,6 +289,7 @@ void runFrame(AppState& state, Harness* h, double& last, std::string& title) {
   const bool animate = waitForFrame(state, h);
   handleWindowEvents(state, h);
   updateDocumentGuarded(state);
+  updateAutosave(state);
   state.viewport.interacting = false;  // set again this frame by drags, a playing section or a script sweep
   if (h && (!modelBusy(state) || h->started)) stepScript(*h, state);
   if (state.quit_requested) return;
@@ -362,6 +363,7 @@ int runGui(int argc, char** argv) {
 
   AppState state;
   const std::string imgui_ini = loadUserSettings(state, options);
+  initAutosave(state, !options.script.empty());
   int exit_code = 0;
   std::unique_ptr<Harness> harness = makeHarness(options, state, exit_code);
   if (exit_code != 0) return exit_code;
@@ -394,6 +396,7 @@ int runGui(int argc, char** argv) {
   while (!state.quit_requested) runFrame(state, harness.get(), last, title);
 
   saveWindowSettings(state, options);
+  if (!state.autosave.keep_on_exit) finishAutosave(state);
   cancelJobs(state);
   shutdownViewport(state);
   state.section_texture.reset();

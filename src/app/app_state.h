@@ -22,6 +22,7 @@
 #include "vox/core/mesh.h"
 #include "vox/core/voxel_grid.h"
 #include "vox/io/mesh_file.h"
+#include "vox/io/project_file.h"
 #include "vox/render/camera.h"
 #include "vox/render/framebuffer.h"
 #include "vox/render/point_renderer.h"
@@ -281,10 +282,49 @@ struct PartsUi {
   size_t colour_step_part = SIZE_MAX;
 };
 
+// A window's autosave found at start-up whose window is gone (autosave.h).
+struct OrphanAutosave {
+  std::filesystem::path path;
+  std::string document;  // the name of the document it holds ("part.stl")
+  std::string when;      // when it was written, local time ("2026-12-06 18:30")
+};
+
+// Autosave and recovery (autosave.h).
+struct AutosaveState {
+  std::filesystem::path dir;   // empty: autosave is off
+  std::filesystem::path file;  // this window's autosave
+  double interval_s = 30.0;
+  // What the file holds (the model version, its parts, the undo depth and the view it was written for) and when it
+  // was written.
+  struct Key {
+    uint64_t version = 0;
+    const void* parts = nullptr;
+    size_t undo_depth = 0;
+    // The view the project keeps.
+    int panel = 0;
+    int section_axis = 0;
+    int32_t section_index = -1;
+    std::vector<size_t> selected;
+    bool operator==(const Key&) const = default;
+  };
+  Key written;
+  bool file_written = false;
+  double last_write = 0.0;
+  Job<Key> job;
+  std::string last_error;  // the last write that failed (shown in the status bar once)
+  // Recovery: autosaves of windows that are gone, newest first; the offer is shown while there are some, until the
+  // user answers "Later".
+  std::vector<OrphanAutosave> orphans;
+  bool offer_dismissed = false;
+  bool keep_on_exit = false;  // the run ends as a kill would (a script's `exit`): the file stays
+};
+
 struct LoadedFile {
   std::filesystem::path path;
   std::shared_ptr<const MeshSource> mesh;  // a mesh or CAD file
   std::optional<VoxelGrid> grid;           // a voxel file
+  std::optional<io::ProjectFile> project;  // a voxmod project (.vxp)
+  bool recovered = false;                  // the project is an autosave being recovered (autosave.h)
   double load_s = 0.0;
   // > 1: `grid` is a coarse view of a .vxm file too large for memory (io::readVxmCoarse at this level), whose own
   // dims are full_dims.
@@ -403,6 +443,8 @@ struct AppState {
   std::optional<render::Box3> model_bounds;
 
   Viewport viewport;
+
+  AutosaveState autosave;
 
   // Dialogs.
   ErrorQueue errors;

@@ -14,14 +14,18 @@ namespace vox::app {
 
 std::vector<std::string> browserExtensions(BrowserPurpose purpose) {
   switch (purpose) {
-    case BrowserPurpose::kOpen:
+    case BrowserPurpose::kOpen: {
+      std::vector<std::string> all = io::meshFileExtensions();
+      all.insert(all.end(), {".vxp", ".vxm", ".binvox"});
+      return all;
+    }
     case BrowserPurpose::kAddPart: {
       std::vector<std::string> all = io::meshFileExtensions();
       all.insert(all.end(), {".vxm", ".binvox"});
       return all;
     }
     case BrowserPurpose::kSaveModel:
-      return {".vxm", ".binvox"};
+      return {".vxp", ".vxm", ".binvox"};
     case BrowserPurpose::kExportBinvox:
       return {".binvox"};
     case BrowserPurpose::kExportSurface:
@@ -99,8 +103,8 @@ void openBrowser(AppState& state, BrowserPurpose purpose) {
     case BrowserPurpose::kAddPart:
       b.file_name.clear();
       break;
-    case BrowserPurpose::kSaveModel:
-      b.file_name = stem + ".vxm";
+    case BrowserPurpose::kSaveModel:  // a scene of parts keeps its parts only in a project
+      b.file_name = stem + (state.doc.model && state.doc.model->parts ? ".vxp" : ".vxm");
       break;
     case BrowserPurpose::kExportBinvox:
       b.file_name = stem + ".binvox";

@@ -4,9 +4,11 @@
 #include <optional>
 #include <utility>
 
+#include "app/autosave.h"
 #include "app/browser_purposes.h"
 #include "app/full_section.h"
 #include "app/messages.h"
+#include "app/project.h"
 #include "app/model_jobs.h"
 #include "app/parts.h"
 #include "app/update.h"
@@ -112,9 +114,21 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
   state.measure.picks.clear();
   clearFullSection(state);
   doc.path = loaded.path;
+  if (loaded.recovered) {  // an autosave: the document is the file it was made from, unsaved
+    const std::string source = loaded.project->source;
+    applyProject(state, std::move(*loaded.project), loaded.path, true);
+    if (!source.empty()) doc.path = source;
+    adoptRecovered(state, loaded.path);
+    state.status_message = "Recovered the unsaved work on " + documentName(state) + ": save it to keep it";
+    state.status_since = nowSeconds();
+    state.voxelize_after_load = false;
+    return;
+  }
   addRecentFile(state.settings, std::filesystem::absolute(loaded.path).lexically_normal().string());
   state.settings.last_directory = std::filesystem::absolute(loaded.path).parent_path().string();
-  if (loaded.grid) {
+  if (loaded.project) {
+    applyProject(state, std::move(*loaded.project), loaded.path, false);
+  } else if (loaded.grid) {
     auto origin = std::make_shared<ModelOrigin>();
     origin->what = "loaded " + loaded.path.filename().string();
     doc.coarse_level = loaded.coarse_level;
@@ -191,17 +205,26 @@ std::optional<std::pair<int32_t, Dims>> coarseViewOf(const std::filesystem::path
 
 }  // namespace
 
-void startOpen(AppState& state, const std::filesystem::path& path) {
+void startRecover(AppState& state, const std::filesystem::path& autosave) {
+  guardUnsaved(state, [autosave](AppState& s) { startOpen(s, autosave, true); });
+}
+
+void startOpen(AppState& state, const std::filesystem::path& path, bool recovered) {
   state.voxelize_job.abandon();
   state.job_started = nowSeconds();
   // A CAD file is tessellated for the resolution the Voxelize dialog holds; voxelizing finer tessellates it again.
   const int64_t resolution = state.voxelize.params.resolution;
   state.load_job.start("Opening " + path.filename().string(),
-                       [path, resolution](const ProgressFn& progress) -> Result<LoadedFile> {
+                       [path, resolution, recovered](const ProgressFn& progress) -> Result<LoadedFile> {
                          const double t0 = nowSeconds();
                          LoadedFile out;
                          out.path = path;
-                         if (const auto coarse = coarseViewOf(path)) {
+                         out.recovered = recovered;
+                         if (io::isProjectFile(path)) {
+                           auto project = io::loadProject(path);
+                           if (!project) return project.error();
+                           out.project = std::move(project).value();
+                         } else if (const auto coarse = coarseViewOf(path)) {
                            auto grid = io::readVxmCoarse(path, coarse->first, progress);
                            if (!grid) return grid.error();
                            out.grid = std::move(grid).value();
@@ -232,8 +255,12 @@ bool saveModel(AppState& state, const std::filesystem::path& path) {
     return false;
   }
   const std::string ext = io::lowerExtension(path);
+  if (ext == ".vxp") return saveProjectAs(state, path);
   if (ext != ".vxm" && ext != ".binvox") {
-    reportError(state, "models are saved as .vxm (voxmod) or .binvox; choose one of those extensions", path);
+    reportError(state,
+                "models are saved as .vxp (a voxmod project: the parts with their names, colours and placements), "
+                ".vxm (voxmod's voxel file) or .binvox; choose one of those extensions",
+                path);
     return false;
   }
   if (Status s = io::saveVoxelFile(state.model, path); !s) {

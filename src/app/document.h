@@ -15,8 +15,10 @@ namespace vox::app {
 // ---- Files ----
 // Asks about unsaved changes first, then opens (in the background) a mesh or voxel file.
 void requestOpen(AppState& state, const std::filesystem::path& path);
-// Opens without asking (the script, or after the prompt).
-void startOpen(AppState& state, const std::filesystem::path& path);
+// Opens without asking (the script, or after the prompt). `recovered`: `path` is an autosave (autosave.h) to recover.
+void startOpen(AppState& state, const std::filesystem::path& path, bool recovered = false);
+// Asks about unsaved changes first, then recovers an autosave as an unsaved document (autosave.h).
+void startRecover(AppState& state, const std::filesystem::path& autosave);
 // Saves the model as .vxm or .binvox (by extension); on success it is the file Save writes to from now on.
 bool saveModel(AppState& state, const std::filesystem::path& path);
 // Save to the current file, or ask for one (file browser) when there is none.

@@ -1,5 +1,7 @@
 #include "app/script_runner.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
@@ -288,6 +290,7 @@ Step runHarnessCommand(Context& c) {
   }
   if (name == "exit") {  // ends the run and closes the window, as killing it would: nothing is asked or saved
     c.state.quit_requested = true;
+    c.state.autosave.keep_on_exit = true;
     return Step::kDone;
   }
   return c.fail("unknown command '" + name + "'");
@@ -338,7 +341,7 @@ bool checkExpectedError(Harness& h, const Context& c, Step step) {
 bool settled(const AppState& s) {
   return !modelBusy(s) && !s.depth.busy() && !s.surface_stats.busy() && !s.mass.busy() && !s.xray_result.busy() &&
          !s.thickness.busy() && !s.skin.pending_peel && !s.volume_export_job.active() && !s.parts_job.active() &&
-         !s.interference_job.active() && !s.clearance_job.active();
+         !s.interference_job.active() && !s.clearance_job.active() && !autosaveBusy(s);
 }
 
 void stepScript(Harness& h, AppState& state) {
@@ -370,6 +373,7 @@ void stepScript(Harness& h, AppState& state) {
 
 std::string describeState(const AppState& s, const Harness& h) {
   std::ostringstream out;
+  out << "pid = " << ::getpid() << "\n";
   out << "frame = " << s.frame << "\n";
   out << "fps = " << s.fps << "\n";
   out << "panel = " << panelName(s.panel) << "\n";
@@ -424,6 +428,9 @@ std::string describeState(const AppState& s, const Harness& h) {
   out << "view_points = " << s.viewport.stats.points_drawn << "\n";
   out << "view_lod = " << s.viewport.stats.lod_level << "\n";
   out << "errors = " << s.errors.messages.size() << "\n";
+  out << "autosave_file = " << (s.autosave.file_written ? s.autosave.file.string() : std::string()) << "\n";
+  out << "autosave_orphans = " << s.autosave.orphans.size() << "\n";
+  out << "document = " << documentName(s) << "\n";
   out << "unsaved_prompt = " << (s.after_unsaved_prompt ? 1 : 0) << "\n";
   for (const WidgetRect& w : h.widget_rects) {
     out << "rect_" << w.name << " = " << w.x0 << " " << w.y0 << " " << w.x1 << " " << w.y1 << "\n";

@@ -129,13 +129,15 @@ Status readEntry(unzFile zip, MemoryFile& file, const unz_file_info64& info, uin
   return Ok{};
 }
 
-// Every entry of the zip, unpacked; at most max_bytes in all.
-Result<std::vector<Entry>> readEntries(std::span<const uint8_t> bytes, const std::string& name, uint64_t max_bytes) {
+}  // namespace
+
+Result<std::vector<ZipEntry>> readZip(std::span<const uint8_t> bytes, const std::string& name, const std::string& what,
+                                      uint64_t max_bytes) {
   MemoryFile file;
   file.in = bytes;
   zlib_filefunc64_def functions = memoryFunctions(file);
   unzFile zip = unzOpen2_64("3mf", &functions);
-  if (zip == nullptr) return makeError(ErrorCode::kParse, name + ": not a 3MF file: it is not a zip archive");
+  if (zip == nullptr) return makeError(ErrorCode::kParse, name + ": not a " + what + ": it is not a zip archive");
   std::vector<Entry> entries;
   uint64_t total = 0;
   Status status = Ok{};
@@ -151,7 +153,7 @@ Result<std::vector<Entry>> readEntries(std::span<const uint8_t> bytes, const std
     const uint64_t size = unpackedSize(info, {extra, std::min<size_t>(info.size_file_extra, sizeof extra)});
     if (size != UINT64_MAX && size > max_bytes - std::min(total, max_bytes)) {
       status = makeError(ErrorCode::kLimit,
-                         name + ": the 3MF package unpacks to more than " + std::to_string(max_bytes >> 20) + " MiB");
+                         name + ": the " + what + " unpacks to more than " + std::to_string(max_bytes >> 20) + " MiB");
       break;
     }
     total += size;
@@ -162,8 +164,6 @@ Result<std::vector<Entry>> readEntries(std::span<const uint8_t> bytes, const std
   if (!status.ok()) return status.error();
   return entries;
 }
-
-}  // namespace
 
 Result<std::vector<uint8_t>> writeZip(const std::vector<ZipEntry>& entries, const std::string& name, bool deflate) {
   std::vector<uint8_t> out;
@@ -273,7 +273,7 @@ const Entry* modelPart(const std::vector<Entry>& entries) {
 }  // namespace
 
 Result<ThreeMfPackage> read3mfPackage(std::span<const uint8_t> bytes, const std::string& name, uint64_t max_bytes) {
-  auto entries = readEntries(bytes, name, max_bytes);
+  auto entries = readZip(bytes, name, "3MF file", max_bytes);
   if (!entries) return entries.error();
   const Entry* model = modelPart(*entries);
   if (model == nullptr) {

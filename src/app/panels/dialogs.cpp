@@ -112,3 +112,37 @@ void drawUnsavedPrompt(AppState& state) {
 }
 
 }  // namespace vox::app
+
+namespace vox::app {
+
+// At start-up, when a window that is gone left unsaved work: recover it, discard it, or decide later (File > Recover
+// unsaved work stays there).
+void drawRecoveryOffer(AppState& state) {
+  AutosaveState& a = state.autosave;
+  if (a.orphans.empty() || a.offer_dismissed || !state.errors.messages.empty()) return;
+  if (!ImGui::IsPopupOpen("Recover unsaved work")) ImGui::OpenPopup("Recover unsaved work");
+  centreNextWindow();
+  if (!ImGui::BeginPopupModal("Recover unsaved work", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  const OrphanAutosave& o = a.orphans.front();
+  ImGui::Text("voxmod did not close properly. Unsaved work on %s was kept (%s).", o.document.c_str(), o.when.c_str());
+  if (a.orphans.size() > 1) ImGui::TextDisabled("(%zu more)", a.orphans.size() - 1);
+  ImGui::TextDisabled("Recover opens it as an unsaved document; Discard deletes it.");
+  ImGui::Spacing();
+  if (widget::Button("Recover", ImVec2(110.0f, 0.0f))) {
+    ImGui::CloseCurrentPopup();
+    dispatch(state, ActionId::kRecoverAutosave);
+  }
+  ImGui::SameLine();
+  if (widget::Button("Discard", ImVec2(110.0f, 0.0f))) {
+    ImGui::CloseCurrentPopup();
+    dispatch(state, ActionId::kDiscardAutosave);
+  }
+  ImGui::SameLine();
+  if (widget::Button("Later", ImVec2(110.0f, 0.0f)) || state.close_dialogs) {
+    ImGui::CloseCurrentPopup();
+    a.offer_dismissed = true;
+  }
+  ImGui::EndPopup();
+}
+
+}  // namespace vox::app

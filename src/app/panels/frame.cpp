@@ -94,6 +94,7 @@ void drawFrame(AppState& state) {
   drawVoxelizeDialog(state);
   drawFileBrowser(state);
   drawUnsavedPrompt(state);
+  drawRecoveryOffer(state);
   drawAboutDialog(state);
   drawControlsDialog(state);
   // Last: an error raised by another dialog this frame shows on top of it; the file browser shows its own errors.

@@ -43,6 +43,7 @@ void drawFileBrowser(AppState& state);
 bool fileBrowserOpen();  // the file browser's popup is open (it then draws the error dialog itself)
 void drawErrorDialog(AppState& state);
 void drawUnsavedPrompt(AppState& state);
+void drawRecoveryOffer(AppState& state);
 void drawAboutDialog(AppState& state);
 void drawControlsDialog(AppState& state);  // Help > Mouse and keyboard
 // Progress of the running load or voxelization, with Cancel.

@@ -1,0 +1,184 @@
+#include "app/autosave.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <ctime>
+#include <system_error>
+#include <thread>
+
+#include "app/document.h"
+#include "app/messages.h"
+#include "app/project.h"
+#include "vox/core/text.h"
+#include "vox/io/file_util.h"
+
+namespace vox::app {
+namespace {
+
+constexpr const char* kPrefix = "autosave-";
+constexpr double kDefaultIntervalS = 30.0;
+
+std::filesystem::path autosaveDirectory(bool scripted) {
+  if (const char* dir = std::getenv("VOXMOD_AUTOSAVE_DIR"); dir && *dir) return dir;
+  if (scripted) return {};  // a test or a screenshot run leaves the user's autosaves alone
+  if (const char* state = std::getenv("XDG_STATE_HOME"); state && *state) {
+    return std::filesystem::path(state) / "voxmod" / "autosave";
+  }
+  if (const char* home = std::getenv("HOME"); home && *home) {
+    return std::filesystem::path(home) / ".local" / "state" / "voxmod" / "autosave";
+  }
+  return {};
+}
+
+// The process that wrote autosave-PID.vxp, when it still runs (another window: not an orphan).
+bool writerAlive(const std::filesystem::path& file) {
+  const std::string stem = file.stem().string();
+  long pid = 0;
+  if (!parseNumber(std::string_view(stem).substr(std::string_view(kPrefix).size()), pid) || pid <= 0) return false;
+  if (pid == long(::getpid())) return false;
+  return ::kill(pid_t(pid), 0) == 0 || errno == EPERM;
+}
+
+std::string localTime(std::filesystem::file_time_type t) {
+  const std::time_t tt = std::chrono::system_clock::to_time_t(std::chrono::file_clock::to_sys(t));
+  std::tm tm{};
+  localtime_r(&tt, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M", &tm);
+  return buf;
+}
+
+// The autosaves in `dir` of windows that are gone, newest first.
+std::vector<OrphanAutosave> findOrphans(const std::filesystem::path& dir) {
+  std::vector<std::pair<std::filesystem::file_time_type, OrphanAutosave>> found;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+    const std::filesystem::path& p = e.path();
+    if (p.extension() != ".vxp" || p.stem().string().rfind(kPrefix, 0) != 0 || writerAlive(p)) continue;
+    const auto t = std::filesystem::last_write_time(p, ec);
+    if (ec) continue;
+    OrphanAutosave o;
+    o.path = p;
+    o.when = localTime(t);
+    // The document's name from the manifest, without reading the grids.
+    auto project = io::loadProject(p);
+    o.document = project && !project->source.empty() ? std::filesystem::path(project->source).filename().string()
+                                                     : std::string("an unnamed model");
+    found.emplace_back(t, std::move(o));
+  }
+  std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<OrphanAutosave> out;
+  for (auto& f : found) out.push_back(std::move(f.second));
+  return out;
+}
+
+AutosaveState::Key currentKey(const AppState& state) {
+  return {state.doc.model->version, state.doc.model->parts.get(), state.doc.undo_stack.size(), int(state.panel),
+          int(state.section.axis),  state.section.index,          state.parts_ui.selected};
+}
+
+void removeFile(AutosaveState& a) {
+  if (!a.file_written) return;
+  std::error_code ec;
+  std::filesystem::remove(a.file, ec);
+  a.file_written = false;
+  a.written = {};
+}
+
+void takeWrite(AppState& state) {
+  AutosaveState& a = state.autosave;
+  auto r = a.job.take();
+  if (!r) return;
+  if (r->ok()) {
+    a.written = r->value();
+    a.file_written = true;
+    a.last_error.clear();
+  } else if (a.last_error != r->error().message) {  // said once, in the status bar: autosave never interrupts
+    a.last_error = r->error().message;
+    state.status_message = "Autosave failed: " + a.last_error;
+    state.status_since = nowSeconds();
+  }
+}
+
+}  // namespace
+
+void initAutosave(AppState& state, bool scripted) {
+  AutosaveState& a = state.autosave;
+  a.dir = autosaveDirectory(scripted);
+  if (a.dir.empty()) return;
+  std::error_code ec;
+  std::filesystem::create_directories(a.dir, ec);
+  a.file = a.dir / (std::string(kPrefix) + std::to_string(::getpid()) + ".vxp");
+  a.interval_s = kDefaultIntervalS;
+  if (const char* s = std::getenv("VOXMOD_AUTOSAVE_SECONDS"); s && *s) {
+    double v = 0.0;
+    if (parseNumber(std::string_view(s), v) && v >= 0.0) a.interval_s = v;
+  }
+  a.last_write = nowSeconds();
+  a.orphans = findOrphans(a.dir);
+}
+
+void updateAutosave(AppState& state) {
+  AutosaveState& a = state.autosave;
+  if (a.dir.empty()) return;
+  takeWrite(state);
+  if (a.job.active()) return;
+  if (!state.doc.model || !hasUnsavedChanges(state)) {
+    removeFile(a);  // nothing would be lost: nothing to recover
+    return;
+  }
+  const AutosaveState::Key key = currentKey(state);
+  if (a.file_written && key == a.written) return;
+  if (nowSeconds() - a.last_write < a.interval_s) return;
+  a.last_write = nowSeconds();
+  a.job.start("Autosaving",
+              [project = projectOf(state), path = a.file, key](const ProgressFn&) -> Result<AutosaveState::Key> {
+                if (Status s = io::saveProject(project, path); !s) return s.error();
+                return key;
+              });
+}
+
+bool autosaveBusy(const AppState& state) { return state.autosave.job.active(); }
+
+void finishAutosave(AppState& state) {
+  AutosaveState& a = state.autosave;
+  if (a.dir.empty()) return;
+  while (a.job.active()) {
+    if (!a.job.take()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  a.file_written = true;  // whatever the last write did, the file goes
+  removeFile(a);
+}
+
+void recoverAutosave(AppState& state) {
+  AutosaveState& a = state.autosave;
+  if (a.orphans.empty()) return;
+  const OrphanAutosave o = a.orphans.front();
+  a.orphans.erase(a.orphans.begin());
+  startRecover(state, o.path);
+}
+
+void adoptRecovered(AppState& state, const std::filesystem::path& orphan) {
+  AutosaveState& a = state.autosave;
+  std::error_code ec;
+  if (a.dir.empty() || !state.doc.model) return;
+  std::filesystem::rename(orphan, a.file, ec);  // this window's now: a crash before its next write loses nothing
+  if (ec) return;
+  a.file_written = true;
+  a.written = currentKey(state);
+}
+
+void discardAutosave(AppState& state) {
+  AutosaveState& a = state.autosave;
+  if (a.orphans.empty()) return;
+  std::error_code ec;
+  std::filesystem::remove(a.orphans.front().path, ec);
+  a.orphans.erase(a.orphans.begin());
+}
+
+}  // namespace vox::app
