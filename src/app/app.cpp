@@ -201,10 +201,12 @@ void recoverFrame(AppState& state, const std::exception& e) {
                             : std::string("Drawing the window failed: ") + e.what());
 }
 
-// The document's update between frames (finished background work taken in): an exception there is shown, not fatal.
+// The document's update between frames (finished background work taken in, the autosave): an exception there is
+// shown, not fatal.
 void updateDocumentGuarded(AppState& state) {
   try {
     updateDocument(state);
+    updateAutosave(state);
   } catch (const std::bad_alloc&) {
     reportError(state, "Taking in finished work needed more memory than this machine can give");
   } catch (const std::exception& e) {
@@ -289,7 +291,6 @@ void runFrame(AppState& state, Harness* h, double& last, std::string& title) {
   const bool animate = waitForFrame(state, h);
   handleWindowEvents(state, h);
   updateDocumentGuarded(state);
-  updateAutosave(state);
   state.viewport.interacting = false;  // set again this frame by drags, a playing section or a script sweep
   if (h && (!modelBusy(state) || h->started)) stepScript(*h, state);
   if (state.quit_requested) return;
@@ -363,7 +364,7 @@ int runGui(int argc, char** argv) {
 
   AppState state;
   const std::string imgui_ini = loadUserSettings(state, options);
-  initAutosave(state, !options.script.empty());
+  initAutosave(state, !options.script.empty() || !options.screenshot.empty());
   int exit_code = 0;
   std::unique_ptr<Harness> harness = makeHarness(options, state, exit_code);
   if (exit_code != 0) return exit_code;

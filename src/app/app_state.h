@@ -186,6 +186,7 @@ struct FileBrowser {
     uintmax_t size = 0;
   };
   bool open_requested = false;
+  bool accepted = false;  // the file chosen went through (between frames): the browser closes
   BrowserPurpose purpose = BrowserPurpose::kOpen;
   std::filesystem::path directory;
   std::string file_name;  // typed or clicked

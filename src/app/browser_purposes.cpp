@@ -90,6 +90,7 @@ const char* browserTitle(BrowserPurpose purpose) {
 void openBrowser(AppState& state, BrowserPurpose purpose) {
   FileBrowser& b = state.browser;
   b.open_requested = true;
+  b.accepted = false;
   b.then = nullptr;  // a continuation belongs to the browsing that set it (saveThen), never to a later one
   b.purpose = purpose;
   b.error.clear();

@@ -7,8 +7,10 @@
 // once it has noticed the cancel flag (or at exit), so a slow analysis that has no progress callback never blocks
 // the window.
 #include <atomic>
+#include <exception>
 #include <functional>
 #include <memory>
+#include <new>
 #include <optional>
 #include <string>
 #include <thread>
@@ -39,12 +41,19 @@ class Job {
     label_ = std::move(label);
     state_ = std::make_shared<State>();
     auto state = state_;
-    thread_ = std::jthread([state, work = std::move(work)] {
+    thread_ = std::jthread([state, work = std::move(work), label = label_] {
       const ProgressFn progress = [state](double fraction) {
         state->progress.store(fraction, std::memory_order_relaxed);
         return !state->cancel.load(std::memory_order_relaxed);
       };
-      state->result.emplace(work(progress));
+      // An exception on the worker (memory it could not have, a fault) is the job's error: it never ends the process.
+      try {
+        state->result.emplace(work(progress));
+      } catch (const std::bad_alloc&) {
+        state->result.emplace(makeError(ErrorCode::kLimit, label + " needed more memory than this machine can give"));
+      } catch (const std::exception& e) {
+        state->result.emplace(makeError(ErrorCode::kInvalidArgument, label + " failed: " + e.what()));
+      }
       state->done.store(true, std::memory_order_release);
     });
   }

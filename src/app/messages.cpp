@@ -1,5 +1,6 @@
 #include "app/messages.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace vox::app {
@@ -11,6 +12,9 @@ void reportError(AppState& state, const std::string& message, const std::filesys
   }
   ++state.errors.reported;
   state.errors.last_reported = text;
+  // The same message already waiting (a failure that repeats every frame) is shown once.
+  if (std::find(state.errors.messages.begin(), state.errors.messages.end(), text) != state.errors.messages.end())
+    return;
   state.errors.messages.push_back(std::move(text));
 }
 

@@ -128,6 +128,10 @@ void markWidget(const std::string& name, const char* kind) {
   if (const WidgetRecorder& r = widgetRecorder()) r(name, kind, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
 }
 
+void recordAt(const std::string& name, const char* kind, ImVec2 min, ImVec2 max) {
+  if (const WidgetRecorder& r = widgetRecorder()) r(name, kind, min, max);
+}
+
 void setWidgetRecorder(WidgetRecorder recorder) { widgetRecorder() = std::move(recorder); }
 
 void actionCheckbox(AppState& state, ActionId id, const char* label) {

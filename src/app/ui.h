@@ -54,6 +54,8 @@ void drawScaleBar(ImVec2 at, float pixels_per_unit, const std::string& units, fl
 void markWidget(const std::string& name, const char* kind = "mark");
 using WidgetRecorder = std::function<void(const std::string& name, const char* kind, ImVec2 min, ImVec2 max)>;
 void setWidgetRecorder(WidgetRecorder recorder);
+// As markWidget, for a widget whose rectangle is given.
+void recordAt(const std::string& name, const char* kind, ImVec2 min, ImVec2 max);
 
 // The panels' and dialogs' widgets: ImGui's, under the same names and arguments, each recorded (markWidget) under its
 // label, so that a test presses the real buttons and types into the real fields (script.h: press, type, press-all).
@@ -117,8 +119,11 @@ bool Combo(const char* label, A&&... a) {
 // The combo's box is recorded whether or not its list is open (a press opens it; its rows are Selectables).
 template <class... A>
 bool BeginCombo(const char* label, A&&... a) {
+  // Its box is where the cursor stands, as wide as the next item: once open, the last item is the list's window.
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const ImVec2 size(ImGui::CalcItemWidth(), ImGui::GetFrameHeight());
   const bool open = ImGui::BeginCombo(label, std::forward<A>(a)...);
-  markWidget(label, "combo");
+  recordAt(label, "combo", at, ImVec2(at.x + size.x, at.y + size.y));
   return open;
 }
 template <class... A>

@@ -2,8 +2,11 @@
 // (docs/file-format.md, "Projects").
 #include "vox/io/project_file.h"
 
+#include <algorithm>
 #include <array>
+#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <type_traits>
 #include <utility>
 
@@ -73,10 +76,34 @@ json manifest(const ProjectFile& p) {
 
 // ---- Reading ----
 
+// The memory the grid of a .vxm file's bytes takes (docs/file-format.md: dims at offset 16); 0 when the header is
+// not there or out of range (decodeVxm then says why).
+uint64_t vxmGridBytes(const std::vector<uint8_t>& b) {
+  if (b.size() < 28) return 0;
+  int32_t d[3];
+  for (int i = 0; i < 3; ++i) {
+    uint32_t v = 0;
+    for (int k = 0; k < 4; ++k) v |= uint32_t(b[size_t(16 + 4 * i + k)]) << (8 * k);
+    if (v == 0 || v > uint32_t(VoxelGrid::kMaxDim)) return 0;
+    d[i] = int32_t(v);
+  }
+  return estimateGridBytes(Dims{d[0], d[1], d[2]});
+}
+
 struct Reader {
   const std::vector<ZipEntry>& entries;
   const std::string& name;
-  uint64_t memory_limit;
+  uint64_t memory_left;  // what the project's grids may still take, all together
+
+  // Takes `bytes` from what is left, or fails (kLimit) naming what needed them.
+  Status spend(uint64_t bytes, const std::string& what) {
+    if (bytes > memory_left) {
+      return makeError(ErrorCode::kLimit, name + ": " + what + " would need " + formatBytes(bytes) +
+                                              " of memory, more than the " + formatBytes(memory_left) + " left");
+    }
+    memory_left -= bytes;
+    return Ok{};
+  }
 
   Error bad(const std::string& what) const { return makeError(ErrorCode::kParse, name + ": " + what); }
 
@@ -87,50 +114,109 @@ struct Reader {
     return nullptr;
   }
 
-  Result<VoxelGrid> grid(const std::string& path) const {
+  Result<VoxelGrid> grid(const std::string& path) {
     const ZipEntry* e = entry(path);
     if (!e) return bad("the project names " + quoteBytes(path) + " but does not hold it");
-    auto g = decodeVxm(e->bytes, name + " (" + path + ")", memory_limit);
+    const std::string what = name + " (" + path + ")";
+    const uint64_t bytes = vxmGridBytes(e->bytes);
+    if (Status s = spend(bytes, path); !s) return s.error();
+    auto g = decodeVxm(e->bytes, what, memory_left + bytes);
     if (!g) return g.error();
     return std::move(g).value();
   }
 };
 
-// A value of the manifest of the type asked for, or an error naming the key.
-template <class T>
-Result<T> field(const Reader& r, const json& j, const char* key) {
+// The manifest's value under `key` (no copy), or an error naming the key.
+Result<const json*> member(const Reader& r, const json& j, const char* key) {
   const auto it = j.find(key);
   if (it == j.end()) return r.bad(std::string("the manifest has no '") + key + "'");
-  try {
-    return it->get<T>();
-  } catch (const json::exception&) {
-    return r.bad(std::string("the manifest's '") + key + "' is not " +
-                 (std::is_same_v<T, std::string> ? "text" : "a value of the right kind"));
+  return &*it;
+}
+
+// A value of the kind asked for: text, a flag, or a whole number within [lo, hi] (never a float cast to an integer).
+Result<std::string> text(const Reader& r, const json& j, const char* key) {
+  auto v = member(r, j, key);
+  if (!v) return v.error();
+  if (!(*v)->is_string()) return r.bad(std::string("the manifest's '") + key + "' is not text");
+  return (*v)->get<std::string>();
+}
+
+Result<bool> flag(const Reader& r, const json& j, const char* key) {
+  auto v = member(r, j, key);
+  if (!v) return v.error();
+  if (!(*v)->is_boolean()) return r.bad(std::string("the manifest's '") + key + "' is not true or false");
+  return (*v)->get<bool>();
+}
+
+Result<int64_t> wholeNumber(const Reader& r, const json& v, const std::string& what, int64_t lo, int64_t hi) {
+  if (!v.is_number_integer()) return r.bad("the manifest's " + what + " is not a whole number");
+  const int64_t n = v.is_number_unsigned() && v.get<uint64_t>() > uint64_t(INT64_MAX) ? INT64_MAX : v.get<int64_t>();
+  if (n < lo || n > hi) {
+    return r.bad("the manifest's " + what + " is " + std::to_string(n) + ", outside " + std::to_string(lo) + ".." +
+                 std::to_string(hi));
   }
+  return n;
+}
+
+Result<int64_t> integer(const Reader& r, const json& j, const char* key, int64_t lo, int64_t hi) {
+  auto v = member(r, j, key);
+  if (!v) return v.error();
+  return wholeNumber(r, **v, std::string("'") + key + "'", lo, hi);
+}
+
+Result<double> real(const Reader& r, const json& v, const std::string& what) {
+  if (!v.is_number()) return r.bad("the manifest's " + what + " is not a number");
+  const double d = v.get<double>();
+  if (!std::isfinite(d)) return r.bad("the manifest's " + what + " is not finite");
+  return d;
+}
+
+// Three whole numbers within +-VoxelGrid::kMaxDim (a lattice position or a move a grid can hold).
+Result<glm::ivec3> lattice3(const Reader& r, const json& j, const char* key) {
+  auto v = member(r, j, key);
+  if (!v) return v.error();
+  if (!(*v)->is_array() || (*v)->size() != 3)
+    return r.bad(std::string("the manifest's '") + key + "' is not 3 numbers");
+  glm::ivec3 out(0);
+  for (int i = 0; i < 3; ++i) {
+    auto n = wholeNumber(r, (**v)[size_t(i)], std::string("'") + key + "'", -VoxelGrid::kMaxDim, VoxelGrid::kMaxDim);
+    if (!n) return n.error();
+    out[i] = int32_t(*n);
+  }
+  return out;
 }
 
 template <class V>
-Result<V> tripleField(const Reader& r, const json& j, const char* key) {
-  auto a = field<std::array<typename V::value_type, 3>>(r, j, key);
-  if (!a) return a.error();
-  return V((*a)[0], (*a)[1], (*a)[2]);
+Result<V> real3(const Reader& r, const json& j, const char* key) {
+  auto v = member(r, j, key);
+  if (!v) return v.error();
+  if (!(*v)->is_array() || (*v)->size() != 3)
+    return r.bad(std::string("the manifest's '") + key + "' is not 3 numbers");
+  V out(0);
+  for (int i = 0; i < 3; ++i) {
+    auto d = real(r, (**v)[size_t(i)], std::string("'") + key + "'");
+    if (!d) return d.error();
+    out[i] = typename V::value_type(*d);
+  }
+  return out;
 }
 
-Result<Part> readPart(const Reader& r, const json& j, const Lattice& lattice) {
+Result<Part> readPart(Reader& r, const json& j, const Lattice& lattice) {
   Part p;
-  auto name = field<std::string>(r, j, "name");
+  if (!j.is_object()) return r.bad("a part in the manifest is not a JSON object");
+  auto name = text(r, j, "name");
   if (!name) return name.error();
-  auto colour = tripleField<glm::vec3>(r, j, "colour");
+  auto colour = real3<glm::vec3>(r, j, "colour");
   if (!colour) return colour.error();
-  auto visible = field<bool>(r, j, "visible");
+  auto visible = flag(r, j, "visible");
   if (!visible) return visible.error();
-  auto first = tripleField<glm::ivec3>(r, j, "first");
+  auto first = lattice3(r, j, "first");
   if (!first) return first.error();
-  auto translation = tripleField<glm::ivec3>(r, j, "translation");
+  auto translation = lattice3(r, j, "translation");
   if (!translation) return translation.error();
-  auto turns = tripleField<glm::ivec3>(r, j, "quarter_turns");
+  auto turns = lattice3(r, j, "quarter_turns");
   if (!turns) return turns.error();
-  auto voxels = field<std::string>(r, j, "voxels");
+  auto voxels = text(r, j, "voxels");
   if (!voxels) return voxels.error();
   auto grid = r.grid(*voxels);
   if (!grid) return grid.error();
@@ -147,23 +233,47 @@ Result<Part> readPart(const Reader& r, const json& j, const Lattice& lattice) {
   return p;
 }
 
-Result<Assembly> readParts(const Reader& r, const json& j) {
-  auto lattice_json = field<json>(r, j, "lattice");
+// The parts' placed boxes together, refused when they would not fit a grid or the memory left for it: the union is
+// made from them when the project is opened.
+Status checkExtent(Reader& r, const Assembly& parts) {
+  for (size_t i = 0; i < parts.size(); ++i) {
+    const Box3i b = parts.placedVoxels(i).box();
+    for (int a = 0; a < 3; ++a) {
+      if (int64_t(b.min[a]) < -2 * int64_t(VoxelGrid::kMaxDim) || int64_t(b.max[a]) > 2 * int64_t(VoxelGrid::kMaxDim)) {
+        return r.bad("part " + quoteBytes(parts.part(i).name) + " lies further out than a grid holds");
+      }
+    }
+  }
+  const glm::ivec3 n = parts.extent().size();
+  if (n.x > VoxelGrid::kMaxDim || n.y > VoxelGrid::kMaxDim || n.z > VoxelGrid::kMaxDim) {
+    return makeError(ErrorCode::kLimit, r.name + ": the parts span " + std::to_string(n.x) + " x " +
+                                            std::to_string(n.y) + " x " + std::to_string(n.z) +
+                                            " voxels, more than a grid holds");
+  }
+  return r.spend(estimateGridBytes(Dims{n.x, n.y, n.z}), "the union of the parts");
+}
+
+Result<Assembly> readParts(Reader& r, const json& j) {
+  if (!j.is_object()) return r.bad("the manifest's 'parts' is not a JSON object");
+  auto lattice_json = member(r, j, "lattice");
   if (!lattice_json) return lattice_json.error();
-  Lattice lattice;
-  auto origin = tripleField<glm::dvec3>(r, *lattice_json, "origin");
-  auto h = field<double>(r, *lattice_json, "voxel_size");
-  auto units = field<std::string>(r, *lattice_json, "units");
+  const json& lj = **lattice_json;
+  if (!lj.is_object()) return r.bad("the manifest's 'lattice' is not a JSON object");
+  auto origin = real3<glm::dvec3>(r, lj, "origin");
   if (!origin) return origin.error();
+  auto h_json = member(r, lj, "voxel_size");
+  if (!h_json) return h_json.error();
+  auto h = real(r, **h_json, "'voxel_size'");
   if (!h) return h.error();
+  auto units = text(r, lj, "units");
   if (!units) return units.error();
-  if (!(*h > 0.0) || !std::isfinite(*h)) return r.bad("the parts' voxel size is not a positive number");
-  lattice = Lattice{*origin, *h, *units};
-  auto list = field<json>(r, j, "list");
+  if (!(*h > 0.0)) return r.bad("the parts' voxel size is not a positive number");
+  const Lattice lattice{*origin, *h, *units};
+  auto list = member(r, j, "list");
   if (!list) return list.error();
-  if (!list->is_array() || list->empty()) return r.bad("the project's parts are not a list of parts");
+  if (!(*list)->is_array() || (*list)->empty()) return r.bad("the project's parts are not a list of parts");
   Assembly parts(lattice);
-  for (const json& pj : *list) {
+  for (const json& pj : **list) {
     auto p = readPart(r, pj, lattice);
     if (!p) return p.error();
     const size_t k = parts.addPart(std::move(p->voxels), p->name);
@@ -171,50 +281,66 @@ Result<Assembly> readParts(const Reader& r, const json& j) {
     parts.part(k).visible = p->visible;
     parts.setPlacement(k, p->placement);
   }
+  if (Status s = checkExtent(r, parts); !s) return s.error();
   return parts;
 }
 
 Status readView(const Reader& r, const json& j, ProjectFile& p) {
-  auto panel = field<std::string>(r, j, "panel");
-  auto axis = field<std::string>(r, j, "section_axis");
-  auto index = field<int32_t>(r, j, "section_index");
-  auto selected = field<std::vector<size_t>>(r, j, "selected_parts");
+  if (!j.is_object()) return r.bad("the manifest's 'view' is not a JSON object");
+  auto panel = text(r, j, "panel");
   if (!panel) return panel.error();
+  auto axis = text(r, j, "section_axis");
   if (!axis) return axis.error();
+  auto index = integer(r, j, "section_index", -1, VoxelGrid::kMaxDim);
   if (!index) return index.error();
+  auto selected = member(r, j, "selected_parts");
   if (!selected) return selected.error();
+  if (!(*selected)->is_array()) return r.bad("the manifest's 'selected_parts' is not a list");
   p.panel = *panel;
   p.section_axis = *axis;
-  p.section_index = *index;
+  p.section_index = int32_t(*index);
   const size_t n = p.parts ? p.parts->size() : 0;
-  for (size_t i : *selected) {
-    if (i >= 1 && i <= n) p.selected.push_back(i - 1);
+  for (const json& v : **selected) {
+    auto i = wholeNumber(r, v, "'selected_parts'", 1, int64_t(n));
+    if (!i) return i.error();
+    p.selected.push_back(size_t(*i - 1));
   }
   return Ok{};
 }
 
-Status readModel(const Reader& r, const json& j, ProjectFile& p) {
-  auto peeled = field<int32_t>(r, j, "peeled");
-  auto round_peels = field<std::string>(r, j, "round_peels");
+Result<VoxelGrid> gridNamed(Reader& r, const json& j, const char* key) {
+  auto path = text(r, j, key);
+  if (!path) return path.error();
+  return r.grid(*path);
+}
+
+Status readModel(Reader& r, const json& j, ProjectFile& p) {
+  if (!j.is_object()) return r.bad("the manifest's 'model' is not a JSON object");
+  auto peeled = integer(r, j, "peeled", 0, VoxelGrid::kMaxDim);
   if (!peeled) return peeled.error();
+  auto round_peels = text(r, j, "round_peels");
   if (!round_peels) return round_peels.error();
-  if (*peeled < 0) return r.bad("the model's peeled layers are negative");
-  p.peeled = *peeled;
+  p.peeled = int32_t(*peeled);
   p.round_peels = *round_peels;
+  const bool base_needed = !p.parts || p.peeled > 0 || !p.round_peels.empty();  // as encodeProject stores it
+  if (base_needed != j.contains("base")) {
+    return r.bad(base_needed ? "the project's model has no base grid"
+                             : "the project's model has a base grid besides "
+                               "its parts and nothing peeled");
+  }
   if (j.contains("base")) {
-    auto path = field<std::string>(r, j, "base");
-    if (!path) return path.error();
-    auto g = r.grid(*path);
+    auto g = gridNamed(r, j, "base");
     if (!g) return g.error();
     p.base = std::move(g).value();
-  } else if (!p.parts) {
-    return r.bad("the project holds neither a model nor parts");
+  }
+  if ((p.peeled > 0) != j.contains("shown")) {
+    return r.bad(p.peeled > 0 ? "the project's model is peeled but holds no grid as shown"
+                              : "the project's model holds a grid as shown but nothing is peeled");
   }
   if (j.contains("shown")) {
-    auto path = field<std::string>(r, j, "shown");
-    if (!path) return path.error();
-    auto g = r.grid(*path);
+    auto g = gridNamed(r, j, "shown");
     if (!g) return g.error();
+    if (g->dims() != p.base.dims()) return r.bad("the model as shown and its base differ in size");
     p.shown = std::move(g).value();
   } else {
     p.shown = p.base;
@@ -222,10 +348,10 @@ Status readModel(const Reader& r, const json& j, ProjectFile& p) {
   return Ok{};
 }
 
-Result<ProjectFile> readManifest(const Reader& r, const json& j) {
-  auto format = field<std::string>(r, j, "format");
+Result<ProjectFile> readManifest(Reader& r, const json& j) {
+  auto format = text(r, j, "format");
   if (!format || *format != kFormat) return r.bad("not a voxmod project (its manifest names no such format)");
-  auto version = field<int>(r, j, "version");
+  auto version = integer(r, j, "version", 1, INT32_MAX);
   if (!version) return version.error();
   if (*version > kVersion) {
     return makeError(ErrorCode::kUnsupported, r.name + ": a voxmod project of version " + std::to_string(*version) +
@@ -233,35 +359,38 @@ Result<ProjectFile> readManifest(const Reader& r, const json& j) {
                                                   " (a newer voxmod wrote it)");
   }
   ProjectFile p;
-  auto source = field<std::string>(r, j, "source");
-  auto origin = field<std::string>(r, j, "origin");
-  auto resolution = field<int64_t>(r, j, "resolution");
-  auto units = field<std::string>(r, j, "units");
-  auto model = field<json>(r, j, "model");
-  auto view = field<json>(r, j, "view");
+  auto source = text(r, j, "source");
   if (!source) return source.error();
+  auto origin = text(r, j, "origin");
   if (!origin) return origin.error();
+  auto resolution = integer(r, j, "resolution", 0, INT64_MAX);
   if (!resolution) return resolution.error();
+  auto units = text(r, j, "units");
   if (!units) return units.error();
+  auto model = member(r, j, "model");
   if (!model) return model.error();
+  auto view = member(r, j, "view");
   if (!view) return view.error();
   p.source = *source;
   p.origin = *origin;
   p.resolution = *resolution;
   p.units = *units;
-  if (j.contains("parts")) {
-    auto parts = readParts(r, j["parts"]);
+  if (const auto it = j.find("parts"); it != j.end()) {
+    auto parts = readParts(r, *it);
     if (!parts) return parts.error();
     p.parts = std::move(parts).value();
   }
-  if (Status s = readModel(r, *model, p); !s) return s.error();
-  if (Status s = readView(r, *view, p); !s) return s.error();
+  if (Status s = readModel(r, **model, p); !s) return s.error();
+  if (Status s = readView(r, **view, p); !s) return s.error();
   return p;
 }
 
 }  // namespace
 
 Result<std::vector<uint8_t>> encodeProject(const ProjectFile& p, const std::string& name) {
+  if ((storesBase(p) && p.base.empty()) || (storesShown(p) && p.shown.empty())) {
+    return makeError(ErrorCode::kInvalidArgument, name + ": the project has no model to store");
+  }
   std::vector<ZipEntry> entries;
   entries.push_back({"project.json", {}});
   const std::string text = manifest(p).dump(2) + "\n";
@@ -279,9 +408,10 @@ Result<std::vector<uint8_t>> encodeProject(const ProjectFile& p, const std::stri
 Result<ProjectFile> decodeProject(std::span<const uint8_t> bytes, const std::string& name, uint64_t memory_limit) {
   const uint64_t limit = memory_limit > 0 ? memory_limit : defaultMemoryLimitBytes();
   // The zip's entries are .vxm files: run lengths, far smaller than the grids they make (which decodeVxm checks).
-  auto entries = readZip(bytes, name, kWhat, limit);
+  // The entries' bytes are the file's own, stored: they are not held against the grids' memory.
+  auto entries = readZip(bytes, name, kWhat, std::max<uint64_t>(limit, uint64_t(bytes.size()) * 2));
   if (!entries) return entries.error();
-  const Reader r{*entries, name, limit};
+  Reader r{*entries, name, limit};
   const ZipEntry* m = r.entry("project.json");
   if (!m) return r.bad("not a voxmod project: the zip holds no project.json");
   json j;
@@ -307,5 +437,23 @@ Result<ProjectFile> loadProject(const std::filesystem::path& path, uint64_t memo
 }
 
 bool isProjectFile(const std::filesystem::path& path) { return lowerExtension(path) == ".vxp"; }
+
+}  // namespace vox::io
+
+namespace vox::io {
+
+std::string projectSource(const std::filesystem::path& path) {
+  auto bytes = readFileBytes(path);
+  if (!bytes) return {};
+  auto entries = readZip(*bytes, path.string(), kWhat, uint64_t(4) << 30);
+  if (!entries) return {};
+  for (const ZipEntry& e : *entries) {
+    if (e.name != "project.json") continue;
+    const json j = json::parse(e.bytes.begin(), e.bytes.end(), nullptr, false);
+    const auto it = j.is_object() ? j.find("source") : j.end();
+    return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
+  }
+  return {};
+}
 
 }  // namespace vox::io

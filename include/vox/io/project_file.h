@@ -22,8 +22,8 @@ struct ProjectFile {
   std::string origin;      // how the model came about, e.g. "voxelized at R=200 (nonzero)"
   int64_t resolution = 0;  // the resolution it was voxelized at (0: loaded)
   std::string units = "model";
-  // The model as voxelized or loaded, and as shown: `base` less its outer `peeled` skin layers and the round peels
-  // named in `round_peels`. With parts, `base` is the union of the parts.
+  // The model as voxelized or loaded (the round peels named in `round_peels` made it), and as shown: `base` less its
+  // outer `peeled` skin layers. With parts, `base` is the union of the parts.
   VoxelGrid base;
   VoxelGrid shown;
   int32_t peeled = 0;
@@ -41,14 +41,18 @@ struct ProjectFile {
 // Fails (kLimit) past the zip's 4 GiB.
 Result<std::vector<uint8_t>> encodeProject(const ProjectFile& project, const std::string& name);
 // Reads a .vxp file's bytes; `name` names it in messages. Fails (kParse, kCorrupt, kUnsupported) naming the file and
-// the problem for anything that is not a whole project of a version this build reads, and (kLimit) when its grids
-// would need more than `memory_limit_bytes` (0: the default limit). With parts and no stored `base`, `base` and
-// `shown` are left empty for the caller to make (the union of the parts).
+// the problem for anything that is not a whole project of a version this build reads (a key missing or of the wrong
+// kind, a number out of range, grids that do not fit together), and (kLimit) when its grids, with the union of its
+// parts, would need more than `memory_limit_bytes` all together (0: the default limit), before any is allocated.
+// With parts and no stored `base`, `base` and `shown` are left empty for the caller to make (the union of the parts).
 Result<ProjectFile> decodeProject(std::span<const uint8_t> bytes, const std::string& name,
                                   uint64_t memory_limit_bytes = 0);
 // Written atomically: the old file stays whole until the new one is complete.
 Status saveProject(const ProjectFile& project, const std::filesystem::path& path);
 Result<ProjectFile> loadProject(const std::filesystem::path& path, uint64_t memory_limit_bytes = 0);
 bool isProjectFile(const std::filesystem::path& path);  // by extension: .vxp
+// The file a project was opened from (its manifest's `source`), read without decoding its grids; empty when the
+// file is no readable project.
+std::string projectSource(const std::filesystem::path& path);
 
 }  // namespace vox::io

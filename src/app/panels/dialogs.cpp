@@ -120,7 +120,11 @@ namespace vox::app {
 void drawRecoveryOffer(AppState& state) {
   AutosaveState& a = state.autosave;
   if (a.orphans.empty() || a.offer_dismissed || !state.errors.messages.empty()) return;
-  if (!ImGui::IsPopupOpen("Recover unsaved work")) ImGui::OpenPopup("Recover unsaved work");
+  if (!ImGui::IsPopupOpen("Recover unsaved work")) {
+    // Opened over nothing: another dialog (voxelize, unsaved changes) is answered first.
+    if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel)) return;
+    ImGui::OpenPopup("Recover unsaved work");
+  }
   centreNextWindow();
   if (!ImGui::BeginPopupModal("Recover unsaved work", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
   const OrphanAutosave& o = a.orphans.front();
@@ -128,6 +132,8 @@ void drawRecoveryOffer(AppState& state) {
   if (a.orphans.size() > 1) ImGui::TextDisabled("(%zu more)", a.orphans.size() - 1);
   ImGui::TextDisabled("Recover opens it as an unsaved document; Discard deletes it.");
   ImGui::Spacing();
+  const bool busy = !actionEnabled(state, action(ActionId::kRecoverAutosave));  // a file still opening
+  ImGui::BeginDisabled(busy);
   if (widget::Button("Recover", ImVec2(110.0f, 0.0f))) {
     ImGui::CloseCurrentPopup();
     dispatch(state, ActionId::kRecoverAutosave);
@@ -137,6 +143,7 @@ void drawRecoveryOffer(AppState& state) {
     ImGui::CloseCurrentPopup();
     dispatch(state, ActionId::kDiscardAutosave);
   }
+  ImGui::EndDisabled();
   ImGui::SameLine();
   if (widget::Button("Later", ImVec2(110.0f, 0.0f)) || state.close_dialogs) {
     ImGui::CloseCurrentPopup();

@@ -27,7 +27,11 @@ void accept(AppState& state) {
     name += extensions.front();  // "part" -> "part.vxm"
   }
   const std::filesystem::path path = name.is_absolute() ? name : b.directory / name;
-  if (acceptBrowserPath(state, b.purpose, path)) ImGui::CloseCurrentPopup();
+  // Between frames, as every action: the browser closes on the next frame when it went through, and stays open with
+  // the error over it when it did not.
+  runBetweenFrames(state, browserTitle(b.purpose), [purpose = b.purpose, path](AppState& s) {
+    if (acceptBrowserPath(s, purpose, path) && !s.browser.open_requested) s.browser.accepted = true;
+  });
 }
 
 }  // namespace
@@ -47,6 +51,12 @@ void drawFileBrowser(AppState& state) {
   ImGui::SetNextWindowSize(ImVec2(std::min(760.0f, vp->Size.x - 40.0f), std::min(520.0f, vp->Size.y - 40.0f)),
                            ImGuiCond_Appearing);
   if (!ImGui::BeginPopupModal(kPopup, nullptr)) return;
+  if (b.accepted) {  // the file chosen last frame went through
+    b.accepted = false;
+    ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+    return;
+  }
   if (b.needs_listing || b.listed_directory != b.directory || b.listed_all_files != b.show_all_files) listDirectory(b);
 
   ImGui::TextUnformatted(browserTitle(b.purpose));

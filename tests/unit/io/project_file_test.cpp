@@ -161,5 +161,57 @@ TEST(ProjectFile, damagedProjectsAreRefusedNamingTheFileAndTheProblem) {
                 ErrorCode::kParse, "parts/001.vxm");
 }
 
+// Values a reader must not take on trust: each is refused before any grid is allocated from it.
+TEST(ProjectFile, absurdValuesAreRefusedBeforeAnythingIsAllocated) {
+  const auto replaced = [](const std::string& from, const std::string& to) {
+    return edited([&](auto& e) {
+      std::string m = manifestOf(e);
+      const size_t at = m.find(from);
+      ASSERT_NE(at, std::string::npos) << from;
+      m.replace(at, from.size(), to);
+      setManifest(e, m);
+    });
+  };
+  // A move of a billion voxels (the union would be a grid of a billion layers).
+  expectRefused(replaced("\"translation\": [\n          4,", "\"translation\": [\n          1000000000,"),
+                ErrorCode::kParse, "'translation' is 1000000000, outside");
+  // A coordinate as a float, or past 32 bits, never cast to an integer.
+  expectRefused(replaced("\"first\": [\n          3,", "\"first\": [\n          1e10,"), ErrorCode::kParse,
+                "'first' is not a whole number");
+  expectRefused(replaced("\"section_index\": 3", "\"section_index\": 4294967296"), ErrorCode::kParse,
+                "'section_index' is 4294967296, outside");
+  // Peeled without the grids a peel needs.
+  expectRefused(replaced("\"peeled\": 0", "\"peeled\": 2"), ErrorCode::kParse, "no base grid");
+  // A selected part that is not there.
+  expectRefused(replaced("\"selected_parts\": [\n      2\n    ]", "\"selected_parts\": [\n      9\n    ]"),
+                ErrorCode::kParse, "'selected_parts' is 9, outside 1..2");
+}
+
+// The memory limit holds for all the grids together: many parts naming one small file of a large grid.
+TEST(ProjectFile, theMemoryLimitIsForAllTheGridsTogether) {
+  ProjectFile p = assemblyProject();
+  auto bytes = encodeProject(p, "a.vxp");
+  ASSERT_TRUE(bytes.ok());
+  const uint64_t one = estimateGridBytes(p.parts->part(1).voxels.grid.dims());
+  // Enough for each grid alone and for the union, not for all of them at once.
+  ASSERT_TRUE(decodeProject(*bytes, "a.vxp", 64 * one).ok());
+  auto r = decodeProject(*bytes, "a.vxp", one + one / 2);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().code, ErrorCode::kLimit) << r.error().message;
+  EXPECT_NE(r.error().message.find("more than the"), std::string::npos) << r.error().message;
+}
+
+// A manifest nested very deep is refused without exhausting the stack.
+TEST(ProjectFile, aDeeplyNestedManifestIsRefused) {
+  std::string deep(200000, '[');
+  deep += std::string(200000, ']');
+  const std::vector<uint8_t> bytes = edited([&](auto& e) {
+    std::string m = manifestOf(e);
+    m.replace(m.find("\"round_peels\": \"\""), 17, "\"round_peels\": " + deep);
+    setManifest(e, m);
+  });
+  expectRefused(bytes, ErrorCode::kParse, "'round_peels' is not text");
+}
+
 }  // namespace
 }  // namespace vox::io
