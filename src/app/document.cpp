@@ -144,6 +144,8 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
     origin->load_s = loaded.load_s;
     VoxelGrid grid = std::move(*loaded.grid);
     if (grid.frame().source.empty()) grid.frame().source = loaded.path.filename().string();
+    if (grid.frame().units == "model")
+      grid.frame().units = rememberedFileUnits(state.settings, absoluteName(loaded.path));
     setModel(state, newBase(state, std::move(grid), std::move(origin), "open " + loaded.path.filename().string()),
              false);
     if (loaded.coarse_level == 1) doc.save_path = loaded.path;  // a coarse view never overwrites its file
@@ -152,8 +154,10 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
     state.panel_change_requested = true;
   } else {
     doc.mesh = std::move(loaded.mesh);
-    // A file that states its unit (3MF, glTF, every CAD file) sets the dialog's; for the others the user's stays.
-    if (doc.mesh->units != "model") state.voxelize.params.units = doc.mesh->units;
+    // A file that states its unit (3MF, glTF, every CAD file) sets the dialog's; one that names none (STL, OBJ, PLY,
+    // OFF) takes what the user last gave that file, else none: never the previous file's.
+    state.voxelize.params.units =
+        doc.mesh->units != "model" ? doc.mesh->units : rememberedFileUnits(state.settings, absoluteName(loaded.path));
     doc.saved_version = 0;
     state.panel = Panel::kModel;
     state.panel_change_requested = true;
@@ -325,7 +329,21 @@ std::string windowTitle(const AppState& state) {
 
 // ---- Model ----
 
+std::string absoluteName(const std::filesystem::path& path) {
+  std::error_code ec;
+  const std::filesystem::path a = std::filesystem::absolute(path, ec);
+  return (ec ? path : a).lexically_normal().string();
+}
+
+bool fileNamesNoUnits(const AppState& state) {
+  if (state.doc.mesh) return state.doc.mesh->file_units.empty();
+  return io::lowerExtension(state.doc.path) == ".binvox";
+}
+
 void setModelUnits(AppState& state, const std::string& units) {
+  if (state.doc.model && !state.doc.path.empty() && fileNamesNoUnits(state)) {
+    rememberFileUnits(state.settings, absoluteName(state.doc.path), units);
+  }
   if (!state.doc.model || state.model.frame().units == units) return;
   // A statement about what the numbers mean, for the whole document: every snapshot shares it.
   const auto set = [&](ModelSnapshot& s) {

@@ -39,7 +39,12 @@ std::string windowTitle(const AppState& state);
 
 // ---- Model ----
 // Says what the model's coordinates are in (mm, cm, m, in, or "model"): the whole document, every undo step too.
+// For a file that names no unit (STL, OBJ, PLY, OFF, .binvox) the choice is remembered for that file.
 void setModelUnits(AppState& state, const std::string& units);
+// Whether the document's file names no length unit, so that the user's choice is remembered for it.
+bool fileNamesNoUnits(const AppState& state);
+// `path` made absolute and normal: the name files are remembered by.
+std::string absoluteName(const std::filesystem::path& path);
 
 bool canUndo(const AppState& state);
 bool canRedo(const AppState& state);

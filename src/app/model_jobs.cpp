@@ -84,6 +84,9 @@ void startVoxelize(AppState& state, const VoxelizeParams& params) {
   }
   state.settings.resolution = params.resolution;
   state.settings.fill_mode = fillModeName(params.mode);
+  if (state.doc.mesh->file_units.empty()) {  // the units the user gave a file that names none, for next time
+    rememberFileUnits(state.settings, absoluteName(state.doc.mesh->path), params.units);
+  }
   state.voxelize_job_params = params;
   state.job_started = nowSeconds();
   auto mesh = state.doc.mesh;

@@ -348,6 +348,12 @@ void selectPart(AppState& state, size_t i, bool additive) {
   }
   state.viewport.dirty = true;
   if (state.parts_ui.scope_selected) applyPartsScope(state);
+  // An interference pair stays shown only while its two parts are the selection.
+  if (const Interference* inter = currentInterference(state); inter && state.parts_ui.pair >= 0) {
+    const InterferencePair& p = inter->pairs.at(size_t(state.parts_ui.pair));
+    const std::vector<size_t> pair{size_t(p.a), size_t(p.b)}, swapped{size_t(p.b), size_t(p.a)};
+    if (sel != pair && sel != swapped) showInterferencePair(state, -1);
+  }
 }
 
 void setPartsScope(AppState& state, bool selected) {

@@ -54,6 +54,8 @@ Settings loadSettings(const std::filesystem::path& file) {
       parseNumber(value, s.window_height);
     else if (key == "recent")
       recent.push_back(value);
+    else if (key == "file_units" && value.find(' ') != std::string::npos && s.file_units.size() < kMaxFileUnits)
+      s.file_units.emplace_back(trim(value.substr(value.find(' ') + 1)), value.substr(0, value.find(' ')));
     else if (key == "last_directory")
       s.last_directory = value;
     else if (key == "resolution")
@@ -93,6 +95,7 @@ std::string formatSettings(const Settings& s) {
   out << "round_points = " << (s.round_points ? 1 : 0) << "\n";
   out << "point_size_px = " << s.point_size_px << "\n";
   out << "lod = " << (s.lod ? 1 : 0) << "\n";
+  for (const auto& [path, units] : s.file_units) out << "file_units = " << units << " " << path << "\n";
   return out.str();
 }
 
@@ -101,6 +104,21 @@ Status saveSettings(const Settings& settings, const std::filesystem::path& file)
   std::filesystem::create_directories(file.parent_path(), ec);
   if (ec) return makeError(ErrorCode::kIo, file.parent_path().string() + ": " + ec.message());
   return io::writeFileAtomic(file, formatSettings(settings));
+}
+
+void rememberFileUnits(Settings& settings, const std::string& path, const std::string& units) {
+  auto& f = settings.file_units;
+  std::erase_if(f, [&](const auto& e) { return e.first == path; });
+  if (units == "model" || units.empty() || units.find_first_of(" \n") != std::string::npos) return;
+  f.insert(f.begin(), {path, units});
+  if (f.size() > kMaxFileUnits) f.resize(kMaxFileUnits);
+}
+
+std::string rememberedFileUnits(const Settings& settings, const std::string& path) {
+  for (const auto& [p, units] : settings.file_units) {
+    if (p == path) return units;
+  }
+  return "model";
 }
 
 void addRecentFile(Settings& settings, const std::string& path) {

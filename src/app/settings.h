@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "vox/core/result.h"
@@ -12,6 +13,7 @@
 namespace vox::app {
 
 inline constexpr size_t kMaxRecentFiles = 10;
+inline constexpr size_t kMaxFileUnits = 200;
 
 struct Settings {
   int window_width = 1280;
@@ -24,6 +26,9 @@ struct Settings {
   bool round_points = false;
   float point_size_px = 0.0f;  // fixed point diameter; 0: the closed-surface size (automatic)
   bool lod = true;             // coarser points while the view moves
+  // The units the user gave files that name none (STL, OBJ, PLY, OFF, .binvox): (absolute path, units), most recent
+  // first, at most kMaxFileUnits.
+  std::vector<std::pair<std::string, std::string>> file_units;
 };
 
 // Empty when neither XDG_CONFIG_HOME nor HOME is set (the window then remembers nothing).
@@ -35,6 +40,11 @@ Settings loadSettings(const std::filesystem::path& file);
 std::string formatSettings(const Settings& settings);
 // Creates the directory when needed; saves atomically.
 Status saveSettings(const Settings& settings, const std::filesystem::path& file);
+
+// Remembers the units the user gave a file that names none (absolute path); "model" forgets them.
+void rememberFileUnits(Settings& settings, const std::string& path, const std::string& units);
+// The units remembered for that file; "model" (none) when the user never gave it any.
+std::string rememberedFileUnits(const Settings& settings, const std::string& path);
 
 // Puts `path` first in the recent list, removing duplicates and keeping at most kMaxRecentFiles.
 void addRecentFile(Settings& settings, const std::string& path);

@@ -53,6 +53,20 @@ void peelTo(AppState& state, int32_t layers) {
   next.origin = cur.origin;
   next.round_peels = cur.round_peels;
   next.label = k == 0 ? "reset skin" : "peel to layer " + std::to_string(k);
+  // A state the document was in before (the same base and round peels, the same layers peeled) holds the same voxels:
+  // it takes that state's version, so what was derived from it is found again and, when it is what the file holds,
+  // the document is not unsaved (a peel and then Reset skin).
+  const auto same = [&](const ModelSnapshot& s) {
+    return s.base_id == cur.base_id && s.peeled == k && s.round_peels == cur.round_peels && s.parts == cur.parts;
+  };
+  for (const auto* stack : {&state.doc.undo_stack, &state.doc.redo_stack}) {
+    for (const ModelSnapshot& s : *stack) {
+      if (same(s)) {
+        next.version = s.version;
+        next.grid = s.grid;
+      }
+    }
+  }
   setModel(state, std::move(next), true);
 }
 

@@ -2,9 +2,13 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cinttypes>
+#include <cmath>
 #include <cstdio>
+
+#include "vox/core/units.h"
 
 namespace vox {
 
@@ -25,6 +29,16 @@ std::string formatBytes(uint64_t bytes) {
 
 std::string dimsText(const Dims& d) {
   return std::to_string(d.nx) + " x " + std::to_string(d.ny) + " x " + std::to_string(d.nz);
+}
+
+std::string formatCoordinate(double value, const std::string& units, double voxel_size) {
+  // One decimal finer than the voxel: 0.0127 mm voxels read to 0.001 mm, 3.8 mm voxels to 0.1 mm.
+  const int decimals = voxel_size > 0.0 ? std::clamp(int(std::ceil(-std::log10(voxel_size))) + 1, 0, 9) : 3;
+  const double unit = std::pow(10.0, -decimals);
+  const double shown = std::abs(value) < 0.5 * unit ? 0.0 : value;  // never "-0.000"
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f %s", decimals, shown, unitsLabel(units).c_str());
+  return buf;
 }
 
 uint64_t defaultMemoryLimitBytes() {

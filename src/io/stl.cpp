@@ -193,7 +193,10 @@ class AsciiParser {
   }
 
   Status fail(const std::string& what, std::string_view found) {
-    return failAt(what + ", found " + (found.empty() ? std::string("end of file") : quoteBytes(found)));
+    if (found.empty()) return failAt("the file ends early (truncated?): " + what + ", found end of file");
+    // The last token, cut short by the end of the file ("-1.291420e", "endlo"): the file was truncated.
+    if (p_ == end_) return failAt("the file ends early, in " + quoteBytes(found) + " (truncated?): " + what);
+    return failAt(what + ", found " + quoteBytes(found));
   }
   Status failAt(const std::string& what) {
     return makeError(ErrorCode::kParse, name_ + ":" + std::to_string(token_line_) + ": " + what);

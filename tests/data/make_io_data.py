@@ -66,6 +66,8 @@ write(BAD, "ascii_bad_token.stl", "solid t\n" + facet([("0", "0", "0"), ("1", "0
 write(BAD, "ascii_missing_endloop.stl", "solid t\n" + facet(V).replace("  endloop\n", "") + "endsolid t\n")
 write(BAD, "ascii_two_vertices.stl", "solid t\n" + facet(V[:2]) + "endsolid t\n")
 write(BAD, "ascii_truncated.stl", ("solid t\n" + facet(V) + facet(V))[:-40])
+# Cut in the middle of the last vertex's coordinate, as a download that stopped would leave it.
+write(BAD, "ascii_cut_in_number.stl", "solid t\n" + facet(V) + facet([("-1.291420e+00", "0", "0")] + V[1:]).split("e+00")[0] + "e")
 write(BAD, "ascii_no_triangles.stl", "solid empty\nendsolid empty\n")
 write(BAD, "ascii_garbage_after_endsolid.stl", "solid t\n" + facet(V) + "endsolid t\nfacet\n")
 

@@ -351,6 +351,22 @@ TEST(AppDocument, openPeelUndoRedoAndTheUnsavedState) {
   EXPECT_EQ(back->filledCount(), 10 * 8 * 6);
 }
 
+// Peel, then Reset skin: the model is what the file holds again, so nothing is unsaved (the Skin panel asked to save).
+TEST(AppDocument, aPeelThenResetSkinIsNotAnUnsavedChange) {
+  test::TempDir dir;
+  AppState state;
+  openBlockPeeledOnce(state, dir);
+  EXPECT_TRUE(hasUnsavedChanges(state));
+  peelTo(state, 2);
+  peelTo(state, 0);  // Reset skin
+  EXPECT_EQ(state.doc.model->peeled, 0);
+  EXPECT_EQ(state.doc.model->label, "reset skin");
+  EXPECT_FALSE(hasUnsavedChanges(state));
+  EXPECT_TRUE(canUndo(state));  // the reset is a step of its own
+  peelTo(state, 1);
+  EXPECT_TRUE(hasUnsavedChanges(state));
+}
+
 TEST(AppDocument, aBrokenFileIsAnErrorDialogAndTheDocumentStays) {
   test::TempDir dir;
   ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
@@ -551,6 +567,47 @@ TEST(AppDocument, theVoxelizeDialogProposesAResolutionThatFitsComfortably) {
   proposeResolution(state);
   EXPECT_EQ(state.voxelize.params.resolution, 300);
   EXPECT_TRUE(state.voxelize.proposal_note.empty());
+}
+
+// A file that names no unit never takes the previous file's (the bunny in metres opened labelled mm): it opens
+// without units, or with the units the user gave that very file before.
+TEST(AppDocument, unitsDoNotCarryOverToAFileThatNamesNone) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveStlBinary(test::unitCubeMesh(), dir / "a.stl").ok());
+  ASSERT_TRUE(io::saveStlBinary(test::unitCubeMesh(), dir / "b.stl").ok());
+  AppState state;
+  const auto open = [&](const char* name) {
+    startOpen(state, dir / name);
+    return pump(state, [&] { return state.doc.mesh != nullptr && state.doc.mesh->path == dir / name; });
+  };
+  ASSERT_TRUE(open("a.stl"));
+  EXPECT_EQ(state.voxelize.params.units, "model");
+  startVoxelize(state, VoxelizeParams{.resolution = 12, .units = "in"});
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  EXPECT_EQ(state.model.frame().units, "in");
+  ASSERT_TRUE(open("b.stl"));
+  EXPECT_EQ(state.voxelize.params.units, "model") << "b.stl names no unit; a.stl's are not b's";
+  startVoxelize(state, VoxelizeParams{.resolution = 12, .units = "model"});
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  setModelUnits(state, "m");  // the Mass panel's units, for b.stl
+  ASSERT_TRUE(open("a.stl"));
+  EXPECT_EQ(state.voxelize.params.units, "in");
+  ASSERT_TRUE(open("b.stl"));
+  EXPECT_EQ(state.voxelize.params.units, "m");
+  // Remembered across runs.
+  ASSERT_TRUE(saveSettings(state.settings, dir / "s.ini").ok());
+  const Settings again = loadSettings(dir / "s.ini");
+  EXPECT_EQ(rememberedFileUnits(again, absoluteName(dir / "a.stl")), "in");
+  EXPECT_EQ(rememberedFileUnits(again, absoluteName(dir / "b.stl")), "m");
+}
+
+// A section's position reads in fixed notation one decimal finer than the voxel ("y = 4.4e-05" was printed).
+TEST(AppFormat, coordinatesReadToAVoxelNeverInExponents) {
+  EXPECT_EQ(formatCoordinate(4.4e-05, "mm", 0.0127), "0.000 mm");
+  EXPECT_EQ(formatCoordinate(-4.4e-05, "mm", 0.0127), "0.000 mm");
+  EXPECT_EQ(formatCoordinate(78.105, "model", 3.81), "78.1 model units");
+  EXPECT_EQ(formatCoordinate(-12.34567, "in", 0.01), "-12.346 in");
+  EXPECT_EQ(formatCoordinate(1500.0, "mm", 20.0), "1500 mm");
 }
 
 TEST(AppDocument, modelUnitsAreSetForTheWholeDocument) {

@@ -142,6 +142,18 @@ TEST(AppParts, aMeshSplitsIntoItsBodiesOnTheModelsLattice) {
   EXPECT_LT(index, box.max[a]);
   EXPECT_FALSE(interferencePairText(state).empty());
 
+  // Selecting another part leaves the pair: its banner and red overlap go (they stayed, naming parts not selected).
+  ASSERT_TRUE(run(state, "select-part 3").ok());
+  EXPECT_EQ(state.parts_ui.pair, -1);
+  EXPECT_TRUE(interferencePairText(state).empty());
+  EXPECT_TRUE(state.parts_ui.pair_overlap.empty());
+  // Selecting the pair's two parts again by hand does not bring the pair back uninvited; a click on it does.
+  ASSERT_TRUE(run(state, "interference-pair 1").ok());
+  ASSERT_TRUE(run(state, "select-part add 2").ok());  // Ctrl+click takes part 2 out of the selection
+  EXPECT_EQ(state.parts_ui.pair, -1);
+  ASSERT_TRUE(run(state, "interference-pair 1").ok());
+  EXPECT_FALSE(interferencePairText(state).empty());
+
   // Undo goes back to the one model; the interference of the parts is not shown for it.
   undo(state);
   EXPECT_EQ(currentParts(state), nullptr);

@@ -15,6 +15,9 @@ namespace vox {
 std::string formatBytes(uint64_t bytes);
 // "1243 x 2110 x 4096".
 std::string dimsText(const Dims& dims);
+// A coordinate on a lattice of `voxel_size` with its units, in fixed notation one decimal finer than the voxel:
+// "0.000 mm", "78.1 model units" (never "4.4e-05 mm").
+std::string formatCoordinate(double value, const std::string& units, double voxel_size);
 // Physical memory of this machine in bytes (0 if unknown).
 uint64_t physicalMemoryBytes();
 // The memory a large piece of work may plan for unless told otherwise: 80% of physical memory (no limit if unknown).

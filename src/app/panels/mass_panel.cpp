@@ -94,7 +94,7 @@ void drawMassPanel(AppState& state) {
     tableRow("Filled voxels", groupDigits(m->filled));
     std::snprintf(buf, sizeof buf, "%.6g %s^3", m->volume, units.c_str());
     tableRow("Volume", buf);
-    std::snprintf(buf, sizeof buf, "+/- %.3g", m->volume_error_bound);
+    std::snprintf(buf, sizeof buf, "+/- %.3g %s^3", m->volume_error_bound, units.c_str());
     tableRow("Volume bound", buf);
     if (kg) {
       std::snprintf(buf, sizeof buf, "%.6g kg", m->volume * std::pow(metres, 3.0) * density);

@@ -90,8 +90,8 @@ void drawSectionPanel(AppState& state) {
   const Section* section = currentSection(state);
   const std::string units = state.model.frame().units;
   if (section) {
-    ImGui::Text("%s = %s  (index %d of 0..%d)", axisName(s.axis), formatLength(section->position, units).c_str(),
-                s.index, n - 1);
+    ImGui::Text("%s = %s  (index %d of 0..%d)", axisName(s.axis),
+                formatCoordinate(section->position, units, state.model.voxelSize()).c_str(), s.index, n - 1);
   }
 
   // Step and play: the buttons dispatch the same actions as the Section menu and PgUp / PgDn / Space.

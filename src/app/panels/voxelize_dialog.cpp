@@ -84,7 +84,7 @@ void voxelizeButtons(AppState& state, const VoxelizeParams& p, bool can_start) {
   if (!can_start) ImGui::BeginDisabled();
   if (widget::Button("Voxelize", ImVec2(120.0f, 0.0f)) ||
       (can_start && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false))) {
-    startVoxelize(state, p);
+    runBetweenFrames(state, "Voxelize", [p](AppState& s) { startVoxelize(s, p); });
     ImGui::CloseCurrentPopup();
   }
   if (!can_start) ImGui::EndDisabled();
