@@ -1,21 +1,23 @@
 cmake_minimum_required(VERSION 3.25)
 # Fails the build when a module includes a header it may not: another module's header that is not one of its
-# declared dependencies, or GL / EGL / GLFW / ImGui outside render, app and cli. Run with -DROOT=<source dir>.
+# declared dependencies, or GL / EGL / GLFW / ImGui outside render, app and cli. The workflow layer (between the
+# modules and the two front ends, app and cli) includes core, io, voxelize and analysis. Run with -DROOT=<source dir>.
 # The table mirrors src/CMakeLists.txt; see docs/architecture.md.
 set(allowed_core "core")
 set(allowed_io "core;io")
 set(allowed_voxelize "core;voxelize")
 set(allowed_analysis "core;analysis")
 set(allowed_render "core;render")
-set(allowed_app "core;io;voxelize;analysis;render;app")
-set(allowed_cli "core;io;voxelize;analysis;render;cli")
-set(gl_free "core;io;voxelize;analysis")
+set(allowed_workflow "core;io;voxelize;analysis;workflow")
+set(allowed_app "core;io;voxelize;analysis;render;workflow;app")
+set(allowed_cli "core;io;voxelize;analysis;render;workflow;cli")
+set(gl_free "core;io;voxelize;analysis;workflow")
 set(gl_pattern "#include[ \t]*[<\"](GL/|GLES|EGL/|GLFW/|imgui|backends/imgui|epoxy/)")
 set(imgui_pattern "#include[ \t]*[<\"](imgui|backends/imgui)")
 set(mpi_pattern "#include[ \t]*[<\"]mpi")  # MPI (voxmod batch) only in cli
 
 set(errors "")
-foreach(module core io voxelize analysis render app cli)
+foreach(module core io voxelize analysis render workflow app cli)
   file(GLOB_RECURSE files ${ROOT}/src/${module}/*.cpp ${ROOT}/src/${module}/*.h ${ROOT}/include/vox/${module}/*.h)
   foreach(f IN LISTS files)
     file(STRINGS ${f} lines REGEX "^[ \t]*#include")

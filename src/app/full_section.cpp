@@ -5,6 +5,7 @@
 
 #include "vox/core/text.h"
 #include "vox/io/vxm_stream.h"
+#include "vox/workflow/streamed_analyses.h"
 
 namespace vox::app {
 
@@ -24,19 +25,9 @@ void startFullSection(AppState& state) {
       "Reading the section from " + path.filename().string(), [path, params](const ProgressFn& progress) {
         auto header = io::readVxmHeader(path);
         if (!header) return Result<Section>(header.error());
-        auto acc = SectionAccumulator::start(header->dims, header->frame, params);
-        if (!acc) return Result<Section>(acc.error());
         const int32_t layers =
             io::layersWithin(header->dims, std::min<uint64_t>(defaultMemoryLimitBytes() / 8, uint64_t(512) << 20));
-        const Status read = io::readVxmInWindows(path, layers, 0, [&](const io::VxmWindow& w) {
-          acc->add(w.grid, w.core_begin - w.z_offset, w.core_end - w.z_offset, w.z_offset);
-          if (!progress(double(w.core_end) / double(header->dims.nz))) {
-            return Status(makeError(ErrorCode::kCancelled, "cancelled"));
-          }
-          return Status(Ok{});
-        });
-        if (!read) return Result<Section>(read.error());
-        return Result<Section>(acc->result());
+        return workflow::streamedSection(path, *header, layers, params, progress);
       });
 }
 

@@ -7,6 +7,7 @@
 #include "app/document.h"
 #include "app/ui.h"  // formatLength
 #include "vox/analysis/distance.h"
+#include "vox/workflow/thickness_run.h"
 #include "vox/core/text.h"
 
 namespace vox::app {
@@ -45,25 +46,21 @@ void requestThickness(AppState& state) {
   const uint64_t id = takeId(state);
   state.thickness.request(key, "Computing thickness", [grid, id](const ProgressFn& progress) {
     using R = Result<std::shared_ptr<const ThicknessResult>>;
-    const double t0 = nowSeconds();
-    // The bar's share of each step as their times go (igea at R = 512: 0.4 s, 1 s and 2.5 s; rocker_arm: 0.05 s,
+    // The bar's share of each stage as their times go (igea at R = 512: 0.4 s, 1 s and 2.5 s; rocker_arm: 0.05 s,
     // 0.26 s, 0.5 s): distance 0..10%, hot spots 10..35%, thickness 35..100%.
-    const auto part = [&progress](double from, double to) {
-      return ProgressFn([&progress, from, to](double f) { return !progress || progress(from + (to - from) * f); });
+    const workflow::StageProgress bar = [&progress](workflow::ThicknessStage stage, double f) {
+      const double from[] = {0.0, 0.1, 0.35}, to[] = {0.1, 0.35, 1.0};
+      const int i = int(stage);
+      return !progress || progress(from[i] + (to[i] - from[i]) * f);
     };
-    // dense: hot spots and local thickness step through the box by strides
-    auto distance = computeDistance(grid, part(0.0, 0.1), DistanceLayout::kDense);
-    if (!distance) return R(distance.error());
-    auto hot = findHotSpots(*distance, {}, part(0.1, 0.35));
-    if (!hot) return R(hot.error());
-    auto thickness = computeThickness(std::move(distance).value(), {}, part(0.35, 1.0));
-    if (!thickness) return R(thickness.error());
+    auto run = workflow::runThickness(grid, {}, bar);
+    if (!run) return R(run.error());
     auto out = std::make_shared<ThicknessResult>();
     out->id = id;
     out->grid = grid;
-    out->thickness = std::move(thickness).value();
-    out->hot_spots = std::move(hot).value();
-    out->seconds = nowSeconds() - t0;
+    out->thickness = std::move(run->thickness);
+    out->hot_spots = std::move(run->hot_spots);
+    out->seconds = run->distance_s + run->hot_spots_s + run->thickness_s;
     return R(std::shared_ptr<const ThicknessResult>(std::move(out)));
   });
 }

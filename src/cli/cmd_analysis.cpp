@@ -15,6 +15,7 @@
 #include "cli/commands.h"
 #include "cli/model_input.h"
 #include "cli/stream_readers.h"
+#include "vox/workflow/streamed_analyses.h"
 #include "cli/write_grid.h"
 #include "vox/analysis/analysis.h"
 #include "vox/analysis/distance.h"
@@ -67,7 +68,7 @@ int runSection(const SectionOptions& o) {
   Result<Section> section = Error{};
   if (auto h = streamedVxm(o.c.file, o.c.mesh, out)) {
     grid = VoxelGrid(h->dims, h->frame);
-    section = streamedSection(o.c.file, *h, o.c.mesh, o.params);
+    section = workflow::streamedSection(o.c.file, *h, windowLayers(h->dims, o.c.mesh), o.params);
   } else {
     auto model = loadModel(o.c.file, o.c.mesh, out);
     if (!model) return out.fail(model.error());
@@ -220,7 +221,7 @@ int runXray(const XrayOptions& o) {
   Result<XrayResult> x = Error{};
   if (auto h = streamedVxm(o.c.file, o.c.mesh, out)) {
     grid = VoxelGrid(h->dims, h->frame);
-    x = streamedXray(o.c.file, *h, o.c.mesh, o.params);
+    x = workflow::streamedXray(o.c.file, *h, windowLayers(h->dims, o.c.mesh), o.params);
   } else {
     auto model = loadModel(o.c.file, o.c.mesh, out);
     if (!model) return out.fail(model.error());
@@ -293,7 +294,7 @@ int runMass(const MassOptions& o) {
   if (auto h = streamedVxm(o.c.file, o.c.mesh, out)) {
     frame = h->frame;
     if (density > 0 && metresPerUnit(frame.units) == 0) return massNeedsUnits(o.c.file, out);
-    auto r = streamedMass(o.c.file, *h, o.c.mesh);
+    auto r = workflow::streamedMass(o.c.file, *h, windowLayers(h->dims, o.c.mesh));
     if (!r) return out.fail(r.error());
     m = *r;
   } else {

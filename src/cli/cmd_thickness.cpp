@@ -16,6 +16,7 @@
 #include "vox/io/file_util.h"
 #include "vox/io/image_io.h"
 #include "vox/io/volume_export.h"
+#include "vox/workflow/thickness_run.h"
 
 namespace vox::cli {
 namespace {
@@ -100,21 +101,23 @@ int runThickness(const ThicknessOptions& o) {
   if (!model) return out.fail(model.error());
   const VoxelGrid& grid = model->grid;
   const std::string units = grid.frame().units;
-  const double t0 = nowSeconds();
-  // dense: hot spots and local thickness step through the box by strides
-  auto distance = computeDistance(grid, terminalProgress("distance"), DistanceLayout::kDense);
-  if (!distance) return out.fail(distance.error());
-  const double t1 = nowSeconds();
-  auto spots = findHotSpots(*distance);
-  if (!spots) return out.fail(spots.error());
-  const double t_spots = nowSeconds();
-  const double distance_max = distance->maxModel();
+  // Terminal lines for the distance and the thickness; the hot spots, quick, say nothing.
+  const ProgressFn distance_line = terminalProgress("distance"), thickness_line = terminalProgress("thickness");
+  const workflow::StageProgress progress = [&](workflow::ThicknessStage stage, double f) {
+    if (stage == workflow::ThicknessStage::kDistance) return !distance_line || distance_line(f);
+    if (stage == workflow::ThicknessStage::kThickness) return !thickness_line || thickness_line(f);
+    return true;
+  };
   // local thickness paints into the field itself unless --distance still needs it
-  auto thickness = o.distance_out.empty()
-                       ? computeThickness(std::move(distance).value(), ThicknessParams{}, terminalProgress("thickness"))
-                       : computeThickness(*distance, ThicknessParams{}, terminalProgress("thickness"));
-  if (!thickness) return out.fail(thickness.error());
-  const double t2 = nowSeconds();
+  workflow::ThicknessRunOptions run_options;
+  run_options.keep_distance = !o.distance_out.empty();
+  auto run =
+      workflow::runThickness(grid, run_options, distance_line || thickness_line ? progress : workflow::StageProgress());
+  if (!run) return out.fail(run.error());
+  const Thickness* thickness = &run->thickness;
+  const std::vector<HotSpot>* spots = &run->hot_spots;
+  const std::optional<DistanceField>& distance = run->distance;
+  const double distance_max = run->distance_max;
 
   const ThicknessStats& s = thickness->stats;
   auto& d = out.data();
@@ -168,8 +171,8 @@ int runThickness(const ThicknessOptions& o) {
     for (const io::PendingFile& f : files) wrote += (wrote.empty() ? "" : ", ") + f.path.string();
     out.say("wrote " + wrote);
   }
-  d["distance_s"] = t1 - t0;
-  d["thickness_s"] = t2 - t_spots;
+  d["distance_s"] = run->distance_s;
+  d["thickness_s"] = run->thickness_s;
   return out.finish();
 }
 

@@ -1,6 +1,5 @@
-// The streamed readers of cli/stream_readers.h: each window of Z layers goes to the analysis's accumulator (mass,
-// X-ray) or its rows are placed in the full-size image (section, X-ray along X and Y), so the results are those
-// of the in-memory path, bit for bit.
+// `voxmod info` on a .vxm file too large for memory, read in windows of Z layers (cli/stream_readers.h); the
+// section, X-ray and mass over windows are the workflow's (vox/workflow/streamed_analyses.h).
 #include "cli/stream_readers.h"
 
 #include <algorithm>
@@ -74,39 +73,6 @@ int streamedInfo(const std::string& file, const io::VxmHeaderInfo& h, const Mesh
   out.say("  surface     " + std::to_string(surface) + " voxels");
   out.say("  memory      " + std::to_string(window_bytes >> 10) + " KiB (read in windows of Z layers)");
   return out.finish();
-}
-
-Result<Section> streamedSection(const std::string& file, const io::VxmHeaderInfo& h, const MeshOptions& options,
-                                const SectionParams& params) {
-  auto acc = SectionAccumulator::start(h.dims, h.frame, params);
-  if (!acc) return acc.error();
-  const Status read = io::readVxmInWindows(file, windowLayers(h.dims, options), 0, [&](const io::VxmWindow& w) {
-    acc->add(w.grid, w.core_begin - w.z_offset, w.core_end - w.z_offset, w.z_offset);
-    return Status(Ok{});
-  });
-  if (!read) return read.error();
-  return acc->result();
-}
-
-Result<XrayResult> streamedXray(const std::string& file, const io::VxmHeaderInfo& h, const MeshOptions& options,
-                                const XrayParams& params) {
-  XrayAccumulator acc(h.dims, h.frame, params);
-  const Status read = io::readVxmInWindows(file, windowLayers(h.dims, options), 1, [&](const io::VxmWindow& w) {
-    acc.add(w.grid, w.core_begin - w.z_offset, w.core_end - w.z_offset, w.z_offset);
-    return Status(Ok{});
-  });
-  if (!read) return read.error();
-  return acc.result();
-}
-
-Result<MassProperties> streamedMass(const std::string& file, const io::VxmHeaderInfo& h, const MeshOptions& options) {
-  MassAccumulator acc;
-  const Status read = io::readVxmInWindows(file, windowLayers(h.dims, options), 1, [&](const io::VxmWindow& w) {
-    acc.add(w.grid, w.core_begin - w.z_offset, w.core_end - w.z_offset, w.z_offset);
-    return Status(Ok{});
-  });
-  if (!read) return read.error();
-  return acc.result(h.frame);
 }
 
 }  // namespace vox::cli

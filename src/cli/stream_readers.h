@@ -1,5 +1,5 @@
 #pragma once
-// info, section, xray, mass and convert to .binvox on a .vxm file whose grid does not fit under the memory limit
+// info and convert to .binvox on a .vxm file whose grid does not fit under the memory limit
 // (--memory-limit, default 80% of physical memory): the file is read in windows of Z layers (io::readVxmInWindows),
 // never whole, and each subcommand gets the result its in-memory path gives (docs/conventions.md, "Command line").
 #include <optional>
@@ -23,12 +23,6 @@ int32_t windowLayers(const Dims& dims, const MeshOptions& options);
 // voxmod info on such a file: the keys runInfo gives for a voxel file (memory_bytes: the largest window), and
 // streamed: true.
 int streamedInfo(const std::string& file, const io::VxmHeaderInfo& h, const MeshOptions& options, Output& out);
-
-// computeSection, computeXray and computeMassProperties over the windows.
-Result<Section> streamedSection(const std::string& file, const io::VxmHeaderInfo& h, const MeshOptions& options,
-                                const SectionParams& params);
-Result<XrayResult> streamedXray(const std::string& file, const io::VxmHeaderInfo& h, const MeshOptions& options,
-                                const XrayParams& params);
-Result<MassProperties> streamedMass(const std::string& file, const io::VxmHeaderInfo& h, const MeshOptions& options);
+// Section, X-ray and mass over the windows: vox/workflow/streamed_analyses.h, with windowLayers.
 
 }  // namespace vox::cli

@@ -1,0 +1,39 @@
+#include "vox/workflow/thickness_run.h"
+
+#include <utility>
+
+#include "vox/core/text.h"
+
+namespace vox::workflow {
+
+Result<ThicknessRun> runThickness(const VoxelGrid& grid, const ThicknessRunOptions& options,
+                                  const StageProgress& progress) {
+  const auto stage = [&progress](ThicknessStage s) {
+    if (!progress) return ProgressFn();
+    return ProgressFn([&progress, s](double f) { return progress(s, f); });
+  };
+  ThicknessRun run;
+  const double t0 = nowSeconds();
+  // dense: hot spots and local thickness step through the box by strides
+  auto distance = computeDistance(grid, stage(ThicknessStage::kDistance), DistanceLayout::kDense);
+  if (!distance) return distance.error();
+  const double t1 = nowSeconds();
+  auto hot = findHotSpots(*distance, options.hot_spots, stage(ThicknessStage::kHotSpots));
+  if (!hot) return hot.error();
+  const double t2 = nowSeconds();
+  run.distance_max = distance->maxModel();
+  auto thickness =
+      options.keep_distance
+          ? computeThickness(*distance, options.thickness, stage(ThicknessStage::kThickness))
+          : computeThickness(std::move(distance).value(), options.thickness, stage(ThicknessStage::kThickness));
+  if (!thickness) return thickness.error();
+  run.thickness = std::move(thickness).value();
+  run.hot_spots = std::move(hot).value();
+  if (options.keep_distance) run.distance = std::move(distance).value();
+  run.distance_s = t1 - t0;
+  run.hot_spots_s = t2 - t1;
+  run.thickness_s = nowSeconds() - t2;
+  return run;
+}
+
+}  // namespace vox::workflow
