@@ -1,7 +1,7 @@
 #pragma once
-// The window's panels and dialogs, each a function of the AppState (docs/architecture.md, "Modules"). Widgets edit
-// params structs in the state and dispatch actions (actions.h) or call operations (operations.h); no panel loops over
-// voxels.
+// The window's panels and dialogs, each a function of the AppState (docs/architecture.md, "The window (app)"). Widgets
+// edit params structs in the state and dispatch actions (actions.h) or call operations (operations.h); no panel loops
+// over voxels.
 #include <string>
 #include <vector>
 
