@@ -44,6 +44,12 @@ Status acceptPath(AppState& s, BrowserPurpose purpose, const ActionArgs& a) {
 // ---- Conditions ----
 bool hasModel(const AppState& s) { return s.doc.model.has_value() && !modelBusy(s); }
 bool hasOrphanAutosave(const AppState& s) { return !s.autosave.orphans.empty() && !modelBusy(s); }
+bool skinLayersComputing(const AppState& s) { return s.doc.model && s.depth.computing(s.doc.model->base_id); }
+bool skinLayersCancelled(const AppState& s) { return s.doc.model && s.skin.cancelled_base == s.doc.model->base_id; }
+bool thicknessComputing(const AppState& s) { return s.thickness.computing(s.model_version); }
+bool thicknessCancelled(const AppState& s) {
+  return s.model_version != 0 && s.thickness_ui.cancelled_version == s.model_version;
+}
 bool hasMesh(const AppState& s) { return s.doc.mesh != nullptr && !s.load_job.active(); }
 bool hasSection(const AppState& s) { return !s.model.empty(); }
 // An X-ray export needs the X-ray computed (the X-ray panel computes it); until then the menu item is off.
@@ -60,7 +66,7 @@ bool hasDisputed(const AppState& s) {
 
 bool canCancel(const AppState& s) {
   return modelBusy(s) || s.thickness.computing(s.model_version) || volumeExportRunning(s) || s.parts_job.active() ||
-         s.interference_job.active() || s.clearance_job.active();
+         s.interference_job.active() || s.clearance_job.active() || skinLayersComputing(s);
 }
 bool hasThickness(const AppState& s) { return currentThickness(s) != nullptr; }
 // A depth export needs the skin layers computed (the Skin panel computes them); until then the menu item is off.
@@ -148,6 +154,7 @@ Status voxelizeAt(AppState& s, const ActionArgs& a) {  // R [MODE], as the dialo
 void cancelAll(AppState& s) {
   cancelJobs(s);
   cancelThickness(s);
+  cancelSkinLayers(s);
   cancelVolumeExport(s);
   s.parts_job.cancel();
   cancelInterference(s);

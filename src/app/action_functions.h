@@ -7,7 +7,11 @@ namespace vox::app::actions {
 
 // ---- Conditions ----
 bool hasModel(const AppState& s);
-bool hasOrphanAutosave(const AppState& s);  // a window that is gone left unsaved work (autosave.h)
+bool hasOrphanAutosave(const AppState& s);    // a window that is gone left unsaved work (autosave.h)
+bool skinLayersComputing(const AppState& s);  // the model's skin layers are being computed
+bool skinLayersCancelled(const AppState& s);  // the user cancelled them (Compute the skin layers asks again)
+bool thicknessComputing(const AppState& s);
+bool thicknessCancelled(const AppState& s);
 bool hasMesh(const AppState& s);
 bool hasSection(const AppState& s);
 bool hasXray(const AppState& s);

@@ -82,6 +82,9 @@ const Action kActions[] = {
   {ActionId::kThinRegion,     "thin-region",     nullptr,   "Show a thin-wall region",            kNone,                       1, 1,  nullptr,       thinRegionAt,      hasThickness, nullptr},
   {ActionId::kHotSpot,        "hot-spot",        nullptr,   "Show a hot spot",                    kNone,                       1, 1,  nullptr,       hotSpotAt,         hasThickness, nullptr},
 
+  {ActionId::kComputeThickness, "compute-thickness", nullptr, "Compute thickness",              kNone,                       0, 0,  retryThickness, nullptr,          thicknessCancelled, nullptr},
+  {ActionId::kCancelThickness, "cancel-thickness", nullptr,  "Cancel thickness",                 kNone,                       0, 0,  cancelThickness, nullptr,         thicknessComputing, nullptr},
+
   {ActionId::kSectionPrev,    "section-prev",    "Section", "Previous section",                   {GLFW_KEY_PAGE_DOWN, 0},     0, 0,  sectionPrev,   nullptr,           hasSection,  nullptr},
   {ActionId::kSectionNext,    "section-next",    "Section", "Next section",                       {GLFW_KEY_PAGE_UP, 0},       0, 0,  sectionNext,   nullptr,           hasSection,  nullptr},
   {ActionId::kSectionPlay,    "section-play",    "Section", "Play / pause sections",              {GLFW_KEY_SPACE, 0},         0, 0,  sectionPlay,   nullptr,           hasSection,  isPlaying},
@@ -92,6 +95,8 @@ const Action kActions[] = {
   {ActionId::kPeelBack,       "peel-back",       "Skin",    "Back one layer",                     {GLFW_KEY_P, kShift},        0, 0,  peelBack,      nullptr,           canPeelBack, nullptr},
   {ActionId::kPeelCore,       "peel-core",       "Skin",    "Peel to the core",                   {GLFW_KEY_C, 0},             0, 0,  peelCore,      nullptr,           canPeel,     nullptr},
   {ActionId::kPeelReset,      "peel-reset",      "Skin",    "Reset skin",                         kNone,                       0, 0,  peelReset,     nullptr,           canPeelBack, nullptr},
+  {ActionId::kSkinLayers,     "skin-layers",     nullptr,   "Compute the skin layers",            kNone,                       0, 0,  computeSkinLayers, nullptr,       skinLayersCancelled, nullptr},
+  {ActionId::kCancelSkinLayers, "cancel-skin-layers", nullptr, "Cancel the skin layers",          kNone,                       0, 0,  cancelSkinLayers, nullptr,        skinLayersComputing, nullptr},
   {ActionId::kPeelDistance,   "peel-distance",   "Skin",    "Peel by distance (round)",           kNone,                       1, 1,  peelDistanceN, peelDistanceAt,    hasModel,    nullptr},
 
   {ActionId::kXray,           "xray",            nullptr,   "X-ray along an axis",                kNone,                       2, 2,  nullptr,       xrayAlong,         hasSection,  nullptr},

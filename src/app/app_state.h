@@ -136,6 +136,7 @@ struct SkinUi {
   int32_t peel_count = 5;               // "Peel N"
   std::optional<int32_t> pending_peel;  // a peel asked for before the depth map was ready
   float peel_distance = 0.0f;           // "Peel by distance": model units (0: not chosen yet, one voxel is offered)
+  uint64_t cancelled_base = 0;          // the base whose skin layers the user cancelled (not asked again until retried)
 };
 
 struct XrayUi {

@@ -69,12 +69,17 @@ class Job {
   }
   bool cancelRequested() const { return state_ && state_->cancel.load(std::memory_order_relaxed); }
 
-  // The result once the worker has finished, handed out once; nullopt while running or when idle.
+  // The result once the worker has finished, handed out once; nullopt while running or when idle. A job cancelled
+  // gives kCancelled even when its work finished anyway (a cancel pressed after its last progress report): what the
+  // user cancelled never lands.
   std::optional<Result<T>> take() {
     joinRetired();
     if (!state_ || !state_->done.load(std::memory_order_acquire)) return std::nullopt;
     thread_.join();
     std::optional<Result<T>> out = std::move(state_->result);
+    if (state_->cancel.load(std::memory_order_relaxed) && out && out->ok()) {
+      out.emplace(makeError(ErrorCode::kCancelled, label_ + ": cancelled"));
+    }
     state_.reset();
     return out;
   }

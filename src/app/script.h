@@ -12,6 +12,7 @@
 //   voxelize R [MODE]                voxelize the open mesh (MODE auto|parity|nonzero|vote); no values: the dialog
 //   section AXIS INDEX               the section at voxel INDEX along x|y|z (and the Section panel)
 //   peel N | peel-one | peel-back | peel-core | peel-reset
+//   skin-layers | cancel-skin-layers | compute-thickness | cancel-thickness   compute again after a cancel; cancel
 //   xray AXIS MODE                   X-ray along x|y|z, MODE min|max|total (and the X-ray panel)
 //   panel-model | panel-section | panel-skin | panel-xray | panel-mass | panel-thickness | panel-parts
 //   min-wall W | thin-region N | hot-spot N   the Thickness panel's minimum wall (model units); row N of its lists of

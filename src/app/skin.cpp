@@ -31,10 +31,20 @@ int32_t peelLayersAvailable(const AppState& state) {
   return d ? d->layers() : -1;
 }
 
+void cancelSkinLayers(AppState& state) {
+  if (!state.doc.model || !state.depth.computing(state.doc.model->base_id)) return;
+  state.depth.clear();
+  state.skin.cancelled_base = state.doc.model->base_id;
+  state.skin.pending_peel.reset();
+}
+
+void computeSkinLayers(AppState& state) { state.skin.cancelled_base = 0; }
+
 void peelTo(AppState& state, int32_t layers) {
   if (!state.doc.model) return;
   const DepthMap* depth = currentDepthMap(state);
   if (!depth) {
+    state.skin.cancelled_base = 0;     // a peel asks for the layers again
     state.skin.pending_peel = layers;  // applied by updateDocument when the depth map arrives
     return;
   }

@@ -2,6 +2,7 @@
 #include "app/update.h"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <utility>
 
@@ -63,7 +64,8 @@ void updateDocument(AppState& state) {
   const ModelSnapshot& m = *state.doc.model;
   // The depth map of the base: needed by the Skin panel and by queued peels.
   // (Each request runs only when its key has nothing yet: the grid copies for the workers are made only then.)
-  if ((state.panel == Panel::kSkin || state.skin.pending_peel) && state.depth.wants(m.base_id)) {
+  if ((state.panel == Panel::kSkin || state.skin.pending_peel) && state.depth.wants(m.base_id) &&
+      state.skin.cancelled_base != m.base_id) {
     VoxelGrid base = m.base;
     state.depth.request(m.base_id, "Computing skin layers", [base](const ProgressFn& progress) {
       // Refused before anything is allocated when it could run the machine out of memory (it would take the
@@ -123,8 +125,26 @@ int32_t axisLength(const AppState& state, Axis axis) {
 }
 
 void centreView(AppState& state, glm::dvec3 centre, double extent) {
-  state.view.camera.target = centre;
-  state.view.camera.distance = std::min(state.view.camera.distance, std::max(40.0, 6.0 * extent));
+  render::Camera& c = state.view.camera;
+  c.target = centre;
+  double d = std::min(c.distance, std::max(40.0, 6.0 * extent));
+  // A target inside the material (the middle of a thin wall deep in the part) would put the eye inside the surface,
+  // close up: the eye stays outside the model's box, looking at the target from where it looked before.
+  const render::Box3 box =
+      state.model_bounds
+          ? *state.model_bounds
+          : render::Box3{glm::dvec3(0.0), glm::dvec3(state.model.nx(), state.model.ny(), state.model.nz())};
+  const glm::dvec3 dir = c.eyeDirection();
+  double exit = 0.0;  // how far from the target along dir the box ends
+  bool bounded = false;
+  for (int a = 0; a < 3; ++a) {
+    if (std::abs(dir[a]) < 1e-12) continue;
+    const double t = ((dir[a] > 0.0 ? box.max[a] : box.min[a]) - centre[a]) / dir[a];
+    exit = bounded ? std::min(exit, t) : t;
+    bounded = true;
+  }
+  if (bounded) d = std::max(d, exit + 2.0);
+  c.distance = d;
   state.view.fit_pending = false;
 }
 

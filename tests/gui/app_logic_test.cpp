@@ -18,6 +18,7 @@
 #include "app/script.h"
 #include "app/script_runner.h"
 #include "app/settings.h"
+#include "app/update.h"
 #include "support/cad_parts.h"
 #include "support/test_support.h"
 #include "vox/io/cad.h"
@@ -165,6 +166,23 @@ TEST(AppJob, cancelReachesTheWorkThroughProgress) {
   auto r = waitFor(job);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error().code, ErrorCode::kCancelled);
+}
+
+// A cancel pressed after the work's last progress report (late in a voxelization at R = 3000) still holds: the
+// result that comes anyway is not handed out.
+TEST(AppJob, aCancelPressedAfterTheLastProgressReportStillHolds) {
+  Job<int> job;
+  std::atomic<bool> go{false};
+  job.start("Voxelizing", [&go](const ProgressFn&) -> Result<int> {
+    while (!go.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    return 42;  // never asks progress again
+  });
+  job.cancel();
+  go = true;
+  std::optional<Result<int>> r;
+  while (!(r = job.take())) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  ASSERT_FALSE(r->ok());
+  EXPECT_EQ(r->error().code, ErrorCode::kCancelled);
 }
 
 TEST(AppJob, startingAgainRetiresTheRunningJobWithoutWaiting) {
@@ -349,6 +367,49 @@ TEST(AppDocument, openPeelUndoRedoAndTheUnsavedState) {
   auto back = io::loadVxm(dir / "peeled.vxm");
   ASSERT_TRUE(back.ok());
   EXPECT_EQ(back->filledCount(), 10 * 8 * 6);
+}
+
+// Computing the skin layers can be cancelled (they took 6-9 s on igea with no Cancel); they are not asked for again
+// until the user asks (Compute the skin layers, or a peel).
+TEST(AppDocument, theSkinLayersCanBeCancelledAndComputedAgain) {
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());
+  AppState state;
+  startOpen(state, dir / "block.vxm");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  state.panel = Panel::kSkin;
+  updateDocument(state);  // asks for the layers
+  EXPECT_TRUE(actionEnabled(state, action(ActionId::kCancelSkinLayers)));
+  EXPECT_TRUE(actionEnabled(state, action(ActionId::kCancelJob)));  // Esc cancels them too
+  ASSERT_TRUE(dispatch(state, ActionId::kCancelSkinLayers));
+  for (int i = 0; i < 20; ++i) updateDocument(state);
+  EXPECT_FALSE(state.depth.busy()) << "asked for again after the cancel";
+  EXPECT_EQ(currentDepthMap(state), nullptr);
+  EXPECT_FALSE(actionEnabled(state, action(ActionId::kCancelSkinLayers)));
+  ASSERT_TRUE(dispatch(state, ActionId::kSkinLayers));
+  ASSERT_TRUE(pump(state, [&] { return currentDepthMap(state) != nullptr; }));
+  EXPECT_EQ(peelLayersAvailable(state), 4);
+}
+
+// A thin region or hot spot clicked deep inside the part never puts the eye inside the surface (giant voxels,
+// nothing red): the eye stays outside the model's box, looking at the target as before.
+TEST(AppView, aRegionClickedDeepInsideKeepsTheEyeOutsideThePart) {
+  AppState state;
+  state.model = VoxelGrid(Dims{400, 300, 200});
+  state.view.camera.distance = 2000.0;
+  for (double yaw : {30.0, 135.0, -100.0}) {
+    state.view.camera.yaw_deg = yaw;
+    centreView(state, glm::dvec3(200.0, 150.0, 100.0), 3.0);  // a thin wall in the middle of the part
+    const glm::dvec3 eye = state.view.camera.eyePosition();
+    const bool outside = eye.x < 0.0 || eye.y < 0.0 || eye.z < 0.0 || eye.x > 400.0 || eye.y > 300.0 || eye.z > 200.0;
+    EXPECT_TRUE(outside) << "yaw " << yaw << ": eye at " << eye.x << ", " << eye.y << ", " << eye.z;
+    EXPECT_EQ(state.view.camera.target, glm::dvec3(200.0, 150.0, 100.0));
+  }
+  // Near the surface the close view stays close.
+  state.view.camera.yaw_deg = 30.0;
+  state.view.camera.pitch_deg = 25.0;
+  centreView(state, glm::dvec3(398.0, 298.0, 198.0), 3.0);
+  EXPECT_LE(state.view.camera.distance, 40.0);
 }
 
 // Peel, then Reset skin: the model is what the file holds again, so nothing is unsaved (the Skin panel asked to save).

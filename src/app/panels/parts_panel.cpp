@@ -4,6 +4,7 @@
 // colour, the clearance of two parts, and the interference list: clicking a pair shows its overlap in red in the 3D
 // view and in the section beside the panel. Widgets dispatch actions.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -23,10 +24,13 @@ namespace {
 
 constexpr int kMostPairs = 500;  // more would not be read; the count above the list says how many there are
 
-std::string volumeText(int64_t voxels, double voxel_size, const std::string& units) {
+// A volume for a column headed with its unit: four significant digits, never an exponent ("15 790", "2.77").
+std::string volumeText(int64_t voxels, double voxel_size) {
+  const double v = double(voxels) * voxel_size * voxel_size * voxel_size;
+  if (v >= 1000.0) return groupDigits(int64_t(std::llround(v)));
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.4g", double(voxels) * voxel_size * voxel_size * voxel_size);
-  return std::string(buf) + (units == "model" ? "" : " " + units + "^3");
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
 }
 
 bool beginList(const char* id, int columns, int rows, int most_rows) {
@@ -101,7 +105,7 @@ void drawPartRow(AppState& state, const Assembly& parts, size_t i, int64_t voxel
     }
   }
   ImGui::TableSetColumnIndex(2);
-  ImGui::TextUnformatted(volumeText(voxels, parts.lattice().voxel_size, parts.lattice().units).c_str());
+  ImGui::TextUnformatted(volumeText(voxels, parts.lattice().voxel_size).c_str());
   ImGui::PopID();
 }
 
@@ -243,7 +247,7 @@ void drawPairList(AppState& state, const Assembly& parts, const Interference& in
   ImGui::TableSetupColumn("A");
   ImGui::TableSetupColumn("B");
   ImGui::TableSetupColumn("Voxels", ImGuiTableColumnFlags_WidthFixed, 64.0f);
-  ImGui::TableSetupColumn("Volume", ImGuiTableColumnFlags_WidthFixed, 70.0f);
+  ImGui::TableSetupColumn(("Volume, " + unitsLabel(units) + "^3").c_str(), ImGuiTableColumnFlags_WidthFixed, 90.0f);
   ImGui::TableHeadersRow();
   for (int i = 0; i < rows; ++i) {
     const InterferencePair& p = inter.pairs[size_t(i)];
@@ -260,7 +264,7 @@ void drawPairList(AppState& state, const Assembly& parts, const Interference& in
     ImGui::TableSetColumnIndex(2);
     ImGui::TextUnformatted(groupDigits(p.voxels).c_str());
     ImGui::TableSetColumnIndex(3);
-    ImGui::TextUnformatted(volumeText(p.voxels, h, units).c_str());
+    ImGui::TextUnformatted(volumeText(p.voxels, h).c_str());
     ImGui::PopID();
   }
   ImGui::EndTable();

@@ -89,10 +89,14 @@ void drawSkinPanel(AppState& state) {
     ImGui::Spacing();
     if (const Error* e = state.depth.error(snap.base_id)) {
       ImGui::TextWrapped("Skin layers could not be computed: %s", e->message.c_str());
+    } else if (state.skin.cancelled_base == snap.base_id) {
+      ImGui::TextUnformatted("Cancelled.");
+      if (widget::Button("Compute the skin layers")) dispatch(state, ActionId::kSkinLayers);
     } else {
       ImGui::TextUnformatted(state.skin.pending_peel ? "Computing the skin layers; the peel follows..."
                                                      : "Computing the skin layers...");
       ImGui::ProgressBar(float(state.depth.progress()), ImVec2(-1.0f, 0.0f));
+      if (widget::Button("Cancel##skin")) dispatch(state, ActionId::kCancelSkinLayers);
     }
     return;
   }

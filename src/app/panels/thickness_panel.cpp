@@ -26,11 +26,11 @@ const ThicknessResult* thicknessOrStatus(AppState& state) {
     wrappedColoured(kErrorColour, "Thickness could not be computed: " + e->message);
   } else if (state.thickness_ui.cancelled_version == state.model_version) {
     ImGui::TextUnformatted("Cancelled.");
-    if (widget::Button("Compute thickness")) retryThickness(state);
+    if (widget::Button("Compute thickness")) dispatch(state, ActionId::kComputeThickness);
   } else {
     ImGui::TextUnformatted("Computing distance, thickness and hot spots...");
     ImGui::ProgressBar(float(state.thickness.progress()), ImVec2(-1.0f, 0.0f));
-    if (widget::Button("Cancel")) cancelThickness(state);
+    if (widget::Button("Cancel")) dispatch(state, ActionId::kCancelThickness);
     markWidget("thickness_cancel");
   }
   return nullptr;

@@ -84,7 +84,9 @@ void voxelizeButtons(AppState& state, const VoxelizeParams& p, bool can_start) {
   if (!can_start) ImGui::BeginDisabled();
   if (widget::Button("Voxelize", ImVec2(120.0f, 0.0f)) ||
       (can_start && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false))) {
-    runBetweenFrames(state, "Voxelize", [p](AppState& s) { startVoxelize(s, p); });
+    // Voxelizing replaces the model (and the parts split from it): asked first when something is unsaved.
+    runBetweenFrames(state, "Voxelize",
+                     [p](AppState& s) { guardUnsaved(s, [p](AppState& t) { startVoxelize(t, p); }); });
     ImGui::CloseCurrentPopup();
   }
   if (!can_start) ImGui::EndDisabled();
