@@ -1,4 +1,4 @@
-// Clearance between two parts on one lattice: the exact Euclidean distance transform (distance.cpp, SPEC section 6)
+// Clearance between two parts on one lattice: the exact Euclidean distance transform (distance.cpp)
 // of the empty voxels to part a, over a box holding both parts, read at part b's voxels; the smallest value is the
 // closest pair's centre distance, and the voxel of a realising it is found by a search of the ball of that radius
 // about b's voxel.

@@ -1,4 +1,4 @@
-// Exact Euclidean distance transform (SPEC section 6), see vox/analysis/distance.h.
+// Exact Euclidean distance transform (docs/conventions.md, "Distance and thickness"), see vox/analysis/distance.h.
 //
 // Felzenszwalb and Huttenlocher (2012): the squared distance along a line is the lower envelope of the parabolas
 // (q - p)^2 + f(p) of its sites p, found in one sweep. Three passes: X from the bit words (a 1D distance to the
@@ -163,7 +163,7 @@ std::vector<DistanceField::Row> filledSpans(const VoxelGrid& g, const Box& box) 
 // faulted in on 4 KiB pages, but a 2 MiB page is resident whole. So the fullest blocks are advised first, down to the
 // fill at which their unwritten pages would add more than kExtra of the written ones to the resident memory. An
 // advised block costs one fault instead of up to 512, and the Z pass, which reads a row of every slice, one address
-// translation instead of one per page: igea at R = 1000, a quarter less time for a sixth more memory.
+// translation instead of one per page (docs/performance.md, "Distance and thickness").
 void adviseHugePages(const VoxelGrid& g, DistanceField& f, bool to_empty) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   constexpr uintptr_t kPage = 4096, kHuge = uintptr_t(2) << 20;

@@ -10,8 +10,8 @@
 // beats it for every d >= floor((h(q + k) + k^2 - h(q)) / 2k) + 1; with L and R the least of those floors over k,
 // the sites before and after cover every integer d when L + R < 0. Divisions by 2k are arithmetic shifts, and the
 // values (squared distances in a grid whose sides are at most VoxelGrid::kMaxDim, under 2^28) keep every sum inside
-// 32 bits. On a solid part most sites are of that kind (igea at R = 1000: 373 M of the Y and Z passes' 568 M, where
-// the envelopes keep 136 M), and the envelope's sweep no longer pushes and hides them one by one.
+// 32 bits. On a solid part most sites are of that kind, and the envelope's sweep no longer pushes and hides them one
+// by one.
 //
 // Eight lines written at once. The envelopes of eight neighbouring lines mark the step at which each of their
 // parabolas starts being lowest; one sweep along the lines then carries each lane's lowest parabola forward and

@@ -10,7 +10,7 @@
 // through a bit pyramid (analysis/open_voxels.h), so a ball inside material already painted costs a few words. A
 // larger ball about a neighbour along an axis, painted before, leaves a ball's open voxels on one side of a plane
 // (ballWindow), and the walk visits only the box those planes leave: on each axis along which the field grows, the
-// box stops at or behind the centre (igea at R = 1000: half the time of the whole).
+// box stops at or behind the centre.
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -55,8 +55,7 @@ class LatticeCover {
   static constexpr int64_t kMaxTable = int64_t(1) << 18;  // balls up to radius 512: 512 KiB per class
   // Neighbours up to kReach voxels away on each axis are tried (219 offset classes, 6,858 offsets): a ball that is
   // not inside its face or diagonal neighbour's is often inside one a few voxels farther along the gradient, and
-  // every ball dropped here saves painting it (igea at R = 512: reach 2 leaves 4.5 times as many balls as reach 5,
-  // reach 5 1.5 times as many as reach 9; reach 13 drops 2% more).
+  // every ball dropped here saves painting it; a farther reach drops few more.
   static constexpr int kReach = 9;
   static constexpr int kClasses = 219;  // (a, b, c) with kReach >= a >= 1, a >= b >= c >= 0
   // far - s below 2 r |d| + |d|^2 with r <= 512 and |d| <= sqrt(3) kReach < 2 kReach: 16 bits hold it
@@ -144,8 +143,8 @@ class LatticeCover {
 // zero (a crest between equal neighbours: the middle of a plate), it tries the list toward its largest neighbour
 // of the 26, or only the 26 where none is larger (all 6,858 offsets there took plate_holes' containment test a
 // billion tries for 160 k such voxels, nearly all of them centres). Any offset left out only keeps a ball that could
-// have been dropped: the result is the same. (igea at R = 512: a 15 degree cone about the 2,196 directions keeps
-// 0.13% more balls than a 70 degree cone about 124, and tries about a sixteenth of the offsets.)
+// have been dropped: the result is the same. A narrow cone about many directions keeps hardly more balls than a
+// wide one about few, for far fewer tries.
 class RidgeOffsets {
  public:
   static constexpr int kSteps = 6;
@@ -396,10 +395,10 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
     // 1. The centres whose ball is not inside a neighbour's larger ball. The box is walked in slabs of up to 8 slices,
     // each in columns kTile voxels wide, row by row and in a row slice by slice: what the offsets read about one row
     // of a column, 19 rows of 82 voxels in each of the slab's slices and the 18 about them, stays in the second-level
-    // cache (igea at R = 1000: 15 s against 25 s slice by slice, where every row was read again for each of the 19
-    // slices about it). A voxel first tries the offsets that held its neighbours' balls along x and along y, on the
-    // table's columns (cheap: 82% and 7% of igea's voxels at R = 1000); the rest then try the list of their gradient
-    // on the table's rows, each row asked for two such voxels ahead.
+    // cache (slice by slice, every row would be read again for each of the 19 slices about it). A voxel first tries
+    // the offsets that held its neighbours' balls along x and along y, on the table's columns (cheap, and they settle
+    // most voxels); the rest then try the list of their gradient on the table's rows, each row asked for two such
+    // voxels ahead.
     constexpr int64_t kTile = 64;
     constexpr int64_t kAhead = 2;
     const int64_t K = LatticeCover::kReach;                               // (= kWindowReach)

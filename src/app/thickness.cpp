@@ -46,8 +46,8 @@ void requestThickness(AppState& state) {
   const uint64_t id = takeId(state);
   state.thickness.request(key, "Computing thickness", [grid, id](const ProgressFn& progress) {
     using R = Result<std::shared_ptr<const ThicknessResult>>;
-    // The bar's share of each stage as their times go (igea at R = 512: 0.4 s, 1 s and 2.5 s; rocker_arm: 0.05 s,
-    // 0.26 s, 0.5 s): distance 0..10%, hot spots 10..35%, thickness 35..100%.
+    // The bar's share of each stage, as their times go on real parts: distance 0..10%, hot spots 10..35%,
+    // thickness 35..100%.
     const workflow::StageProgress bar = [&progress](workflow::ThicknessStage stage, double f) {
       const double from[] = {0.0, 0.1, 0.35}, to[] = {0.1, 0.35, 1.0};
       const int i = int(stage);

@@ -44,8 +44,9 @@ Result<std::vector<Input>> readInputs(const std::vector<std::string>& files, con
   return inputs;
 }
 
-// The placement every mesh is voxelized on: the first voxel file's lattice, or SPEC section 1's grid fitted to the
-// union of the meshes' bounding boxes. `lattice_frame` gets the lattice as a frame with first = 0.
+// The placement every mesh is voxelized on: the first voxel file's lattice, or the standard grid (docs/conventions.md,
+// "Grid placement") fitted to the union of the meshes' bounding boxes. `lattice_frame` gets the lattice as a frame with
+// first = 0.
 Result<GridPlacement> wholePlacement(const std::vector<Input>& inputs, const VoxelizeParams& params) {
   for (const Input& in : inputs) {
     if (in.grid) return placeGridOnLattice(in.grid->frame(), glm::ivec3(0), in.grid->dims());

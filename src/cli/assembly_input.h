@@ -1,9 +1,9 @@
 #pragma once
 // FILE arguments of the assembly subcommands (boolean, bodies, interfere, clearance) put on one lattice
 // (docs/conventions.md, "Assemblies"): voxel files must share one (the first sets it); meshes are voxelized on it over
-// their own boxes, or, when no voxel file is given, on SPEC section 1's grid fitted to the union of the meshes'
-// bounding boxes (--res / --voxel-size). With bodies, a mesh gives its shells and a voxel file its connected
-// components (6-connected unless asked for 26).
+// their own boxes, or, when no voxel file is given, on the standard grid (docs/conventions.md, "Grid placement") fitted
+// to the union of the meshes' bounding boxes (--res / --voxel-size). With bodies, a mesh gives its shells and a voxel
+// file its connected components (6-connected unless asked for 26).
 #include <string>
 #include <vector>
 

@@ -38,8 +38,8 @@ struct BatchItem {
   uint64_t input_bytes = 0;      // for the order of hand-out and the time-left estimate
 };
 
-// The outcome of one item: its report line (SPEC §8 keys) and, when it was converted, the journal entry that lets a
-// later --resume check the output.
+// The outcome of one item: its report line (docs/conventions.md, "Batch") and, when it was converted, the journal entry
+// that lets a later --resume check the output.
 struct BatchOutcome {
   size_t index = 0;
   Json line;
@@ -47,7 +47,7 @@ struct BatchOutcome {
   bool stop_batch = false;  // the output directory refuses writes (disk full, quota): nothing more can be written
 };
 
-// Output extensions batch writes (voxel, volume and surface formats, SPEC §8), without dots.
+// Output extensions batch writes (voxel, volume and surface formats), without dots.
 std::vector<std::string> batchFormats();
 // The format named by --format ("binvox", ".BINVOX"), or an empty string when it is not one of batchFormats().
 std::string normalizeBatchFormat(const std::string& text);

@@ -1,4 +1,4 @@
-// The assembly subcommands (docs/conventions.md, "Assemblies"; SPEC section 7): boolean, bodies, interfere,
+// The assembly subcommands (docs/conventions.md, "Assemblies"): boolean, bodies, interfere,
 // clearance. Inputs go through placeInputs (assembly_input.h), which puts every file on one lattice.
 #include <filesystem>
 #include <memory>

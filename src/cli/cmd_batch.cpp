@@ -1,6 +1,7 @@
-// voxmod batch INPUTS... | --list FILE -o OUTDIR --format EXT [--resume] [--report FILE.jsonl] (SPEC §8;
-// docs/conventions.md, "Batch"). One output per input, files in parallel on this machine or over MPI ranks; a report
-// line per input whatever happens, in input order at the end. Exit 0 when every input is ok or skipped, 2 otherwise.
+// voxmod batch INPUTS... | --list FILE -o OUTDIR --format EXT [--resume] [--report FILE.jsonl] (docs/conventions.md,
+// "Batch"; docs/conventions.md, "Batch"). One output per input, files in parallel on this machine or over MPI ranks; a
+// report line per input whatever happens, in input order at the end. Exit 0 when every input is ok or skipped, 2
+// otherwise.
 #include <sched.h>
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-// voxmod convert IN OUT: formats by extension (SPEC section 8). A mesh IN is voxelized first; a voxel OUT (.vxm,
+// voxmod convert IN OUT: formats by extension (docs/file-format.md). A mesh IN is voxelized first; a voxel OUT (.vxm,
 // .binvox) is written as it is, a volume OUT (.nrrd, .vti, .vdb, .vox) holds the voxels with their placement, and a
 // mesh OUT (.stl, .ply, .obj, .3mf) is the model's surface (vox/analysis/surface_mesh.h).
 #include <filesystem>

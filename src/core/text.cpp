@@ -41,6 +41,18 @@ std::string formatCoordinate(double value, const std::string& units, double voxe
   return buf;
 }
 
+std::vector<std::string_view> splitWords(std::string_view line) {
+  std::vector<std::string_view> out;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    const size_t b = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+    if (i > b) out.push_back(line.substr(b, i - b));
+  }
+  return out;
+}
+
 uint64_t defaultMemoryLimitBytes() {
   const uint64_t physical = physicalMemoryBytes();
   return physical > 0 ? physical / 5 * 4 : UINT64_MAX;

@@ -12,6 +12,7 @@
 
 #include "io/binvox_detail.h"
 #include "io/voxel_file_common.h"
+#include "vox/core/text.h"
 #include "vox/io/file_util.h"
 #include "vox/io/voxel_file.h"
 
@@ -26,17 +27,6 @@ using voxel_file_detail::Writer;
 using namespace binvox_detail;
 
 std::string baseName(const std::string& name) { return std::filesystem::path(name).filename().string(); }
-
-bool parseDouble(std::string_view s, double& v) {
-  if (!s.empty() && s[0] == '+') s.remove_prefix(1);
-  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-  return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(v);
-}
-
-bool parseInt(std::string_view s, int64_t& v) {
-  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-  return r.ec == std::errc() && r.ptr == s.data() + s.size();
-}
 
 // y-columns of up to 64 consecutive x values, for the Z layers that hold voxels (numbered compactly, so empty
 // layers cost nothing): column(xi, z) is yWords() words, bit y of the column = voxel (x0 + xi, y, z).
@@ -68,18 +58,6 @@ class ColumnBlocks {
   std::vector<int32_t> slots_;
   std::vector<uint64_t> words_;
 };
-
-std::vector<std::string_view> splitWords(std::string_view line) {
-  std::vector<std::string_view> out;
-  size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-    const size_t b = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
-    if (i > b) out.push_back(line.substr(b, i - b));
-  }
-  return out;
-}
 
 // The binvox encoder, streamed in chunks of about a megabyte (binvox has no checksum or counts to patch).
 Status encodeBinvoxTo(const VoxelGrid& grid, ByteSink& sink) {
@@ -164,7 +142,7 @@ Result<BinvoxHeader> parseBinvoxHeader(std::span<const uint8_t> bytes, const std
   {
     const auto words = splitWords(line.substr(7));
     int64_t version = 0;
-    if (words.size() != 1 || !parseInt(words[0], version)) return error(ErrorCode::kParse, "bad '#binvox' line");
+    if (words.size() != 1 || !parseNumber(words[0], version)) return error(ErrorCode::kParse, "bad '#binvox' line");
     if (version != 1) {
       return error(ErrorCode::kUnsupported,
                    "binvox version " + std::to_string(version) + " is not supported (this build reads version 1)");
@@ -185,7 +163,8 @@ Result<BinvoxHeader> parseBinvoxHeader(std::span<const uint8_t> bytes, const std
     }
     if (words[0] == "dim") {
       int64_t v[3];
-      if (words.size() != 4 || !parseInt(words[1], v[0]) || !parseInt(words[2], v[1]) || !parseInt(words[3], v[2])) {
+      if (words.size() != 4 || !parseNumber(words[1], v[0]) || !parseNumber(words[2], v[1]) ||
+          !parseNumber(words[3], v[2])) {
         return error(ErrorCode::kParse, "expected 'dim D D D'");
       }
       for (int64_t& x : v) {
@@ -199,12 +178,12 @@ Result<BinvoxHeader> parseBinvoxHeader(std::span<const uint8_t> bytes, const std
       dims = {int32_t(v[0]), int32_t(v[1]), int32_t(v[2])};
       have_dim = true;
     } else if (words[0] == "translate") {
-      if (words.size() != 4 || !parseDouble(words[1], translate.x) || !parseDouble(words[2], translate.y) ||
-          !parseDouble(words[3], translate.z)) {
+      if (words.size() != 4 || !parseFileNumber(words[1], translate.x) || !parseFileNumber(words[2], translate.y) ||
+          !parseFileNumber(words[3], translate.z)) {
         return error(ErrorCode::kParse, "expected 'translate x y z' with three finite numbers");
       }
     } else if (words[0] == "scale") {
-      if (words.size() != 2 || !parseDouble(words[1], scale) || !(scale > 0)) {
+      if (words.size() != 2 || !parseFileNumber(words[1], scale) || !(scale > 0)) {
         return error(ErrorCode::kParse, "expected 'scale s' with a positive number");
       }
     } else {

@@ -52,7 +52,8 @@ Result<std::vector<uint8_t>> encode(void* data, int type, const Dims& dims, cons
   const glm::dvec3 c = frame.voxelCentre(0, 0, 0);
   const double origin[3] = {c.x, c.y, c.z};
   if (nrrdSpaceOriginSet(n.get(), origin)) return makeError(ErrorCode::kInvalidArgument, "NRRD: " + teemError());
-  // The length unit of the space (SPEC 6 leaves it open; NRRD's "space units" field): "mm", ..., "model" when unknown.
+  // The length unit of the space (NRRD's "space units" field; docs/conventions.md, "NRRD"): "mm", ..., "model" when
+  // unknown.
   for (unsigned i = 0; i < 3; ++i) n->spaceUnits[i] = airStrdup(frame.units.c_str());
   int centers[3] = {nrrdCenterCell, nrrdCenterCell, nrrdCenterCell};
   nrrdAxisInfoSet_nva(n.get(), nrrdAxisInfoCenter, centers);

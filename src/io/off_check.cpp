@@ -4,6 +4,7 @@
 #include <string_view>
 #include <vector>
 
+#include "vox/core/text.h"
 #include "vox/io/file_util.h"
 
 namespace vox::io {
@@ -54,16 +55,10 @@ class OffLines {
   bool body_ = false;
 };
 
-template <class T>
-bool parseWord(std::string_view w, T& out) {
-  const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), out);
-  return ec == std::errc() && end == w.data() + w.size();
-}
-
 bool allNumbers(const std::vector<std::string_view>& w, size_t from) {
   double v;
   for (size_t i = from; i < w.size(); ++i) {
-    if (!parseWord(w[i], v)) return false;
+    if (!parseNumber(w[i], v)) return false;
   }
   return true;
 }
@@ -83,7 +78,7 @@ Status readCounts(OffLines& lines, std::vector<std::string_view>& w, const std::
   }
   w.erase(w.begin());
   if (w.empty() && !lines.next(w)) return makeError(ErrorCode::kParse, name + ": OFF file has no counts line");
-  if (w.size() < 2 || w.size() > 3 || !parseWord(w[0], vertices) || !parseWord(w[1], faces)) {
+  if (w.size() < 2 || w.size() > 3 || !parseNumber(w[0], vertices) || !parseNumber(w[1], faces)) {
     return at(name, lines, "counts line must be 'vertices faces [edges]'");
   }
   return Ok{};
@@ -122,7 +117,7 @@ Status checkOff(std::span<const uint8_t> bytes, const std::string& name) {
     if (!lines.next(w)) return ends("face", i, faces);
     if (w.empty()) return at(name, lines, kNotData);
     uint64_t n = 0, index = 0;
-    if (!parseWord(w[0], n) || n == 0 || n > w.size() - 1 || !allNumbers(w, 1 + n)) {
+    if (!parseNumber(w[0], n) || n == 0 || n > w.size() - 1 || !allNumbers(w, 1 + n)) {
       return at(name, lines, "face " + std::to_string(i + 1) + " is not 'n i1 ... in' (and colour values)");
     }
     if (n > 9) {
@@ -131,7 +126,7 @@ Status checkOff(std::span<const uint8_t> bytes, const std::string& name) {
                     " corners: assimp's OFF reader takes at most 9");
     }
     for (uint64_t k = 1; k <= n; ++k) {
-      if (!parseWord(w[k], index) || index >= vertices) {
+      if (!parseNumber(w[k], index) || index >= vertices) {
         return at(name, lines,
                   "face " + std::to_string(i + 1) + " refers to vertex " + quoteBytes(w[k]) + " of " +
                       std::to_string(vertices));

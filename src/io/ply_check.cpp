@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "vox/core/text.h"
 #include "vox/io/file_util.h"
 
 namespace vox::io {
@@ -43,18 +44,6 @@ int typeSize(std::string_view t) {
   if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" || t == "float32") return 4;
   if (t == "double" || t == "float64") return 8;
   return 0;
-}
-
-std::vector<std::string_view> words(std::string_view line) {
-  std::vector<std::string_view> out;
-  size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-    const size_t b = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
-    if (i > b) out.push_back(line.substr(b, i - b));
-  }
-  return out;
 }
 
 Error headerError(const std::string& name, int line, const std::string& what) {
@@ -116,7 +105,7 @@ Result<PlyHeader> parseHeader(std::span<const uint8_t> bytes, const std::string&
   for (int line_no = 1;; ++line_no) {
     const size_t nl = text.find('\n', pos);
     if (nl == text.npos) return makeError(ErrorCode::kParse, name + ": PLY header has no 'end_header' line");
-    const std::vector<std::string_view> w = words(text.substr(pos, nl - pos));
+    const std::vector<std::string_view> w = splitWords(text.substr(pos, nl - pos));
     pos = nl + 1;
     if (line_no == 1) {
       if (w.size() != 1 || w[0] != "ply") return makeError(ErrorCode::kParse, name + ": not a PLY file");

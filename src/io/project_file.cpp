@@ -417,7 +417,7 @@ Result<ProjectFile> decodeProject(std::span<const uint8_t> bytes, const std::str
   json j;
   try {
     j = json::parse(m->bytes.begin(), m->bytes.end());
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // a parse error, or a number past a double (out_of_range)
     return r.bad(std::string("the manifest project.json is not JSON (") + e.what() + ")");
   }
   if (!j.is_object()) return r.bad("the manifest project.json is not a JSON object");

@@ -1,5 +1,6 @@
 #pragma once
-// Exact Euclidean distance transform (SPEC section 6) and the skin removal it defines.
+// Exact Euclidean distance transform (docs/conventions.md, "Distance and thickness") and the skin removal it
+// defines.
 //
 // Distance of a filled voxel: the Euclidean distance from its centre to the nearest empty voxel centre, every centre
 // outside the grid counting as empty (SciPy's ndimage.distance_transform_edt of the grid padded by one empty voxel).
@@ -14,8 +15,7 @@
 // per voxel of its box, dense, when asked for), a clearance field one per voxel of the grid, from calloc, written only
 // where a value is not zero, so pages that stay zero are never faulted in; nothing else the size of the grid. The
 // blocks of 2 MiB that the passes write most of are advised onto 2 MiB pages first (Linux), up to a sixth more resident
-// memory than 4 KiB pages alone. igea at R = 1000 (box 694 M voxels, spans 284 M): 1.1 GB (the whole process, grid and
-// mesh included, 1.24 GB; a dense box touched 2.2 GB).
+// memory than 4 KiB pages alone (figures: docs/performance.md, "Distance and thickness").
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -36,9 +36,9 @@ namespace vox {
 // Two layouts of the values. Dense: every voxel of the box, x fastest, then y, then z (what consumers that step
 // through the box by constant strides need: local thickness, hot spots). Packed rows: each row of the box keeps only
 // its span, from its first voxel with a value to its last, the rows one after another; the voxels of a row outside
-// its span have the value `outside`. A distance field is computed packed unless asked for dense (igea at R = 1000:
-// 1.1 GB instead of the 2.2 GB a dense field touches, its rows' ends outside the part sharing pages with the part);
-// denseCopy() makes a dense field from a packed one.
+// its span have the value `outside`. A distance field is computed packed unless asked for dense (about half the
+// memory a dense field touches, whose rows' ends outside the part share pages with the part); denseCopy() makes a
+// dense field from a packed one.
 class DistanceField {
  public:
   static constexpr uint32_t kInfinite = UINT32_MAX;  // clearance in a grid without filled voxels
@@ -130,16 +130,16 @@ enum class DistanceLayout { kPackedRows, kDense };
 
 // Distance of every filled voxel to the empty space (0 in empty voxels). The box is the filled voxels' bounding box,
 // stored as packed rows, or dense for consumers that step through the box by strides (local thickness, hot spots:
-// computing it dense costs what packed rows cost, where a dense copy afterwards touches the whole box's memory again,
-// igea at R = 1000: 1.3 s). Cost: O(box voxels), parallel; memory: 4 bytes per voxel of the rows' spans (packed) or
-// of the rows that meet the part (dense).
+// computing it dense costs what packed rows cost, where a dense copy afterwards touches the whole box's memory
+// again). Cost: O(box voxels), parallel; memory: 4 bytes per voxel of the rows' spans (packed) or of the rows that
+// meet the part (dense).
 Result<DistanceField> computeDistance(const VoxelGrid& grid, const ProgressFn& progress = {},
                                       DistanceLayout layout = DistanceLayout::kPackedRows);
 // Clearance of every empty voxel to the material (0 in filled voxels, DistanceField::kInfinite everywhere when the
 // grid has no filled voxel). The box is the whole grid, dense.
 Result<DistanceField> computeClearance(const VoxelGrid& grid, const ProgressFn& progress = {});
 
-// Round skin removal (SPEC section 6): the grid without every filled voxel whose distance is at most
+// Round skin removal: the grid without every filled voxel whose distance is at most
 // `distance_model` (model units). The input is not modified; untouched layers stay shared with it.
 Result<VoxelGrid> peelByDistance(const VoxelGrid& grid, double distance_model, const ProgressFn& progress = {});
 // The same from a distance field already computed for `grid`.

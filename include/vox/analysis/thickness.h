@@ -87,7 +87,7 @@ struct HotSpotParams {
   double isolation_voxels = 2.0;
 };
 struct HotSpot {
-  glm::dvec3 centre{0.0};  // model units: the mean of the plateau's voxel centres (SPEC section 1 placement)
+  glm::dvec3 centre{0.0};  // model units: the mean of the plateau's voxel centres (the grid's placement)
   glm::ivec3 voxel{0};     // the plateau voxel nearest that mean
   int64_t plateau_voxels = 1;
   double radius = 0.0;   // inscribed radius (the distance at the maximum), model units

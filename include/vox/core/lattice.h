@@ -1,9 +1,9 @@
 #pragma once
 // One lattice for many parts (docs/conventions.md, "Assemblies"). A lattice is a voxel size and an
 // origin: lattice voxel (I, J, K) has its centre at origin + ((I + 0.5) h, (J + 0.5) h, (K + 0.5) h), computed in
-// double exactly so (SPEC section 1's formula, with I counted from the lattice origin). Every part of an assembly is
-// a VoxelGrid covering a box of lattice voxels: its voxel (x, y, z) is lattice voxel first + (x, y, z). Parts with
-// different boxes on one lattice combine by word operations (shifted rows), never by resampling.
+// double exactly so (docs/conventions.md, "Grid placement", with I counted from the lattice origin). Every part of an
+// assembly is a VoxelGrid covering a box of lattice voxels: its voxel (x, y, z) is lattice voxel first + (x, y, z).
+// Parts with different boxes on one lattice combine by word operations (shifted rows), never by resampling.
 #include <algorithm>
 #include <cstdint>
 #include <string>
@@ -39,7 +39,7 @@ struct Lattice {
   double voxel_size = 1.0;
   std::string units = "model";
   bool operator==(const Lattice&) const = default;
-  // Centre of lattice voxel (i, j, k), the SPEC section 1 formula.
+  // Centre of lattice voxel (i, j, k), docs/conventions.md, "Grid placement".
   glm::dvec3 voxelCentre(int64_t i, int64_t j, int64_t k) const {
     return origin +
            glm::dvec3((double(i) + 0.5) * voxel_size, (double(j) + 0.5) * voxel_size, (double(k) + 0.5) * voxel_size);

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <vector>
 
 #include "vox/core/voxel_grid.h"
 
@@ -25,13 +27,13 @@ uint64_t defaultMemoryLimitBytes();
 // Seconds since an arbitrary start (the steady clock): for timing work.
 double nowSeconds();
 
-// The whole of `text` as a number (std::from_chars: no locale, no leading '+' or spaces); `out` is left as it was
-// when the text is not exactly one number.
 // "1 region", "3 regions": a count with its noun, plural unless the count is one.
 inline std::string countOf(int64_t n, const std::string& noun) {
   return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
 }
 
+// The whole of `text` as a number (std::from_chars: no locale, no leading '+' or spaces); `out` is left as it was
+// when the text is not exactly one number.
 template <class T>
 bool parseNumber(std::string_view text, T& out) {
   T v{};
@@ -40,5 +42,21 @@ bool parseNumber(std::string_view text, T& out) {
   out = v;
   return true;
 }
+
+// As parseNumber, as file formats write numbers: a leading '+' is taken, and a floating-point value must be finite.
+template <class T>
+bool parseFileNumber(std::string_view text, T& out) {
+  if (text.size() > 1 && text[0] == '+') text.remove_prefix(1);
+  T v{};
+  if (!parseNumber(text, v)) return false;
+  if constexpr (std::is_floating_point_v<T>) {
+    if (!(v - v == v - v)) return false;  // NaN or infinity
+  }
+  out = v;
+  return true;
+}
+
+// The words of a line separated by spaces, tabs and carriage returns, as views into it.
+std::vector<std::string_view> splitWords(std::string_view line);
 
 }  // namespace vox

@@ -137,6 +137,7 @@ TEST(ProjectFile, damagedProjectsAreRefusedNamingTheFileAndTheProblem) {
                 ErrorCode::kParse, "holds no project.json");
   expectRefused(edited([](auto& e) { setManifest(e, "{ \"format\": "); }), ErrorCode::kParse, "is not JSON");
   expectRefused(edited([](auto& e) { setManifest(e, "[1, 2]"); }), ErrorCode::kParse, "not a JSON object");
+  expectRefused(edited([](auto& e) { setManifest(e, "1E11111"); }), ErrorCode::kParse, "is not JSON");  // fuzzer
   expectRefused(edited([](auto& e) { setManifest(e, "{\"format\": \"something else\"}"); }), ErrorCode::kParse,
                 "not a voxmod project");
   expectRefused(edited([](auto& e) {
