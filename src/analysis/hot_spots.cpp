@@ -139,129 +139,156 @@ void greatestAbout(const Dims& d, int64_t zb, int64_t ze, Key&& key, Up&& up, Mo
   }
 }
 
-}  // namespace
-
-Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const HotSpotParams& params,
-                                          const ProgressFn& progress) {
-  std::vector<HotSpot> out;
-  if (distance.outside() != 0) {
-    return makeError(ErrorCode::kInvalidArgument, "hot spots need a distance field, not a clearance field");
-  }
-  const Dims d = distance.boxDims();
-  if (d.count() == 0) return out;
-  if (d.count() >= int64_t(UINT32_MAX)) {
-    return makeError(ErrorCode::kLimit, "hot spots: the model's bounding box has more than 2^32 voxels");
-  }
-  if (!distance.isDense()) {  // the sweeps index the box by constant strides
-    const DistanceField dense = distance.denseCopy();
-    if (!dense.data()) {
-      return makeError(ErrorCode::kLimit,
-                       "hot spots: cannot allocate " + std::to_string(d.count() >> 18) + " MiB for the field");
-    }
-    return findHotSpots(dense, params, progress);
-  }
-  const int64_t nx = d.nx, ny = d.ny, nz = d.nz, layer = nx * ny;
-  const uint32_t* data = distance.data();
-  analysis_detail::ProgressGate gate(progress);
-  auto cancelled = [] { return makeError(ErrorCode::kCancelled, "hot spots cancelled"); };
-  const int threads = threadsFor(d.count() / 4);
-  std::atomic<int64_t> done{0};
-  // Reports the share [from, to) of the progress for one more of the nz layers of a sweep (or of a band of them),
-  // every 16th; false once cancelled.
-  auto layerDone = [&](double from, double to, int64_t bands = 1) {
-    const int64_t n = done.fetch_add(1) + 1;
-    if (n % 16 && n != nz * bands) return !gate.cancelled();
-    return gate.report(from + (to - from) * double(n) / double(nz * bands));
-  };
-  const int64_t bands = (ny + kBand - 1) / kBand;
-
-  // The 26 neighbours in increasing index order, as offsets: code k leads to the voxel offset[k] on.
-  int64_t offset[26];
-  {
-    int k = 0;
+// The search over one dense field, step by step (the file's header says why these steps): the shared geometry, the
+// progress and the results each step hands to the next.
+class HotSpotSearch {
+ public:
+  HotSpotSearch(const DistanceField& distance, const HotSpotParams& params, const ProgressFn& progress)
+      : distance_(distance),
+        params_(params),
+        d_(distance.boxDims()),
+        nx_(d_.nx),
+        ny_(d_.ny),
+        nz_(d_.nz),
+        layer_(nx_ * ny_),
+        data_(distance.data()),
+        gate_(progress),
+        threads_(threadsFor(d_.count() / 4)),
+        bands_((ny_ + kBand - 1) / kBand),
+        grain_(std::max<int64_t>(8, nz_ / (8 * threads_))) {  // a slab reads two more layers about it
+    int k = 0;  // the 26 neighbours in increasing index order: code k leads to the voxel offset_[k] on
     for (int64_t dz = -1; dz <= 1; ++dz)
       for (int64_t dy = -1; dy <= 1; ++dy)
         for (int64_t dx = -1; dx <= 1; ++dx)
-          if (dx || dy || dz) offset[k++] = dx + nx * (dy + ny * dz);
+          if (dx || dy || dz) offset_[k++] = dx + nx_ * (dy + ny_ * dz);
   }
 
-  constexpr uint16_t kClimb16 = 0x8000;
-  auto noMemory = [](int64_t bytes) {
+  Result<std::vector<HotSpot>> run() {
+    if (Status s = climbCodes(); !s) return s.error();
+    if (Status s = basinGraph(); !s) return s.error();
+    mergeBasins();
+    if (!gate_.report(0.95)) return cancelled();
+    std::vector<HotSpot> out = spots();
+    if (!gate_.report(1.0)) return cancelled();
+    return out;
+  }
+
+ private:
+  using Labels16 = uint16_t;
+  static constexpr uint16_t kClimb16 = 0x8000;
+
+  static Error cancelled() { return makeError(ErrorCode::kCancelled, "hot spots cancelled"); }
+  static Error noMemory(int64_t bytes) {
     return makeError(ErrorCode::kLimit,
                      "hot spots: cannot allocate " + std::to_string(bytes >> 20) + " MiB for labels");
-  };
+  }
+
+  // Reports the share [from, to) of the progress for one more of the nz layers of a sweep (or of a band of them),
+  // every 16th; false once cancelled.
+  bool layerDone(double from, double to, int64_t bands = 1) {
+    const int64_t n = done_.fetch_add(1) + 1;
+    if (n % 16 && n != nz_ * bands) return !gate_.cancelled();
+    return gate_.report(from + (to - from) * double(n) / double(nz_ * bands));
+  }
+
   // 1. Each filled voxel's code: which of its 26 neighbours is its greatest (kClimb | k), or none, a summit. As keys,
   // distance << 5 | 31 - rank, where rank orders the 27 voxels about one by index (9 (dz + 1) + 3 (dy + 1) + dx + 1,
   // 13 the voxel itself): the greatest key names the greatest voxel, and its rank what was added to the key's low
   // bits along the way. Codes fit 16 bits, and so do the summits' numbers on most parts: the labels are 16 bits
   // wide until there are more summits. They start zeroed (fresh pages; only the climbing voxels' are written here,
   // the summits' in step 2).
-  std::unique_ptr<uint16_t[], decltype(&std::free)> code(
-      static_cast<uint16_t*>(std::calloc(size_t(d.count()), sizeof(uint16_t))), &std::free);
-  if (!code) return noMemory(d.count() * 2);
-  std::vector<std::vector<uint32_t>> summits(static_cast<size_t>(nz));  // per layer, in index order
-  const int64_t grain = std::max<int64_t>(8, nz / (8 * threads));       // a slab reads two more layers about it
-  {
-    auto key = [&](int64_t i, int k) { return (i < 0 ? uint64_t(0) : uint64_t(data[i]) << 5) | uint64_t(31 - k); };
+  Status climbCodes() {
+    code_.reset(static_cast<uint16_t*>(std::calloc(size_t(d_.count()), sizeof(uint16_t))));
+    if (!code_) return noMemory(d_.count() * 2);
+    std::vector<std::vector<uint32_t>> summits(static_cast<size_t>(nz_));  // per layer, in index order
+    auto key = [&](int64_t i, int k) { return (i < 0 ? uint64_t(0) : uint64_t(data_[i]) << 5) | uint64_t(31 - k); };
     auto up = [](uint64_t v, int k, int step) { return v - uint64_t(k * step); };
     auto more = [](uint64_t a, uint64_t b) { return std::max(a, b); };
-    parallelChunks(0, nz, grain, threads, [&](int, int64_t zb, int64_t ze) {
+    parallelChunks(0, nz_, grain_, threads_, [&](int, int64_t zb, int64_t ze) {
       greatestAbout<uint64_t>(
-          d, zb, ze, key, up, more,
+          d_, zb, ze, key, up, more,
           [&](int64_t z, int64_t y0, int64_t y1, const uint64_t* below, const uint64_t* at, const uint64_t* above) {
             const uint64_t outside = up(key(-1, 0), 0, 9);
-            for (int64_t j = 0; j < (y1 - y0) * nx; ++j) {
-              const int64_t i = layer * z + nx * y0 + j;
-              if (!data[i]) continue;
+            for (int64_t j = 0; j < (y1 - y0) * nx_; ++j) {
+              const int64_t i = layer_ * z + nx_ * y0 + j;
+              if (!data_[i]) continue;
               const uint64_t m =
                   more(more(below ? below[j] : outside, up(at[j], 1, 9)), above ? up(above[j], 2, 9) : outside);
               const auto rank = int(31 - (m & 31));
               if (rank != 13) {
-                code[size_t(i)] = uint16_t(kClimb16 | (rank < 13 ? rank : rank - 1));
+                code_[size_t(i)] = uint16_t(kClimb16 | (rank < 13 ? rank : rank - 1));
               } else {
                 summits[size_t(z)].push_back(uint32_t(i));
               }
             }
-            return layerDone(0.0, 0.35, bands);
+            return layerDone(0.0, 0.35, bands_);
           });
     });
+    if (gate_.cancelled()) return cancelled();
+    for (const auto& v : summits) summit_voxel_.insert(summit_voxel_.end(), v.begin(), v.end());
+    if (summit_voxel_.size() >= 0x80000000u) return makeError(ErrorCode::kLimit, "hot spots: more than 2^31 maxima");
+    comps_.resize(summit_voxel_.size());
+    for (size_t k = 0; k < comps_.size(); ++k) comps_[k].peak = data_[summit_voxel_[k]];
+    return Ok{};
   }
-  if (gate.cancelled()) return cancelled();
-  std::vector<uint32_t> summit_voxel;
-  for (const auto& v : summits) summit_voxel.insert(summit_voxel.end(), v.begin(), v.end());
-  summits = {};
-  if (summit_voxel.size() >= 0x80000000u) return makeError(ErrorCode::kLimit, "hot spots: more than 2^31 maxima");
-  std::vector<Component> comps(summit_voxel.size());
-  for (size_t k = 0; k < comps.size(); ++k) comps[k].peak = data[summit_voxel[k]];
 
-  // Steps 2 and 3 over labels of type L: the codes themselves, or (more summits than 16 bits number) 32-bit copies.
-  std::vector<EdgeTable> tables(static_cast<size_t>(threads));
-  std::vector<std::vector<std::pair<uint32_t, uint32_t>>> plateau_voxels(static_cast<size_t>(nz));
-  auto basins = [&](auto* label) {
-    using L = std::remove_pointer_t<decltype(label)>;
+  // Steps 2 and 3 over labels of 16 bits (the codes themselves), or 32-bit copies when more summits than 16 bits
+  // number.
+  Status basinGraph() {
+    tables_.resize(static_cast<size_t>(threads_));
+    plateau_voxels_.resize(static_cast<size_t>(nz_));
+    if (summit_voxel_.size() < 0x8000u) {
+      basins(code_.get());
+    } else {
+      std::unique_ptr<uint32_t[], decltype(&std::free)> wide(
+          static_cast<uint32_t*>(std::calloc(size_t(d_.count()), sizeof(uint32_t))), &std::free);
+      if (!wide) return noMemory(d_.count() * 4);
+      parallelChunks(0, nz_, grain_, threads_, [&](int, int64_t zb, int64_t ze) {
+        if (gate_.cancelled()) return;
+        for (int64_t i = layer_ * zb; i < layer_ * ze; ++i) {
+          if (code_[size_t(i)] & kClimb16) wide[size_t(i)] = 0x80000000u | (code_[size_t(i)] & 31u);
+        }
+      });
+      if (gate_.cancelled()) return cancelled();
+      code_.reset();
+      basins(wide.get());
+    }
+    code_.reset();
+    if (gate_.cancelled()) return cancelled();
+    return Ok{};
+  }
+
+  template <class L>
+  void basins(L* label) {
+    labelBasins(label);
+    if (!gate_.cancelled()) joinBasins(label);
+  }
+
+  // 2. Summits numbered in index order (so that among equal distances the lower number is the earlier voxel), then
+  // every voxel's summit, by following the codes up to a label that is a number and writing that number back along
+  // the way. Followed in the order of the layers, a path that climbs to the next layers would run through voxels far
+  // apart in memory, one miss each, and the paths beside it would do the same: so the layers are swept upwards
+  // following only paths that stay in the layers below, the voxels of a path that leaves them marked kWait, then
+  // downwards for the marked ones, whose paths then mostly reach numbers in the layers above at once. A thread may
+  // follow and write labels in another's layers: a voxel's label is always its code, its code marked, or its number,
+  // all of which lead to its summit (a mark goes only on the code, by a compare and exchange, never on a number
+  // written meanwhile), by relaxed atomic loads and stores.
+  template <class L>
+  void labelBasins(L* label) {
     constexpr L kClimb = L(1) << (8 * sizeof(L) - 1);
-    // 2. Summits numbered in index order (so that among equal distances the lower number is the earlier voxel), then
-    // every voxel's summit, by following the codes up to a label that is a number and writing that number back
-    // along the way. Followed in the order of the layers, a path that climbs to the next layers would run through
-    // voxels far apart in memory, one miss each, and the paths beside it would do the same: so the layers are swept
-    // upwards following only paths that stay in the layers below, the voxels of a path that leaves them marked
-    // kWait, then downwards for the marked ones, whose paths then mostly reach numbers in the layers above at
-    // once. A thread may follow and write labels in another's layers: a voxel's label is always its code, its code
-    // marked, or its number, all of which lead to its summit (a mark goes only on the code, by a compare and
-    // exchange, never on a number written meanwhile), by relaxed atomic loads and stores.
     constexpr L kWait = kClimb >> 1, kCode = kWait - 1;
-    for (size_t k = 0; k < summit_voxel.size(); ++k) label[summit_voxel[k]] = L(k);
+    for (size_t k = 0; k < summit_voxel_.size(); ++k) label[summit_voxel_[k]] = L(k);
     auto load = [&](int64_t q) { return std::atomic_ref<L>(label[q]).load(std::memory_order_relaxed); };
     auto store = [&](int64_t q, L l) { std::atomic_ref<L>(label[q]).store(l, std::memory_order_relaxed); };
     for (const bool upwards : {true, false}) {
-      done = 0;
-      parallelChunks(0, nz, grain, threads, [&](int, int64_t zb, int64_t ze) {
+      done_ = 0;
+      parallelChunks(0, nz_, grain_, threads_, [&](int, int64_t zb, int64_t ze) {
         std::vector<std::pair<int64_t, L>> path;  // the voxels followed, with the codes read there
-        for (int64_t n = zb; n < ze && !gate.cancelled(); ++n) {
-          const int64_t z = upwards ? n : nz - 1 - n;
-          const int64_t top = layer * (z + 1);  // upwards, paths stop where they reach the layers above z
-          for (int64_t i = layer * z; i < top; ++i) {
-            if (!data[i]) continue;
+        for (int64_t n = zb; n < ze && !gate_.cancelled(); ++n) {
+          const int64_t z = upwards ? n : nz_ - 1 - n;
+          const int64_t top = layer_ * (z + 1);  // upwards, paths stop where they reach the layers above z
+          for (int64_t i = layer_ * z; i < top; ++i) {
+            if (!data_[i]) continue;
             L l = load(i);
             if (!(l & kClimb) || (upwards && (l & kWait))) continue;
             path.clear();
@@ -269,7 +296,7 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
             bool wait = false;
             while (l & kClimb) {
               path.emplace_back(q, l);
-              q += offset[l & kCode];
+              q += offset_[l & kCode];
               if (upwards && (q >= top || (load(q) & (kClimb | kWait)) == (kClimb | kWait))) {
                 wait = true;
                 break;
@@ -288,156 +315,156 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
           layerDone(upwards ? 0.35 : 0.45, upwards ? 0.45 : 0.55);
         }
       });
-      if (gate.cancelled()) return;
+      if (gate_.cancelled()) return;
     }
-    // 3. The basin graph: for each pair of 26-adjacent filled voxels in two basins, the pair's level
-    // min(s(u), s(v)), the highest kept per pair of basins (each voxel pair met once, from the one with the lower
-    // index); and the plateau voxels (at their summit's distance) with their summits, in index order. Only voxels
-    // with another basin about them look at their neighbours: those whose filled neighbours' greatest label and
-    // greatest ~label (the least label) are not both their own.
+  }
+
+  // 3. The basin graph: for each pair of 26-adjacent filled voxels in two basins, the pair's level min(s(u), s(v)),
+  // the highest kept per pair of basins (each voxel pair met once, from the one with the lower index); and the
+  // plateau voxels (at their summit's distance) with their summits, in index order. Only voxels with another basin
+  // about them look at their neighbours: those whose filled neighbours' greatest label and greatest ~label (the least
+  // label) are not both their own.
+  template <class L>
+  void joinBasins(const L* label) {
     struct Labels {
       L most = 0, least = 0;  // label + 1 and ~label: 0 for empty voxels
     };
-    auto labels = [&](int64_t i, int) { return i >= 0 && data[i] ? Labels{L(label[i] + 1), L(~label[i])} : Labels{}; };
+    auto labels = [&](int64_t i, int) { return i >= 0 && data_[i] ? Labels{L(label[i] + 1), L(~label[i])} : Labels{}; };
     auto same = [](Labels v, int, int) { return v; };
     auto both = [](Labels a, Labels b) { return Labels{std::max(a.most, b.most), std::max(a.least, b.least)}; };
-    done = 0;
-    parallelChunks(0, nz, grain, threads, [&](int t, int64_t zb, int64_t ze) {
-      EdgeTable& table = tables[size_t(t)];
+    done_ = 0;
+    parallelChunks(0, nz_, grain_, threads_, [&](int t, int64_t zb, int64_t ze) {
+      EdgeTable& table = tables_[size_t(t)];
       greatestAbout<Labels>(
-          d, zb, ze, labels, same, both,
+          d_, zb, ze, labels, same, both,
           [&](int64_t z, int64_t y0, int64_t y1, const Labels* below, const Labels* at, const Labels* above) {
-            for (int64_t j = 0; j < (y1 - y0) * nx; ++j) {
-              const int64_t i = layer * z + nx * y0 + j;
-              const uint32_t s = data[i];
+            for (int64_t j = 0; j < (y1 - y0) * nx_; ++j) {
+              const int64_t i = layer_ * z + nx_ * y0 + j;
+              const uint32_t s = data_[i];
               if (!s) continue;
               const L own = label[i];
-              if (s == comps[own].peak) plateau_voxels[size_t(z)].emplace_back(uint32_t(i), own);
+              if (s == comps_[own].peak) plateau_voxels_[size_t(z)].emplace_back(uint32_t(i), own);
               Labels m = at[j];
               if (below) m = both(m, below[j]);
               if (above) m = both(m, above[j]);
               if (m.most == L(own + 1) && m.least == L(~own)) continue;  // one basin about it
-              analysis_detail::forEach26(j % nx, y0 + j / nx, z, nx, ny, nz, [&](int64_t q) {
+              analysis_detail::forEach26(j % nx_, y0 + j / nx_, z, nx_, ny_, nz_, [&](int64_t q) {
                 if (q <= i) return;  // met from the other voxel
-                const uint32_t v = data[q];
+                const uint32_t v = data_[q];
                 if (v && label[q] != own) table.raise(own, label[q], std::min(s, v));
               });
             }
-            return layerDone(0.55, 0.9, bands);
+            return layerDone(0.55, 0.9, bands_);
           });
     });
-  };
-  if (summit_voxel.size() < 0x8000u) {
-    basins(code.get());
-  } else {
-    std::unique_ptr<uint32_t[], decltype(&std::free)> wide(
-        static_cast<uint32_t*>(std::calloc(size_t(d.count()), sizeof(uint32_t))), &std::free);
-    if (!wide) return noMemory(d.count() * 4);
-    parallelChunks(0, nz, grain, threads, [&](int, int64_t zb, int64_t ze) {
-      if (gate.cancelled()) return;
-      for (int64_t i = layer * zb; i < layer * ze; ++i) {
-        if (code[size_t(i)] & kClimb16) wide[size_t(i)] = 0x80000000u | (code[size_t(i)] & 31u);
-      }
-    });
-    if (gate.cancelled()) return cancelled();
-    code.reset();
-    basins(wide.get());
   }
-  code.reset();
-  if (gate.cancelled()) return cancelled();
 
   // 4. Kruskal's merge from the highest edge down. The higher summit of two sets survives (the earlier among equals);
   // the other dies at the edge's level, unless both summits lie at that level: then they are one plateau.
-  std::vector<std::pair<uint32_t, uint64_t>> edges;
-  for (const EdgeTable& table : tables)
-    for (const EdgeTable::Edge& e : table.slots())
-      if (e.pair != EdgeTable::kEmpty) edges.emplace_back(e.level, e.pair);
-  tables = {};
-  std::sort(edges.begin(), edges.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-  std::vector<uint32_t> parent(comps.size()), plateau(comps.size());
-  for (uint32_t k = 0; k < comps.size(); ++k) parent[k] = plateau[k] = k;
-  for (const auto& [level, pair] : edges) {
-    uint32_t a = findRoot(parent, uint32_t(pair >> 32)), b = findRoot(parent, uint32_t(pair));
-    if (a == b) continue;
-    if (comps[b].peak > comps[a].peak || (comps[b].peak == comps[a].peak && b < a)) std::swap(a, b);
-    parent[b] = a;  // a survives
-    if (comps[a].peak == level && comps[b].peak == level) {
-      plateau[findRoot(plateau, b)] = findRoot(plateau, a);
-    } else {
-      comps[b].dead = true;
-      comps[b].saddle = level;
-    }
-  }
-  edges = {};
-  if (!gate.report(0.95)) return cancelled();
-
-  // Reported maxima: plateau roots that stand out by min_dynamic (survivors always do). A set that died at its own
-  // summit's level was a plateau touching a higher voxel, not a maximum.
-  auto dynamic = [](const Component& c) {  // in voxels
-    return std::sqrt(double(c.peak)) - (c.dead ? std::sqrt(double(c.saddle)) : 0.0);
-  };
-  std::vector<int64_t> spot_of(comps.size(), -1);
-  std::vector<uint32_t> spot_comp;
-  for (uint32_t k = 0; k < comps.size(); ++k) {
-    const Component& c = comps[k];
-    if (plateau[k] != k) continue;  // absorbed into another plateau
-    if (c.dead && (c.saddle == c.peak || dynamic(c) < params.min_dynamic_voxels)) continue;
-    spot_of[k] = int64_t(spot_comp.size());
-    spot_comp.push_back(k);
-  }
-  // Each plateau's voxels: its summits' basins' voxels at the summits' distance (a path up from such a voxel never
-  // leaves that distance). Their mean is the centre; the voxel nearest it, the earliest among equals, is `voxel`.
-  std::vector<uint32_t> spot_voxels;
-  std::vector<int64_t> spot_start(spot_comp.size() + 1, 0);
-  for (int pass = 0; pass < 2; ++pass) {
-    std::vector<int64_t> fill(spot_start.begin(), spot_start.end() - 1);
-    for (const auto& layer_voxels : plateau_voxels) {
-      for (const auto& [i, summit] : layer_voxels) {
-        const int64_t spot = spot_of[findRoot(plateau, summit)];
-        if (spot < 0) continue;
-        if (pass == 0) {
-          ++spot_start[size_t(spot) + 1];
-        } else {
-          spot_voxels[size_t(fill[size_t(spot)]++)] = i;
-        }
+  void mergeBasins() {
+    std::vector<std::pair<uint32_t, uint64_t>> edges;
+    for (const EdgeTable& table : tables_)
+      for (const EdgeTable::Edge& e : table.slots())
+        if (e.pair != EdgeTable::kEmpty) edges.emplace_back(e.level, e.pair);
+    tables_ = {};
+    std::sort(edges.begin(), edges.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::vector<uint32_t> parent(comps_.size());
+    plateau_.resize(comps_.size());
+    for (uint32_t k = 0; k < comps_.size(); ++k) parent[k] = plateau_[k] = k;
+    for (const auto& [level, pair] : edges) {
+      uint32_t a = findRoot(parent, uint32_t(pair >> 32)), b = findRoot(parent, uint32_t(pair));
+      if (a == b) continue;
+      if (comps_[b].peak > comps_[a].peak || (comps_[b].peak == comps_[a].peak && b < a)) std::swap(a, b);
+      parent[b] = a;  // a survives
+      if (comps_[a].peak == level && comps_[b].peak == level) {
+        plateau_[findRoot(plateau_, b)] = findRoot(plateau_, a);
+      } else {
+        comps_[b].dead = true;
+        comps_[b].saddle = level;
       }
     }
-    if (pass == 0) {
-      for (size_t k = 1; k < spot_start.size(); ++k) spot_start[k] += spot_start[k - 1];
-      spot_voxels.resize(size_t(spot_start.back()));
-    }
   }
-  plateau_voxels = {};
-  const double h = distance.voxelSize();
-  const GridFrame& frame = distance.frame();
-  const glm::ivec3 lo = distance.boxMin();
-  auto coordinates = [&](uint32_t i) {
-    return glm::ivec3(int32_t(i % uint32_t(nx)), int32_t(i / uint32_t(nx) % uint32_t(ny)),
-                      int32_t(i / uint32_t(layer)));
-  };
-  for (size_t spot = 0; spot < spot_comp.size(); ++spot) {
-    const Component& c = comps[spot_comp[spot]];
-    const double r = std::sqrt(double(c.peak));
+
+  static double dynamic(const Component& c) {  // in voxels
+    return std::sqrt(double(c.peak)) - (c.dead ? std::sqrt(double(c.saddle)) : 0.0);
+  }
+
+  // Each reported spot's plateau voxels, in index order: spot k's are voxels[start[k] .. start[k + 1]). Each plateau's
+  // voxels are its summits' basins' voxels at the summits' distance (a path up from such a voxel never leaves that
+  // distance).
+  void plateauVoxels(const std::vector<int64_t>& spot_of, std::vector<uint32_t>& voxels, std::vector<int64_t>& start) {
+    for (int pass = 0; pass < 2; ++pass) {
+      std::vector<int64_t> fill(start.begin(), start.end() - 1);
+      for (const auto& layer_voxels : plateau_voxels_) {
+        for (const auto& [i, summit] : layer_voxels) {
+          const int64_t spot = spot_of[findRoot(plateau_, summit)];
+          if (spot < 0) continue;
+          if (pass == 0) {
+            ++start[size_t(spot) + 1];
+          } else {
+            voxels[size_t(fill[size_t(spot)]++)] = i;
+          }
+        }
+      }
+      if (pass == 0) {
+        for (size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+        voxels.resize(size_t(start.back()));
+      }
+    }
+    plateau_voxels_ = {};
+  }
+
+  // 5. Reported maxima: plateau roots that stand out by min_dynamic (survivors always do). A set that died at its own
+  // summit's level was a plateau touching a higher voxel, not a maximum. Their plateau voxels' mean is the centre;
+  // the voxel nearest it, the earliest among equals, is `voxel`.
+  std::vector<HotSpot> spots() {
+    std::vector<int64_t> spot_of(comps_.size(), -1);
+    std::vector<uint32_t> spot_comp;
+    for (uint32_t k = 0; k < comps_.size(); ++k) {
+      const Component& c = comps_[k];
+      if (plateau_[k] != k) continue;  // absorbed into another plateau
+      if (c.dead && (c.saddle == c.peak || dynamic(c) < params_.min_dynamic_voxels)) continue;
+      spot_of[k] = int64_t(spot_comp.size());
+      spot_comp.push_back(k);
+    }
+    std::vector<uint32_t> voxels;
+    std::vector<int64_t> start(spot_comp.size() + 1, 0);
+    plateauVoxels(spot_of, voxels, start);
+    std::vector<HotSpot> out;
+    for (size_t spot = 0; spot < spot_comp.size(); ++spot) {
+      out.push_back(spotOf(comps_[spot_comp[spot]], voxels.data() + start[spot], start[spot + 1] - start[spot]));
+    }
+    std::stable_sort(out.begin(), out.end(), [](const HotSpot& a, const HotSpot& b) { return a.radius > b.radius; });
+    return out;
+  }
+
+  HotSpot spotOf(const Component& c, const uint32_t* voxels, int64_t count) const {
+    const double h = distance_.voxelSize();
+    const GridFrame& frame = distance_.frame();
+    const glm::ivec3 lo = distance_.boxMin();
+    auto coordinates = [&](uint32_t i) {
+      return glm::ivec3(int32_t(i % uint32_t(nx_)), int32_t(i / uint32_t(nx_) % uint32_t(ny_)),
+                        int32_t(i / uint32_t(layer_)));
+    };
     int64_t sx = 0, sy = 0, sz = 0;
-    for (int64_t n = spot_start[spot]; n < spot_start[spot + 1]; ++n) {
-      const glm::ivec3 v = coordinates(spot_voxels[size_t(n)]);
+    for (int64_t n = 0; n < count; ++n) {
+      const glm::ivec3 v = coordinates(voxels[n]);
       sx += v.x;
       sy += v.y;
       sz += v.z;
     }
     HotSpot hs;
-    const int64_t count = spot_start[spot + 1] - spot_start[spot];
     const glm::dvec3 mean = glm::dvec3(double(sx), double(sy), double(sz)) / double(count);
     hs.centre = frame.origin + (glm::dvec3(lo) + mean + 0.5) * h;
     hs.plateau_voxels = count;
-    hs.radius = r * h;
+    hs.radius = std::sqrt(double(c.peak)) * h;
     hs.modulus = hs.radius / 3.0;
     hs.dynamic = dynamic(c) * h;
     hs.saddle = c.dead ? std::sqrt(double(c.saddle)) * h : 0.0;
-    hs.isolated = !c.dead || dynamic(c) >= params.isolation_voxels;
+    hs.isolated = !c.dead || dynamic(c) >= params_.isolation_voxels;
     double best = INFINITY;
-    for (int64_t n = spot_start[spot]; n < spot_start[spot + 1]; ++n) {
-      const glm::ivec3 v = coordinates(spot_voxels[size_t(n)]) + lo;
+    for (int64_t n = 0; n < count; ++n) {
+      const glm::ivec3 v = coordinates(voxels[n]) + lo;
       const glm::dvec3 p = frame.voxelCentre(v.x, v.y, v.z) - hs.centre;
       const double dd = p.x * p.x + p.y * p.y + p.z * p.z;
       if (dd < best) {
@@ -445,11 +472,48 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
         hs.voxel = v;
       }
     }
-    out.push_back(hs);
+    return hs;
   }
-  std::stable_sort(out.begin(), out.end(), [](const HotSpot& a, const HotSpot& b) { return a.radius > b.radius; });
-  if (!gate.report(1.0)) return cancelled();
-  return out;
+
+  const DistanceField& distance_;
+  const HotSpotParams& params_;
+  const Dims d_;
+  const int64_t nx_, ny_, nz_, layer_;
+  const uint32_t* data_;
+  analysis_detail::ProgressGate gate_;
+  const int threads_;
+  const int64_t bands_, grain_;
+  int64_t offset_[26];
+  std::atomic<int64_t> done_{0};
+  std::unique_ptr<uint16_t[], decltype(&std::free)> code_{nullptr, &std::free};
+  std::vector<uint32_t> summit_voxel_;
+  std::vector<Component> comps_;
+  std::vector<EdgeTable> tables_;
+  std::vector<std::vector<std::pair<uint32_t, uint32_t>>> plateau_voxels_;
+  std::vector<uint32_t> plateau_;
+};
+
+}  // namespace
+
+Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const HotSpotParams& params,
+                                          const ProgressFn& progress) {
+  if (distance.outside() != 0) {
+    return makeError(ErrorCode::kInvalidArgument, "hot spots need a distance field, not a clearance field");
+  }
+  const Dims d = distance.boxDims();
+  if (d.count() == 0) return std::vector<HotSpot>{};
+  if (d.count() >= int64_t(UINT32_MAX)) {
+    return makeError(ErrorCode::kLimit, "hot spots: the model's bounding box has more than 2^32 voxels");
+  }
+  if (!distance.isDense()) {  // the sweeps index the box by constant strides
+    const DistanceField dense = distance.denseCopy();
+    if (!dense.data()) {
+      return makeError(ErrorCode::kLimit,
+                       "hot spots: cannot allocate " + std::to_string(d.count() >> 18) + " MiB for the field");
+    }
+    return findHotSpots(dense, params, progress);
+  }
+  return HotSpotSearch(distance, params, progress).run();
 }
 
 }  // namespace vox

@@ -359,6 +359,244 @@ ThicknessStats statistics(const DistanceField& r, int32_t bins) {
 
 }  // namespace
 
+namespace {
+
+// Step 1 of local thickness: the centres whose ball is not inside a neighbour's larger ball, per slice. The box is
+// walked in slabs of up to 8 slices, each in columns kTile voxels wide, row by row and in a row slice by slice: what
+// the offsets read about one row of a column, 19 rows of 82 voxels in each of the slab's slices and the 18 about them,
+// stays in the second-level cache (slice by slice, every row would be read again for each of the 19 slices about it).
+// A voxel first tries the offsets that held its neighbours' balls along x and along y, on the table's columns (cheap,
+// and they settle most voxels); the rest then try the list of their gradient on the table's rows, each row asked for
+// two such voxels ahead.
+class CentreSearch {
+ public:
+  static constexpr int64_t kTile = 64;
+  static constexpr int64_t kAhead = 2;
+  using Step = RidgeOffsets::Step;
+
+  CentreSearch(DistanceField& f, ProgressGate& gate, int threads)
+      : d_(f.boxDims()),
+        nx_(d_.nx),
+        ny_(d_.ny),
+        nz_(d_.nz),
+        plane_(nx_ * ny_),
+        data_(f.data()),
+        cover_(int64_t(f.maxSquared())),
+        ridge_(cover_, nx_, plane_),
+        gate_(gate),
+        threads_(threads),
+        slab_(std::clamp<int64_t>(nz_ / (16 * threads), 1, 8)),  // (many slabs a thread: balanced)
+        buckets_(static_cast<size_t>(nz_)) {}
+
+  // The centres found, per slice (empty when cancelled).
+  std::vector<std::vector<Centre>> run() {
+    const int64_t slabs = (nz_ + slab_ - 1) / slab_;
+    parallelChunks(0, slabs, 1, threads_, [&](int, int64_t kb, int64_t ke) {
+      // the step that held each voxel's ball in the row before (y - 1) of the column, for each slice of the slab
+      std::vector<const Step*> above(size_t(kTile * slab_));
+      for (int64_t k = kb; k < ke; ++k) {
+        if (gate_.cancelled()) return;
+        const int64_t z0 = k * slab_, z1 = std::min(nz_, z0 + slab_);
+        for (int64_t x0 = 0; x0 < nx_; x0 += kTile) {
+          std::fill(above.begin(), above.end(), nullptr);
+          for (int64_t y = 0; y < ny_; ++y)
+            for (int64_t z = z0; z < z1; ++z) row(x0, y, z, above.data() + (z - z0) * kTile);
+        }
+        gate_.report(0.3 * double(done_.fetch_add(z1 - z0) + (z1 - z0)) / double(nz_));
+      }
+    });
+    return std::move(buckets_);
+  }
+
+ private:
+  static constexpr int64_t K = LatticeCover::kReach;  // (= kWindowReach)
+
+  int64_t at(int64_t x, int64_t y, int64_t z) const {
+    if (x < 0 || y < 0 || z < 0 || x >= nx_ || y >= ny_ || z >= nz_) return 0;
+    return data_[x + nx_ * y + plane_ * z];
+  }
+
+  // The test anywhere in the box (offsets that leave it read 0), for any ball (those beyond the table too).
+  bool heldAnywhere(int64_t x, int64_t y, int64_t z, int64_t s) const {
+    const size_t list =
+        ridge_.listFor([&](int64_t dx, int64_t dy, int64_t dz) { return at(x + dx, y + dy, z + dz); }, s);
+    for (const Offset& o : ridge_.offsets(list))
+      if (cover_.inside(s, at(x + o.dx, y + o.dy, z + o.dz), o)) return true;
+    return false;
+  }
+
+  void keep(int64_t x, int64_t y, int64_t z, int64_t s, bool interior) {
+    Centre c{uint32_t(s), uint16_t(x), uint16_t(y), uint16_t(z), {}, {}};
+    if (interior) {
+      const uint32_t* here = data_ + x + nx_ * y + plane_ * z;
+      ballWindow(c, [&](int64_t dx, int64_t dy, int64_t dz) { return here[dx + nx_ * dy + plane_ * dz]; });
+    } else {
+      ballWindow(c, [&](int64_t dx, int64_t dy, int64_t dz) { return at(x + dx, y + dy, z + dz); });
+    }
+    buckets_[size_t(z)].push_back(c);
+  }
+
+  // The row y of slice z within the column from x0; up[x - x0]: the step that held each voxel's ball in the row
+  // before, updated.
+  void row(int64_t x0, int64_t y, int64_t z, const Step** up) {
+    const int64_t x1 = std::min(nx_, x0 + kTile);
+    const uint32_t* row = data_ + plane_ * z + nx_ * y;
+    if (y < K || z < K || y >= ny_ - K || z >= nz_ - K || !ridge_.stepsFit()) {  // offsets may leave the box
+      for (int64_t x = x0; x < x1; ++x)
+        if (row[x] && !heldAnywhere(x, y, z, row[x])) keep(x, y, z, row[x], false);
+      return;
+    }
+    std::array<int32_t, kTile> rest;  // the row's voxels left to the second pass (the first n written)
+    const int n = firstPass(row, x0, x1, up, rest);
+    secondPass(row, x0, y, z, up, rest, n);
+  }
+
+  // The steps that held the neighbours before along x and y, where no offset leaves the box and the table holds the
+  // ball; returns how many voxels are left (in `rest`).
+  int firstPass(const uint32_t* row, int64_t x0, int64_t x1, const Step** up, std::array<int32_t, kTile>& rest) const {
+    const Step* last = nullptr;
+    int n = 0;
+    for (int64_t x = x0; x < x1; ++x) {
+      const int64_t s = row[x];
+      if (!s) {
+        up[x - x0] = nullptr;
+        continue;
+      }
+      if (x >= K && x < nx_ - K && s <= cover_.limit()) {
+        const uint32_t* here = row + x;
+        auto holds = [&](const Step* o) {
+          const int64_t sn = here[o->delta];
+          return (sn > s) & (cover_.column(o->cls)[s] + s < sn);
+        };
+        if (last && holds(last)) {
+          up[x - x0] = last;
+          continue;
+        }
+        if (up[x - x0] && holds(up[x - x0])) {
+          last = up[x - x0];
+          continue;
+        }
+      }
+      rest[size_t(n++)] = int32_t(x);
+    }
+    return n;
+  }
+
+  // The voxels the first pass left: the step that held the voxel before it in this pass, then the offsets of its
+  // gradient.
+  void secondPass(const uint32_t* row, int64_t x0, int64_t y, int64_t z, const Step** up,
+                  const std::array<int32_t, kTile>& rest, int n) {
+    const Step* before = nullptr;
+    for (int i = 0; i < std::min<int>(n, kAhead); ++i) cover_.prefetch(row[rest[size_t(i)]]);
+    for (int i = 0; i < n; ++i) {
+      if (i + kAhead < n) cover_.prefetch(row[rest[size_t(i + kAhead)]]);
+      const int64_t x = rest[size_t(i)], s = row[x];
+      up[x - x0] = nullptr;
+      const bool interior = x >= K && x < nx_ - K;
+      if (!interior || s > cover_.limit()) {
+        if (!heldAnywhere(x, y, z, s)) keep(x, y, z, s, interior);
+        continue;
+      }
+      const uint32_t* here = row + x;
+      const int16_t* far = cover_.row(s);
+      const size_t list = ridge_.listFor(
+          [&](int64_t dx, int64_t dy, int64_t dz) { return int64_t(here[dx + nx_ * dy + plane_ * dz]); }, s);
+      auto holds = [&](const Step& o) {  // (both worked out: one branch, mostly not taken)
+        const int64_t sn = here[o.delta];
+        return (sn > s) & (far[o.cls] + s < sn);
+      };
+      const Step* hit = before && holds(*before) ? before : nullptr;
+      if (!hit) {
+        for (const Step& o : ridge_.steps(list)) {
+          if (holds(o)) {
+            hit = &o;
+            break;
+          }
+        }
+      }
+      if (hit) {
+        up[x - x0] = before = hit;
+      } else {
+        keep(x, y, z, s, true);
+      }
+    }
+  }
+
+  const Dims d_;
+  const int64_t nx_, ny_, nz_, plane_;
+  const uint32_t* data_;
+  const LatticeCover cover_;
+  const RidgeOffsets ridge_;
+  ProgressGate& gate_;
+  const int threads_;
+  const int64_t slab_;
+  std::vector<std::vector<Centre>> buckets_;
+  std::atomic<int64_t> done_{0};
+};
+
+// All centres, largest ball first (a counting sort by s), balls of one size in Morton order: the order among equal
+// balls does not change the result, and neighbours in space walk the same bricks while they are cached.
+std::vector<Centre> orderCentres(std::vector<std::vector<Centre>>& buckets, uint32_t max_squared) {
+  std::vector<Centre> centres;
+  std::vector<int64_t> start(size_t(max_squared) + 2, 0);
+  for (const auto& b : buckets)
+    for (const Centre& c : b) ++start[size_t(max_squared - c.s) + 1];
+  for (size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+  const std::vector<int64_t> first = start;
+  centres.resize(size_t(start.back()));
+  for (auto& b : buckets) {
+    for (const Centre& c : b) centres[size_t(start[size_t(max_squared - c.s)]++)] = c;
+    std::vector<Centre>().swap(b);
+  }
+  auto morton = [](const Centre& c) {
+    auto spread = [](uint64_t v) {  // bits of a 16-bit value to every third bit
+      v = (v | v << 16) & 0x0000FF0000FFull;
+      v = (v | v << 8) & 0x00F00F00F00F00Full;
+      v = (v | v << 4) & 0x0C30C30C30C30C3ull;
+      return (v | v << 2) & 0x249249249249249ull;
+    };
+    return spread(c.x) | spread(c.y) << 1 | spread(c.z) << 2;
+  };
+  const int64_t values = int64_t(first.size()) - 1;
+  parallelChunks(0, values, 1, threadsFor(int64_t(centres.size())), [&](int, int64_t vb, int64_t ve) {
+    for (int64_t v = vb; v < ve; ++v) {
+      std::sort(centres.begin() + first[size_t(v)], centres.begin() + first[size_t(v) + 1],
+                [&](const Centre& a, const Centre& b) { return morton(a) < morton(b); });
+    }
+  });
+  return centres;
+}
+
+// Step 2: paint, largest ball first; a voxel takes the first ball that reaches it and is never visited again. Each
+// thread walks the whole list of balls and paints only the voxels it owns (analysis/open_voxels.h), each ball within
+// its window.
+void paintBalls(DistanceField& f, const std::vector<Centre>& centres, const ThicknessParams& params, ProgressGate& gate,
+                int threads) {
+  const Dims d = f.boxDims();
+  const int64_t nx = d.nx, plane = int64_t(d.nx) * d.ny;
+  uint32_t* data = f.data();
+  analysis_detail::OpenVoxels open(
+      d, threads, [&](int64_t x, int64_t y, int64_t z) { return data[x + nx * y + plane * z] != 0; },
+      params.simd == ThicknessParams::Simd::kSse2 ? analysis_detail::OpenVoxels::Simd::kSse2
+                                                  : analysis_detail::OpenVoxels::Simd::kAuto);
+  const int64_t total_centres = int64_t(centres.size());
+  forChunks(threads, threads, [&](int t, int64_t, int64_t) {
+    for (int64_t k = 0; k < total_centres && open.anyOpen(t); ++k) {
+      if ((k & 4095) == 0) {
+        if (gate.cancelled()) return;
+        if (t == 0) gate.report(0.3 + 0.65 * double(k) / double(total_centres));
+      }
+      const Centre c = centres[size_t(k)];
+      const uint32_t s = c.s;
+      const analysis_detail::OpenVoxels::Window w{{c.lo[0], c.lo[1], c.lo[2]}, {c.hi[0], c.hi[1], c.hi[2]}};
+      open.paintBall(t, c.x, c.y, c.z, s, w,
+                     [&](int64_t x, int64_t y, int64_t z) { data[x + nx * y + plane * z] = s; });
+    }
+  });
+}
+
+}  // namespace
+
 Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessParams& params,
                                    const ProgressFn& progress) {
   if (distance.outside() != 0) {
@@ -377,193 +615,15 @@ Result<Thickness> computeThickness(DistanceField&& distance, const ThicknessPara
     }
   }
   DistanceField& f = out.radius;
-  const Dims d = f.boxDims();
   ProgressGate gate(progress);
   auto cancelled = [] { return makeError(ErrorCode::kCancelled, "local thickness cancelled"); };
-  if (d.count() > 0) {
-    const int64_t nx = d.nx, ny = d.ny, nz = d.nz, plane = nx * ny;
-    uint32_t* data = f.data();
-    auto at = [&](int64_t x, int64_t y, int64_t z) -> int64_t {
-      if (x < 0 || y < 0 || z < 0 || x >= nx || y >= ny || z >= nz) return 0;
-      return data[x + nx * y + plane * z];
-    };
-    const LatticeCover cover(int64_t(f.maxSquared()));
-    const RidgeOffsets ridge(cover, nx, plane);
-    std::vector<std::vector<Centre>> buckets(static_cast<size_t>(nz));
-    const int threads = threadsFor(d.count() / 4);
-    std::atomic<int64_t> done{0};
-    // 1. The centres whose ball is not inside a neighbour's larger ball. The box is walked in slabs of up to 8 slices,
-    // each in columns kTile voxels wide, row by row and in a row slice by slice: what the offsets read about one row
-    // of a column, 19 rows of 82 voxels in each of the slab's slices and the 18 about them, stays in the second-level
-    // cache (slice by slice, every row would be read again for each of the 19 slices about it). A voxel first tries
-    // the offsets that held its neighbours' balls along x and along y, on the table's columns (cheap, and they settle
-    // most voxels); the rest then try the list of their gradient on the table's rows, each row asked for two such
-    // voxels ahead.
-    constexpr int64_t kTile = 64;
-    constexpr int64_t kAhead = 2;
-    const int64_t K = LatticeCover::kReach;                               // (= kWindowReach)
-    const int64_t slab = std::clamp<int64_t>(nz / (16 * threads), 1, 8);  // (many slabs a thread: balanced)
-    using Step = RidgeOffsets::Step;
-    // The test anywhere in the box (offsets that leave it read 0), for any ball (those beyond the table too).
-    auto heldAnywhere = [&](int64_t x, int64_t y, int64_t z, int64_t s) {
-      const size_t list =
-          ridge.listFor([&](int64_t dx, int64_t dy, int64_t dz) { return at(x + dx, y + dy, z + dz); }, s);
-      for (const Offset& o : ridge.offsets(list))
-        if (cover.inside(s, at(x + o.dx, y + o.dy, z + o.dz), o)) return true;
-      return false;
-    };
-    auto keep = [&](int64_t x, int64_t y, int64_t z, int64_t s, bool interior) {
-      Centre c{uint32_t(s), uint16_t(x), uint16_t(y), uint16_t(z), {}, {}};
-      if (interior) {
-        const uint32_t* here = data + x + nx * y + plane * z;
-        ballWindow(c, [&](int64_t dx, int64_t dy, int64_t dz) { return here[dx + nx * dy + plane * dz]; });
-      } else {
-        ballWindow(c, [&](int64_t dx, int64_t dy, int64_t dz) { return at(x + dx, y + dy, z + dz); });
-      }
-      buckets[size_t(z)].push_back(c);
-    };
-    const int64_t slabs = (nz + slab - 1) / slab;
-    parallelChunks(0, slabs, 1, threads, [&](int, int64_t kb, int64_t ke) {
-      // the step that held each voxel's ball in the row before (y - 1) of the column, for each slice of the slab
-      std::vector<const Step*> above(size_t(kTile * slab));
-      std::array<int32_t, kTile> rest{};  // a row's voxels left to the second pass
-      for (int64_t k = kb; k < ke; ++k) {
-        if (gate.cancelled()) return;
-        const int64_t z0 = k * slab, z1 = std::min(nz, z0 + slab);
-        for (int64_t x0 = 0; x0 < nx; x0 += kTile) {
-          const int64_t x1 = std::min(nx, x0 + kTile);
-          std::fill(above.begin(), above.end(), nullptr);
-          for (int64_t y = 0; y < ny; ++y)
-            for (int64_t z = z0; z < z1; ++z) {
-              const uint32_t* row = data + plane * z + nx * y;
-              if (y < K || z < K || y >= ny - K || z >= nz - K || !ridge.stepsFit()) {  // offsets may leave the box
-                for (int64_t x = x0; x < x1; ++x)
-                  if (row[x] && !heldAnywhere(x, y, z, row[x])) keep(x, y, z, row[x], false);
-                continue;
-              }
-              const Step** up = above.data() + (z - z0) * kTile;  // up[x - x0]
-              // first pass: the steps that held the neighbours before along x and y, where no offset leaves the box
-              // and the table holds the ball
-              const Step* last = nullptr;
-              int n = 0;
-              for (int64_t x = x0; x < x1; ++x) {
-                const int64_t s = row[x];
-                if (!s) {
-                  up[x - x0] = nullptr;
-                  continue;
-                }
-                if (x >= K && x < nx - K && s <= cover.limit()) {
-                  const uint32_t* here = row + x;
-                  auto holds = [&](const Step* o) {
-                    const int64_t sn = here[o->delta];
-                    return (sn > s) & (cover.column(o->cls)[s] + s < sn);
-                  };
-                  if (last && holds(last)) {
-                    up[x - x0] = last;
-                    continue;
-                  }
-                  if (up[x - x0] && holds(up[x - x0])) {
-                    last = up[x - x0];
-                    continue;
-                  }
-                }
-                rest[size_t(n++)] = int32_t(x);
-              }
-              // second pass: the step that held the voxel before it in this pass, then the offsets of its gradient
-              const Step* before = nullptr;
-              for (int i = 0; i < std::min<int>(n, kAhead); ++i) cover.prefetch(row[rest[size_t(i)]]);
-              for (int i = 0; i < n; ++i) {
-                if (i + kAhead < n) cover.prefetch(row[rest[size_t(i + kAhead)]]);
-                const int64_t x = rest[size_t(i)], s = row[x];
-                up[x - x0] = nullptr;
-                const bool interior = x >= K && x < nx - K;
-                if (!interior || s > cover.limit()) {
-                  if (!heldAnywhere(x, y, z, s)) keep(x, y, z, s, interior);
-                  continue;
-                }
-                const uint32_t* here = row + x;
-                const int16_t* far = cover.row(s);
-                const size_t list = ridge.listFor(
-                    [&](int64_t dx, int64_t dy, int64_t dz) { return int64_t(here[dx + nx * dy + plane * dz]); }, s);
-                auto holds = [&](const Step& o) {  // (both worked out: one branch, mostly not taken)
-                  const int64_t sn = here[o.delta];
-                  return (sn > s) & (far[o.cls] + s < sn);
-                };
-                const Step* hit = before && holds(*before) ? before : nullptr;
-                if (!hit) {
-                  for (const Step& o : ridge.steps(list)) {
-                    if (holds(o)) {
-                      hit = &o;
-                      break;
-                    }
-                  }
-                }
-                if (hit) {
-                  up[x - x0] = before = hit;
-                } else {
-                  keep(x, y, z, s, true);
-                }
-              }
-            }
-        }
-        gate.report(0.3 * double(done.fetch_add(z1 - z0) + (z1 - z0)) / double(nz));
-      }
-    });
+  if (f.boxDims().count() > 0) {
+    const int threads = threadsFor(f.boxDims().count() / 4);
+    std::vector<std::vector<Centre>> buckets = CentreSearch(f, gate, threads).run();
     if (gate.cancelled()) return cancelled();
-    // All centres, largest ball first (a counting sort by s), balls of one size in Morton order: the order among
-    // equal balls does not change the result, and neighbours in space walk the same bricks while they are cached.
-    std::vector<Centre> centres;
-    {
-      std::vector<int64_t> start(size_t(f.maxSquared()) + 2, 0);
-      for (const auto& b : buckets)
-        for (const Centre& c : b) ++start[size_t(f.maxSquared() - c.s) + 1];
-      for (size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
-      const std::vector<int64_t> first = start;
-      centres.resize(size_t(start.back()));
-      for (auto& b : buckets) {
-        for (const Centre& c : b) centres[size_t(start[size_t(f.maxSquared() - c.s)]++)] = c;
-        std::vector<Centre>().swap(b);
-      }
-      auto morton = [](const Centre& c) {
-        auto spread = [](uint64_t v) {  // bits of a 16-bit value to every third bit
-          v = (v | v << 16) & 0x0000FF0000FFull;
-          v = (v | v << 8) & 0x00F00F00F00F00Full;
-          v = (v | v << 4) & 0x0C30C30C30C30C3ull;
-          return (v | v << 2) & 0x249249249249249ull;
-        };
-        return spread(c.x) | spread(c.y) << 1 | spread(c.z) << 2;
-      };
-      const int64_t values = int64_t(first.size()) - 1;
-      parallelChunks(0, values, 1, threadsFor(int64_t(centres.size())), [&](int, int64_t vb, int64_t ve) {
-        for (int64_t v = vb; v < ve; ++v) {
-          std::sort(centres.begin() + first[size_t(v)], centres.begin() + first[size_t(v) + 1],
-                    [&](const Centre& a, const Centre& b) { return morton(a) < morton(b); });
-        }
-      });
-    }
+    const std::vector<Centre> centres = orderCentres(buckets, f.maxSquared());
     out.ball_centres = int64_t(centres.size());
-
-    // 2. Paint, largest ball first; a voxel takes the first ball that reaches it and is never visited again. Each
-    // thread walks the whole list of balls and paints only the voxels it owns (analysis/open_voxels.h), each ball
-    // within its window.
-    analysis_detail::OpenVoxels open(
-        d, threads, [&](int64_t x, int64_t y, int64_t z) { return data[x + nx * y + plane * z] != 0; },
-        params.simd == ThicknessParams::Simd::kSse2 ? analysis_detail::OpenVoxels::Simd::kSse2
-                                                    : analysis_detail::OpenVoxels::Simd::kAuto);
-    const int64_t total_centres = int64_t(centres.size());
-    forChunks(threads, threads, [&](int t, int64_t, int64_t) {
-      for (int64_t k = 0; k < total_centres && open.anyOpen(t); ++k) {
-        if ((k & 4095) == 0) {
-          if (gate.cancelled()) return;
-          if (t == 0) gate.report(0.3 + 0.65 * double(k) / double(total_centres));
-        }
-        const Centre c = centres[size_t(k)];
-        const uint32_t s = c.s;
-        const analysis_detail::OpenVoxels::Window w{{c.lo[0], c.lo[1], c.lo[2]}, {c.hi[0], c.hi[1], c.hi[2]}};
-        open.paintBall(t, c.x, c.y, c.z, s, w,
-                       [&](int64_t x, int64_t y, int64_t z) { data[x + nx * y + plane * z] = s; });
-      }
-    });
+    paintBalls(f, centres, params, gate, threads);
     if (gate.cancelled()) return cancelled();
   }
   out.stats = statistics(f, params.histogram_bins);

@@ -244,6 +244,44 @@ void PointRenderer::upload(Level& lvl) {
   lvl.uploaded_version = lvl.cloud.version();
 }
 
+namespace {
+
+// Depth test on; a see-through pass (opacity < 1: a ghost of the whole part around a peeled one) is blended with what
+// is drawn, tested against its depth but leaving it as it is.
+void setDepthAndBlending(float opacity) {
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  if (opacity < 1.0f) {
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendColor(0.0f, 0.0f, 0.0f, std::clamp(opacity, 0.0f, 1.0f));
+    glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+  } else {
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+  }
+}
+
+// The visible groups' points as ranges of the buffer, adjacent groups merged into one range each; counted in stats.
+void visibleRanges(const PointBuffer& buffer, const std::array<bool, kCodeGroups>& visible, std::vector<GLint>& firsts,
+                   std::vector<GLsizei>& counts, DrawStats& stats) {
+  for (int c = 0; c < kCodeGroups; ++c) {
+    const int64_t n = buffer.groupSize(c);
+    if (!visible[size_t(c)] || n == 0) continue;
+    const auto first = GLint(buffer.group_first[size_t(c)]);
+    if (!firsts.empty() && firsts.back() + counts.back() == first) {
+      counts.back() += GLsizei(n);
+    } else {
+      firsts.push_back(first);
+      counts.push_back(GLsizei(n));
+    }
+    stats.points_drawn += n;
+    ++stats.groups_drawn;
+  }
+}
+
+}  // namespace
+
 DrawStats PointRenderer::draw(const Camera& camera, int32_t width, int32_t height, const DrawParams& params) {
   DrawStats stats;
   if (!levels_[0].built || width < 1 || height < 1) return stats;
@@ -313,19 +351,7 @@ DrawStats PointRenderer::draw(const Camera& camera, int32_t width, int32_t heigh
     glUniform1f(loc("u_scalar_threshold"), params.scalar_threshold);
   }
 
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  if (params.opacity < 1.0f) {
-    // A see-through pass (a ghost of the whole part around a peeled one): blended with what is drawn, tested
-    // against its depth but leaving it as it is.
-    glDepthMask(GL_FALSE);
-    glEnable(GL_BLEND);
-    glBlendColor(0.0f, 0.0f, 0.0f, std::clamp(params.opacity, 0.0f, 1.0f));
-    glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
-  } else {
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-  }
+  setDepthAndBlending(params.opacity);
   glEnable(GL_PROGRAM_POINT_SIZE);
 
   // Group culling, then adjacent visible groups merged into one range each.
@@ -337,19 +363,7 @@ DrawStats PointRenderer::draw(const Camera& camera, int32_t width, int32_t heigh
   }
   std::vector<GLint> firsts;
   std::vector<GLsizei> counts;
-  for (int c = 0; c < kCodeGroups; ++c) {
-    const int64_t n = lvl.buffer.groupSize(c);
-    if (!visible[size_t(c)] || n == 0) continue;
-    const auto first = GLint(lvl.buffer.group_first[size_t(c)]);
-    if (!firsts.empty() && firsts.back() + counts.back() == first) {
-      counts.back() += GLsizei(n);
-    } else {
-      firsts.push_back(first);
-      counts.push_back(GLsizei(n));
-    }
-    stats.points_drawn += n;
-    ++stats.groups_drawn;
-  }
+  visibleRanges(lvl.buffer, visible, firsts, counts, stats);
   if (!firsts.empty()) {
     setPointAttributes(vao_, lvl.vbo);
     glMultiDrawArrays(GL_POINTS, firsts.data(), counts.data(), GLsizei(firsts.size()));

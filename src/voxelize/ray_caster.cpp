@@ -335,6 +335,12 @@ void RayCaster::rowCrossings(const Plane& plane, int32_t row, CrossingList& out)
     placeCrossings(plane, row, j, j_end, o);
     return;
   }
+  placeRun(plane, row, j, j_end, o);
+}
+
+void RayCaster::placeRun(const Plane& plane, int32_t row, int32_t j, int32_t j_end, Crossing* o) const {
+  const double w = cw_[size_t(row)];
+  const double* cv = cv_.data();
   // firstPast's usual case as straight-line code, two rays at a time where SSE2 is there: the estimate x of each
   // crossing and t = (x - u0) / h, so that centre floor(t) + 1 is the first past it whenever t's fractional part is
   // farther than delta from 0 and from 1 (x is within the plane's margin of the crossing; see gridSlack); a flag

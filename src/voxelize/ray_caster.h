@@ -163,6 +163,10 @@ class RayCaster {
   // Appends the crossings of `plane` with the rays of `row` (the triangle spans the row). Inlined into the sweep:
   // called once per active triangle and row.
   [[gnu::always_inline]] inline void rowCrossings(const Plane& plane, int32_t row, CrossingList& out) const;
+  // Writes the crossings of rays [j, j_end) of `row` (all crossed) to o[0..j_end - j), in straight-line code (two
+  // rays at a time with SSE2); falls back to placeCrossings when a crossing lies too near a centre to place so.
+  [[gnu::always_inline]] inline void placeRun(const Plane& plane, int32_t row, int32_t j, int32_t j_end,
+                                              Crossing* o) const;
   // The crossed rays of `row` among [j, j_end), each decided by the exact edge tests. Out of line: needed only where
   // a ray passes within rounding distance of an end of the triangle's section.
   [[gnu::noinline]] void exactCrossings(const Plane& plane, int32_t row, int32_t j, int32_t j_end,
