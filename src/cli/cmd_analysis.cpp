@@ -15,6 +15,7 @@
 #include "cli/commands.h"
 #include "cli/model_input.h"
 #include "cli/stream_readers.h"
+#include "vox/analysis/oblique_section.h"
 #include "vox/workflow/streamed_analyses.h"
 #include "cli/write_grid.h"
 #include "vox/analysis/analysis.h"
@@ -58,11 +59,72 @@ struct SectionOptions {
   SectionParams params;
   std::string out;
   int32_t scale = 1;
+  // At any angle (--normal): the plane's normal and point ("X,Y,Z"), the pixel size (0: the voxel size).
+  std::string normal, point;
+  double pixel = 0.0;
 };
+
+// "X,Y,Z" as three finite numbers.
+std::optional<glm::dvec3> parseTriple(const std::string& text) {
+  glm::dvec3 v(0.0);
+  size_t at = 0;
+  for (int k = 0; k < 3; ++k) {
+    const size_t comma = k < 2 ? text.find(',', at) : text.size();
+    if (comma == std::string::npos) return std::nullopt;
+    if (!parseFileNumber(std::string_view(text).substr(at, comma - at), v[k])) return std::nullopt;
+    at = comma + 1;
+  }
+  return v;
+}
+
+// The section on the plane through a point with a normal (docs/conventions.md, "Sections at any angle").
+int runObliqueSection(const SectionOptions& o, Output& out) {
+  ObliqueSectionParams p;
+  const auto normal = parseTriple(o.normal);
+  if (!normal) return out.fail(kExitUsage, "--normal wants NX,NY,NZ (three numbers), found '" + o.normal + "'");
+  p.normal = *normal;
+  if (!o.point.empty()) {
+    const auto point = parseTriple(o.point);
+    if (!point) return out.fail(kExitUsage, "--point wants X,Y,Z (three numbers), found '" + o.point + "'");
+    p.point = *point;
+    p.point_given = true;
+  }
+  p.pixel = o.pixel;
+  if (streamedVxm(o.c.file, o.c.mesh, out)) {
+    return out.fail(kExitUsage, o.c.file +
+                                    ": a section at an angle needs the grid in memory; this file's does not "
+                                    "fit under the memory limit (--memory-limit)");
+  }
+  auto model = loadModel(o.c.file, o.c.mesh, out);
+  if (!model) return out.fail(model.error());
+  auto section = computeObliqueSection(model->grid, p);
+  if (!section) return out.fail(kExitUsage, section.error().message);
+  if (auto s = io::savePng(io::sectionPicture(section->mask, o.scale), o.out); !s) return out.fail(s.error());
+  const std::string units = unitsLabel(model->grid.frame().units);
+  auto& d = out.data();
+  d["normal"] = jsonVec3(section->normal);
+  d["point"] = jsonVec3(section->point);
+  d["u"] = jsonVec3(section->u);
+  d["v"] = jsonVec3(section->v);
+  d["pixel_size"] = section->pixel;
+  d["filled"] = section->filled;
+  d["area"] = section->area;
+  d["width"] = section->mask.width;
+  d["height"] = section->mask.height;
+  d["output"] = o.out;
+  out.say("section through (" + significant(section->point.x) + ", " + significant(section->point.y) + ", " +
+          significant(section->point.z) + ") normal to (" + significant(section->normal.x, 4) + ", " +
+          significant(section->normal.y, 4) + ", " + significant(section->normal.z, 4) +
+          "): " + std::to_string(section->filled) + " filled samples of " + significant(section->pixel) + " " + units +
+          ", area " + significant(section->area) + " " + units + "^2; wrote " + o.out);
+  return out.finish();
+}
 
 int runSection(const SectionOptions& o) {
   Output out(o.c.json);
   if (const std::string why = pngOutputProblem(o.out); !why.empty()) return out.fail(kExitUsage, why);
+  if (!o.normal.empty()) return runObliqueSection(o, out);
+  if (o.params.index < 0) return out.fail(kExitUsage, "section needs --axis and --index, or --normal");
   // The model's dims and frame (its voxels too, unless the file is read in windows).
   VoxelGrid grid;
   Result<Section> section = Error{};
@@ -82,6 +144,7 @@ int runSection(const SectionOptions& o) {
   d["index"] = o.params.index;
   d["position"] = section->position;
   d["filled"] = section->filled;
+  d["area"] = double(section->filled) * grid.voxelSize() * grid.voxelSize();
   d["width"] = section->mask.width;
   d["height"] = section->mask.height;
   d["output"] = o.out;
@@ -368,10 +431,21 @@ int runMass(const MassOptions& o) {
 void addSectionCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<SectionOptions>();
   addCommonOptions(sub, o->c);
-  sub.add_option("--axis", o->params.axis, "Section normal: x, y or z")->required()->transform(axisWords());
-  sub.add_option("--index", o->params.index, "Voxel index along the axis (0-based)")->required();
+  o->params.index = -1;
+  auto* axis = sub.add_option("--axis", o->params.axis, "Section normal: x, y or z")->transform(axisWords());
+  auto* index = sub.add_option("--index", o->params.index, "Voxel index along the axis (0-based)");
+  axis->needs(index);
+  index->needs(axis);
+  auto* normal =
+      sub.add_option("--normal", o->normal, "A section at any angle: the plane's normal NX,NY,NZ (instead of --axis)");
+  normal->excludes(axis)->excludes(index);
+  sub.add_option("--point", o->point, "With --normal: a point X,Y,Z of the plane (default: the grid's centre)")
+      ->needs(normal);
+  sub.add_option("--pixel", o->pixel, "With --normal: the samples' spacing in model units (default: the voxel size)")
+      ->needs(normal)
+      ->check(CLI::PositiveNumber);
   sub.add_option("-o,--output", o->out, "Output PNG")->required();
-  sub.add_option("--scale", o->scale, "Pixels per voxel (default 1)")->check(CLI::Range(1, 64));
+  sub.add_option("--scale", o->scale, "Pixels per voxel or sample (default 1)")->check(CLI::Range(1, 64));
   sub.callback([o, &ctx] { ctx.exit_code = runSection(*o); });
 }
 

@@ -273,6 +273,38 @@ TEST_F(Cli, sectionWritesImageOfTheRightSize) {
   EXPECT_EQ(png->height, 10);
 }
 
+// A section at any angle: the unit cube cut through its centre normal to a face diagonal is a 1 x sqrt(2) rectangle;
+// the axis section reports its area too; a plane that is no plane is a usage error (exit 1) naming the option.
+TEST_F(Cli, aSectionAtAnyAngleReportsItsSamplesAndArea) {
+  auto r = runVoxmod(
+      {"section", box_stl(), "--res", "40", "--normal", "1,1,0", "--pixel", "0.0125", "-o", path("o.png"), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = parse(r);
+  EXPECT_NEAR(j["area"].get<double>(), std::sqrt(2.0), 0.02 * std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(j["pixel_size"].get<double>(), 0.0125);
+  EXPECT_NEAR(j["normal"][0].get<double>(), std::sqrt(0.5), 1e-12);
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(j["point"][a].get<double>(), 0.5, 1e-12);  // the grid's centre
+  auto png = io::loadPng(path("o.png"));
+  ASSERT_TRUE(png.ok()) << png.error().message;
+  EXPECT_EQ(png->width, j["width"].get<int>());
+  auto axis =
+      runVoxmod({"section", box_stl(), "--res", "10", "--axis", "z", "--index", "3", "-o", path("a.png"), "--json"});
+  ASSERT_EQ(axis.exit_code, 0) << axis.err;
+  EXPECT_NEAR(parse(axis)["area"].get<double>(), 1.0, 1e-12);
+  auto zero = runVoxmod({"section", box_stl(), "--res", "10", "--normal", "0,0,0", "-o", path("z.png")});
+  EXPECT_EQ(zero.exit_code, 1);  // a usage error
+  EXPECT_NE(zero.err.find("non-zero"), std::string::npos) << zero.err;
+  auto words = runVoxmod({"section", box_stl(), "--res", "10", "--normal", "up", "-o", path("w.png")});
+  EXPECT_EQ(words.exit_code, 1);  // a usage error
+  EXPECT_NE(words.err.find("--normal"), std::string::npos) << words.err;
+  auto both = runVoxmod(
+      {"section", box_stl(), "--res", "10", "--normal", "0,0,1", "--axis", "z", "--index", "1", "-o", path("b.png")});
+  EXPECT_EQ(both.exit_code, 1);  // a usage error
+  auto none = runVoxmod({"section", box_stl(), "--res", "10", "-o", path("n.png")});
+  EXPECT_EQ(none.exit_code, 1);  // a usage error
+  EXPECT_NE(none.err.find("--normal"), std::string::npos) << none.err;
+}
+
 TEST_F(Cli, xrayReportsThicknessInVoxelsAndModelUnits) {
   auto r = runVoxmod({"xray", box_stl(), "--res", "10", "--axis", "z", "--mode", "total", "-o", path("x.png"), "--csv",
                       path("x.csv"), "--json"});
