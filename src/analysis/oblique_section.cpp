@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -35,6 +36,9 @@ Result<ObliqueSection> computeObliqueSection(const VoxelGrid& grid, const Obliqu
   if (!std::isfinite(pixel) || !(pixel > 0.0)) {
     return makeError(ErrorCode::kInvalidArgument, "the section's pixel size must be a positive number");
   }
+  if (pixel > glm::length(box_max - box_min)) {
+    return makeError(ErrorCode::kInvalidArgument, "the section's pixel size is larger than the whole model");
+  }
   ObliqueSection s;
   s.normal = glm::normalize(params.normal);
   s.point = point;
@@ -49,9 +53,11 @@ Result<ObliqueSection> computeObliqueSection(const VoxelGrid& grid, const Obliqu
     u0 = std::min(u0, a), u1 = std::max(u1, a), v0 = std::min(v0, b), v1 = std::max(v1, b);
   }
   const double wide = std::ceil((u1 - u0) / pixel), high = std::ceil((v1 - v0) / pixel);
-  if (!(wide * high <= double(params.max_pixels)) || wide > 1e9 || high > 1e9) {
-    return makeError(ErrorCode::kLimit, "the section would be " + std::to_string(int64_t(wide)) + " x " +
-                                            std::to_string(int64_t(high)) + " pixels: choose a larger pixel size");
+  if (!(wide * high <= double(params.max_pixels)) || !(wide <= 1e9) || !(high <= 1e9)) {
+    char size[64];
+    std::snprintf(size, sizeof size, "%.3g x %.3g", wide, high);
+    return makeError(ErrorCode::kLimit,
+                     std::string("the section would be ") + size + " pixels: choose a larger pixel size");
   }
   const auto w = int32_t(std::max(1.0, wide)), ht = int32_t(std::max(1.0, high));
   s.origin = point + (u0 + 0.5 * pixel) * s.u + (v0 + 0.5 * pixel) * s.v;
@@ -63,7 +69,8 @@ Result<ObliqueSection> computeObliqueSection(const VoxelGrid& grid, const Obliqu
     for (int32_t i = 0; i < w; ++i) {
       const glm::dvec3 p = row + double(i) * du;
       const double x = std::floor(p.x), y = std::floor(p.y), z = std::floor(p.z);
-      if (x < 0 || y < 0 || z < 0 || x >= grid.nx() || y >= grid.ny() || z >= grid.nz()) continue;
+      // (written so that NaN is outside too)
+      if (!(x >= 0 && y >= 0 && z >= 0 && x < grid.nx() && y < grid.ny() && z < grid.nz())) continue;
       if (!grid.get(int64_t(x), int64_t(y), int64_t(z))) continue;
       s.mask.at(i, ht - 1 - j) = 1;
       ++s.filled;

@@ -214,20 +214,6 @@ void updateDocumentGuarded(AppState& state) {
   }
 }
 
-// The harness's press or typing (harness.h), one step this frame, in place of what the mouse and keyboard gave.
-void feedSyntheticInput(Harness* h) {
-  if (!h || !h->input.active) return;
-  SyntheticInput& in = h->input;
-  ImGuiIO& io = ImGui::GetIO();
-  io.MousePos = ImVec2(in.x, in.y);
-  io.MouseDown[0] = in.phase == 1;
-  io.KeyCtrl = in.phase == 3;
-  io.KeysDown[GLFW_KEY_A] = in.phase == 3;
-  if (in.phase == 4) io.AddInputCharactersUTF8(in.text.c_str());
-  io.KeysDown[GLFW_KEY_ENTER] = in.phase == 5;
-  if (++in.phase >= in.steps()) in.active = false;
-}
-
 // Builds the UI and draws it into the back buffer; returns the times the phases started (build, draw, swap).
 std::array<double, 3> drawUi(AppState& state, bool finish, Harness* h) {
   std::array<double, 3> t{nowSeconds(), 0.0, 0.0};

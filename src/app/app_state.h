@@ -12,7 +12,10 @@
 #include <tuple>
 #include <vector>
 
+#include "app/autosave_state.h"
 #include "app/job.h"
+#include "app/parts_state.h"
+#include "app/viewport_state.h"
 #include "app/settings.h"
 #include "app/texture.h"
 #include "vox/analysis/analysis.h"
@@ -252,75 +255,6 @@ struct VoxelizeOutcome {
   std::shared_ptr<const MeshSource> mesh;  // null when the open mesh was used
 };
 
-// The Parts panel (app/parts.h): which parts are selected, what Section, X-ray and mass work on, and the
-// interference of the current parts.
-struct PartsUi {
-  std::vector<size_t> selected;  // part indices, in the order clicked (a Boolean takes the first two)
-  bool scope_selected = false;   // Section, X-ray and mass on the selected part (else on the union of the parts)
-  Connectivity connectivity = Connectivity::kFace;  // splitting a voxel model into components
-  PartOp op = PartOp::kUnion;
-  uint64_t interference_version = 0;  // the model version `interference` was found for (0: none)
-  std::optional<Interference> interference;
-  double interference_s = 0.0;
-  int32_t pair = -1;                  // the interference pair shown (index into interference->pairs); -1: none
-  VoxelGrid pair_overlap;             // its shared voxels on the model's frame
-  uint64_t pair_key = 0;              // changes with the pair shown (the overlay renderer's key)
-  std::vector<int64_t> voxel_counts;  // filled voxels of each part (partVoxelCounts)
-  uint64_t counts_version = 0;        // the model version they were counted for
-  uint64_t interference_cancelled_version = 0;  // the model version whose interference search was cancelled
-  // The clearance between two parts (parts_clearance.cpp): the parts and model version it was found for.
-  std::optional<Clearance> clearance;
-  size_t clearance_a = 0, clearance_b = 0;
-  uint64_t clearance_version = 0;
-  std::string clearance_error;  // why it could not be found (e.g. too large a box), for the same parts and version
-  // The placement fields while they are edited (model units; committed when an edit ends).
-  glm::dvec3 translation_edit{0.0};
-  size_t translation_edit_part = SIZE_MAX;
-  uint64_t translation_edit_version = 0;
-  // The colour picker: the part whose swatch was active in the last frame (a drag goes on while it stays so), and the
-  // undo step the last colour change made (setPartColour joins a drag's changes into it) with its part.
-  size_t colour_drag_part = SIZE_MAX;
-  std::shared_ptr<const Assembly> colour_step;
-  size_t colour_step_part = SIZE_MAX;
-};
-
-// A window's autosave found at start-up whose window is gone (autosave.h).
-struct OrphanAutosave {
-  std::filesystem::path path;
-  std::string document;  // the name of the document it holds ("part.stl")
-  std::string when;      // when it was written, local time ("2026-12-06 18:30")
-};
-
-// Autosave and recovery (autosave.h).
-struct AutosaveState {
-  std::filesystem::path dir;   // empty: autosave is off
-  std::filesystem::path file;  // this window's autosave
-  double interval_s = 30.0;
-  // What the file holds (the model version, its parts, the undo depth and the view it was written for) and when it
-  // was written.
-  struct Key {
-    uint64_t version = 0;
-    const void* parts = nullptr;
-    size_t undo_depth = 0;
-    // The view the project keeps.
-    int panel = 0;
-    int section_axis = 0;
-    int32_t section_index = -1;
-    std::vector<size_t> selected;
-    bool operator==(const Key&) const = default;
-  };
-  Key written;
-  bool file_written = false;
-  double last_write = 0.0;
-  Job<Key> job;
-  std::string last_error;  // the last write that failed (shown in the status bar once)
-  // Recovery: autosaves of windows that are gone, newest first; the offer is shown while there are some, until the
-  // user answers "Later".
-  std::vector<OrphanAutosave> orphans;
-  bool offer_dismissed = false;
-  bool keep_on_exit = false;  // the run ends as a kill would (a script's `exit`): the file stays
-};
-
 struct LoadedFile {
   std::filesystem::path path;
   std::shared_ptr<const MeshSource> mesh;  // a mesh or CAD file
@@ -332,44 +266,6 @@ struct LoadedFile {
   // dims are full_dims.
   int32_t coarse_level = 1;
   Dims full_dims;
-};
-
-// The 3D view: GL objects of the window's context.
-struct Viewport {
-  std::unique_ptr<render::PointRenderer> renderer;  // the model
-  std::unique_ptr<render::PointRenderer> overlay;   // disputed voxels or the core, drawn over the model
-  std::unique_ptr<render::PointRenderer> ghost;     // the whole part, faint, around a peeled model
-
-  // One renderer per part of a scene (parts_view.h), each on its placed part's own box; the model version they were
-  // last brought up to date with, and how many times a part renderer was filled (setGrid) so far: a move refills only
-  // the part that moved.
-  struct PartView {
-    std::unique_ptr<render::PointRenderer> renderer;
-    LatticeGrid voxels;  // what it was filled from: the part's voxels as added (sharing the part's layers)
-    PartPlacement placement;
-    Box3i box;  // the placed part's box of lattice voxels: the renderer's voxel (0, 0, 0) is box.min
-  };
-  std::vector<PartView> parts;
-  uint64_t parts_version = 0;
-  int64_t part_fills = 0;
-
-  render::Framebuffer framebuffer;
-  uint64_t uploaded_version = 0;  // model_version the renderer holds
-  // While the parts are drawn, model_bounds come from their renderers: the parts_version and model_version they were
-  // taken for (parts_bounds_version 0: from the model's renderer).
-  uint64_t parts_bounds_version = 0;
-  uint64_t parts_bounds_model = 0;
-  uint64_t overlay_key = 0;             // what the overlay holds (see viewport.cpp)
-  uint64_t ghost_key = 0;               // base_id of the model the ghost holds while peeled, else 0
-  bool dirty = true;                    // draw again on the next frame
-  std::vector<double> drawn_signature;  // what the framebuffer shows (see viewport.cpp)
-  bool interacting = false;             // the mouse is dragging the view or a slider: coarse points
-  bool was_coarse = false;
-  double aspect = 0.0;  // width / height the camera was last used with              // the last image used coarse
-                        // points (redraw sharp when the drag ends)
-  render::DrawStats stats;
-  double draw_ms = 0.0;
-  float x = 0, y = 0, width = 0, height = 0;  // where the view sits in the window, pixels
 };
 
 // Shown one at a time in a modal dialog; each names the file and the problem.

@@ -37,7 +37,8 @@ std::optional<io::VolumeFormat> formatFor(AppState& state, const std::filesystem
 void start(AppState& state, const std::filesystem::path& path, Job<std::filesystem::path>::Work work,
            std::string note = {}) {
   state.volume_export_note = std::move(note);
-  state.volume_export_job.start("Writing " + path.filename().string(), std::move(work));
+  // A file written before a late Cancel is said to be written.
+  state.volume_export_job.start("Writing " + path.filename().string(), std::move(work), true);
 }
 
 // One scalar field under `name`, as voxmod peel --depth and voxmod xray --volume write it (cli/output.h,

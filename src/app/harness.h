@@ -21,9 +21,9 @@ struct WidgetRect {
   float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
 
-// A press or typing that the harness gives ImGui in place of the mouse and keyboard, one step a frame (app.cpp,
-// feedSyntheticInput): the pointer over (x, y), the button down, up (the click); when typing, then Ctrl+A (select
-// all), the text, and Enter.
+// A press or typing that the harness gives ImGui in place of the mouse and keyboard, one step a frame
+// (script_input.cpp, feedSyntheticInput): the pointer over (x, y), the button down, up (the click); when typing, then
+// Ctrl+A (select all), the text, and Enter.
 struct SyntheticInput {
   bool active = false;
   float x = 0, y = 0;

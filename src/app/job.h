@@ -35,10 +35,12 @@ class Job {
     retired_.clear();  // jthread joins
   }
 
-  // Runs `work` on a new thread. A job already running is cancelled and retired.
-  void start(std::string label, Work work) {
+  // Runs `work` on a new thread. A job already running is cancelled and retired. `keeps_late_result`: work with an
+  // effect outside the window (a file written) hands out what it did even when cancelled too late to stop it.
+  void start(std::string label, Work work, bool keeps_late_result = false) {
     retire();
     label_ = std::move(label);
+    keeps_late_result_ = keeps_late_result;
     state_ = std::make_shared<State>();
     auto state = state_;
     thread_ = std::jthread([state, work = std::move(work), label = label_] {
@@ -71,13 +73,13 @@ class Job {
 
   // The result once the worker has finished, handed out once; nullopt while running or when idle. A job cancelled
   // gives kCancelled even when its work finished anyway (a cancel pressed after its last progress report): what the
-  // user cancelled never lands.
+  // user cancelled never lands (unless started with keeps_late_result: then the user is told what it did).
   std::optional<Result<T>> take() {
     joinRetired();
     if (!state_ || !state_->done.load(std::memory_order_acquire)) return std::nullopt;
     thread_.join();
     std::optional<Result<T>> out = std::move(state_->result);
-    if (state_->cancel.load(std::memory_order_relaxed) && out && out->ok()) {
+    if (!keeps_late_result_ && state_->cancel.load(std::memory_order_relaxed) && out && out->ok()) {
       out.emplace(makeError(ErrorCode::kCancelled, label_ + ": cancelled"));
     }
     state_.reset();
@@ -111,6 +113,7 @@ class Job {
   }
 
   std::string label_;
+  bool keeps_late_result_ = false;
   std::shared_ptr<State> state_;
   std::jthread thread_;
   std::vector<Retired> retired_;

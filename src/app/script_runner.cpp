@@ -1,4 +1,5 @@
 #include "app/script_runner.h"
+#include "app/script_step.h"
 
 #include <unistd.h>
 
@@ -17,25 +18,6 @@
 #include "vox/io/file_util.h"
 
 namespace vox::app {
-namespace {
-
-constexpr double kJobTimeoutS = 600.0;  // background work that runs longer than this fails the script
-
-enum class Step { kDone, kWait, kFail };
-
-struct Context {
-  AppState& state;
-  Harness& h;
-  const ScriptCommand& cmd;
-  std::string error;  // set with kFail
-
-  Step fail(std::string message) {
-    error = std::move(message);
-    return Step::kFail;
-  }
-};
-
-ActionArgs argsOf(const ScriptCommand& cmd) { return ActionArgs{cmd.args, cmd.rest}; }
 
 // Waits until no background work runs, then `frames` more frames so that its results are drawn.
 Step waitSettled(Context& c, int frames) {
@@ -52,6 +34,12 @@ Step waitSettled(Context& c, int frames) {
   }
   return Step::kDone;
 }
+
+namespace {
+
+constexpr double kJobTimeoutS = 600.0;  // background work that runs longer than this fails the script
+
+ActionArgs argsOf(const ScriptCommand& cmd) { return ActionArgs{cmd.args, cmd.rest}; }
 
 // An action: dispatched as its menu item is; then, from the next frame on, wait for the work it started.
 Step runAction(Context& c, const Action& a) {
@@ -170,94 +158,6 @@ Step runHover(Context& c) {
   auto it = std::find_if(rects.begin(), rects.end(), [&](const WidgetRect& w) { return w.name == args[0]; });
   if (it == rects.end()) return c.fail("no widget '" + args[0] + "' on screen");
   glfwSetCursorPos(c.state.window, double(it->x0 + (it->x1 - it->x0) * fx), double(it->y0 + (it->y1 - it->y0) * fy));
-  return Step::kDone;
-}
-
-// The occurrence-th widget of that name drawn last frame (0: the first); null when it is not on screen.
-const WidgetRect* findWidget(const Harness& h, const std::string& name, int occurrence = 0) {
-  for (const WidgetRect& w : h.widget_rects) {
-    if (w.name == name && occurrence-- == 0) return &w;
-  }
-  return nullptr;
-}
-
-// Starts a press (or, with `typing`, a click and typing `text`) at the middle of a widget.
-void startInput(Harness& h, const WidgetRect& w, bool typing, const std::string& text) {
-  h.input = SyntheticInput{};
-  h.input.active = true;
-  h.input.x = 0.5f * (w.x0 + w.x1);
-  h.input.y = 0.5f * (w.y0 + w.y1);
-  h.input.typing = typing;
-  h.input.text = text;
-}
-
-// press WIDGET / type TEXT WIDGET: the input over the next frames, then the work it started.
-Step runPress(Context& c, bool typing) {
-  Harness& h = c.h;
-  if (!h.started) {
-    const std::string name =
-        typing ? c.cmd.rest.substr(std::min(c.cmd.rest.size(), c.cmd.args[0].size() + 1)) : c.cmd.rest;
-    const WidgetRect* w = findWidget(h, name);
-    if (!w) return c.fail("no widget '" + name + "' on screen");
-    startInput(h, *w, typing, typing ? c.cmd.args[0] : std::string());
-    return Step::kWait;
-  }
-  if (h.input.active) return Step::kWait;
-  if (Step w = waitSettled(c, 1); w != Step::kDone) return w;
-  return h.failed ? Step::kFail : Step::kDone;
-}
-
-// press-all: one widget after another; what a press raises (an error message, a dialog, a file browser) is closed
-// before the next, so that each press reaches its widget.
-Step runPressAll(Context& c) {
-  Harness& h = c.h;
-  PressAll& p = h.press_all;
-  AppState& s = c.state;
-  if (!h.started) {
-    p = PressAll{};
-    return Step::kWait;
-  }
-  if (!p.collected) {  // the widgets once the panel asked for before has been drawn and its work is done
-    if (Step w = waitSettled(c, 2); w != Step::kDone) return w;
-    p.collected = true;
-    for (const WidgetRect& w : h.widget_rects) {
-      if (w.kind == "mark") continue;  // a panel's own name for a widget recorded under its label too
-      int occurrence = 0;
-      for (const PressAll::Target& t : p.targets) occurrence += t.name == w.name ? 1 : 0;
-      p.targets.push_back({w.name, w.kind, occurrence});
-    }
-  }
-  // Errors are what a press may well raise (a field given a value out of range): counted, not a failure.
-  if (s.errors.reported != h.errors_seen) {
-    p.errors += s.errors.reported - h.errors_seen;
-    h.errors_seen = s.errors.reported;
-    std::printf("press-all: error shown: %s\n", s.errors.last_reported.c_str());
-  }
-  if (h.input.active) return Step::kWait;
-  if (p.pressing) {
-    if (Step w = waitSettled(c, 1); w != Step::kDone) return w;
-    p.pressing = false;
-    s.errors.messages.clear();
-    s.close_dialogs = true;
-    return Step::kWait;  // a frame for the dialogs to close
-  }
-  while (p.next < p.targets.size()) {
-    const PressAll::Target& t = p.targets[p.next++];
-    const WidgetRect* w = findWidget(h, t.name, t.occurrence);
-    if (!w) {
-      ++p.missing;
-      continue;
-    }
-    std::printf("press-all: %s (%s)\n", t.name.c_str(), t.kind.c_str());
-    std::fflush(stdout);
-    startInput(h, *w, t.kind == "field", "2");
-    p.pressing = true;
-    ++p.pressed;
-    return Step::kWait;
-  }
-  std::printf("press-all: pressed %d widgets (%d no longer on screen), %lld error messages shown\n", p.pressed,
-              p.missing, static_cast<long long>(p.errors));
-  std::fflush(stdout);
   return Step::kDone;
 }
 

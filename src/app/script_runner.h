@@ -12,6 +12,9 @@ namespace vox::app {
 
 // Call once per frame before the UI is built.
 void stepScript(Harness& harness, AppState& state);
+// Between the backends' new frame and ImGui's: the harness's press or typing (harness.h), one step this frame, in
+// place of what the mouse and keyboard gave (script_input.cpp).
+void feedSyntheticInput(Harness* harness);
 // True when no background work is running or queued: the window shows final results.
 bool settled(const AppState& state);
 // The window's state as "key = value" lines (the `state` command): section, peel, X-ray, model facts and the

@@ -1,12 +1,14 @@
 #include "app/settings.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <system_error>
 
+#include "vox/core/units.h"
 #include "vox/io/file_util.h"
 #include "vox/core/text.h"
 
@@ -54,7 +56,8 @@ Settings loadSettings(const std::filesystem::path& file) {
       parseNumber(value, s.window_height);
     else if (key == "recent")
       recent.push_back(value);
-    else if (key == "file_units" && value.find(' ') != std::string::npos && s.file_units.size() < kMaxFileUnits)
+    else if (key == "file_units" && value.find(' ') != std::string::npos && s.file_units.size() < kMaxFileUnits &&
+             metresPerUnit(value.substr(0, value.find(' '))) > 0.0)  // a unit voxmod knows, or nothing
       s.file_units.emplace_back(trim(value.substr(value.find(' ') + 1)), value.substr(0, value.find(' ')));
     else if (key == "last_directory")
       s.last_directory = value;
@@ -109,7 +112,11 @@ Status saveSettings(const Settings& settings, const std::filesystem::path& file)
 void rememberFileUnits(Settings& settings, const std::string& path, const std::string& units) {
   auto& f = settings.file_units;
   std::erase_if(f, [&](const auto& e) { return e.first == path; });
-  if (units == "model" || units.empty() || units.find_first_of(" \n") != std::string::npos) return;
+  // Only what one line of the file holds and gives back: a known unit, a path without line breaks or spaces at its end.
+  if (metresPerUnit(units) <= 0.0 || path.empty() || path.find_first_of("\n\r") != std::string::npos ||
+      std::isspace(static_cast<unsigned char>(path.back()))) {
+    return;
+  }
   f.insert(f.begin(), {path, units});
   if (f.size() > kMaxFileUnits) f.resize(kMaxFileUnits);
 }

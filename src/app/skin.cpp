@@ -56,26 +56,27 @@ void peelTo(AppState& state, int32_t layers) {
   ModelSnapshot next;
   next.base_id = cur.base_id;
   next.base = cur.base;
-  next.version = takeId(state);
   next.peeled = k;
-  next.grid = depth->peeled(k).remaining;
-  next.grid.frame() = cur.base.frame();  // the depth map keeps the frame it was computed with; units may differ now
   next.origin = cur.origin;
   next.round_peels = cur.round_peels;
   next.label = k == 0 ? "reset skin" : "peel to layer " + std::to_string(k);
   // A state the document was in before (the same base and round peels, the same layers peeled) holds the same voxels:
-  // it takes that state's version, so what was derived from it is found again and, when it is what the file holds,
-  // the document is not unsaved (a peel and then Reset skin).
-  const auto same = [&](const ModelSnapshot& s) {
-    return s.base_id == cur.base_id && s.peeled == k && s.round_peels == cur.round_peels && s.parts == cur.parts;
-  };
+  // it comes back as it was, with its version (what was derived from it is found again and, when it is what the file
+  // holds, the document is not unsaved: a peel and then Reset skin) and its parts (Reset skin on a peeled scene).
+  const ModelSnapshot* same = nullptr;
   for (const auto* stack : {&state.doc.undo_stack, &state.doc.redo_stack}) {
     for (const ModelSnapshot& s : *stack) {
-      if (same(s)) {
-        next.version = s.version;
-        next.grid = s.grid;
-      }
+      if (s.base_id == cur.base_id && s.peeled == k && s.round_peels == cur.round_peels) same = &s;
     }
+  }
+  if (same) {
+    next.version = same->version;
+    next.grid = same->grid;
+    next.parts = same->parts;
+  } else {
+    next.version = takeId(state);
+    next.grid = depth->peeled(k).remaining;
+    next.grid.frame() = cur.base.frame();  // the depth map keeps the frame it was computed with; units may differ now
   }
   setModel(state, std::move(next), true);
 }

@@ -33,7 +33,9 @@ std::string dimsText(const Dims& d) {
 
 std::string formatCoordinate(double value, const std::string& units, double voxel_size) {
   // One decimal finer than the voxel: 0.0127 mm voxels read to 0.001 mm, 3.8 mm voxels to 0.1 mm.
-  const int decimals = voxel_size > 0.0 ? std::clamp(int(std::ceil(-std::log10(voxel_size))) + 1, 0, 9) : 3;
+  const int decimals = voxel_size > 0.0 && std::isfinite(voxel_size)
+                           ? int(std::clamp(std::ceil(-std::log10(voxel_size)) + 1.0, 0.0, 9.0))
+                           : 3;
   const double unit = std::pow(10.0, -decimals);
   const double shown = std::abs(value) < 0.5 * unit ? 0.0 : value;  // never "-0.000"
   char buf[64];

@@ -164,8 +164,11 @@ class AsciiParser {
 
   Status expect(std::string_view keyword) {
     const std::string_view tok = next();
-    if (!keywordIs(tok, keyword)) return fail("expected '" + std::string(keyword) + "'", tok);
-    return Ok{};
+    if (keywordIs(tok, keyword)) return Ok{};
+    const bool cut =
+        p_ == end_ && !tok.empty() && tok.size() < keyword.size() && keywordIs(tok, keyword.substr(0, tok.size()));
+    if (cut) return endsIn(tok, "expected '" + std::string(keyword) + "'");  // "endlo" at the end of the file
+    return fail("expected '" + std::string(keyword) + "'", tok);
   }
 
   Status number(float& value, bool finite_required) {
@@ -185,7 +188,11 @@ class AsciiParser {
       }
       return failAt("number out of float32 range: " + quoteBytes(tok));
     }
-    if (ec != std::errc() || ptr != e) return fail("expected a number", tok);
+    if (ec != std::errc() || ptr != e) {
+      // A number cut short by the end of the file ("-1.291420e") was truncated there.
+      const bool cut = p_ == end_ && tok.find_first_not_of("0123456789+-.eE") == std::string_view::npos;
+      return cut ? endsIn(tok, "expected a number") : fail("expected a number", tok);
+    }
     if (finite_required && !std::isfinite(value)) {
       return failAt("vertex coordinate is not finite: " + quoteBytes(tok));
     }
@@ -194,9 +201,11 @@ class AsciiParser {
 
   Status fail(const std::string& what, std::string_view found) {
     if (found.empty()) return failAt("the file ends early (truncated?): " + what + ", found end of file");
-    // The last token, cut short by the end of the file ("-1.291420e", "endlo"): the file was truncated.
-    if (p_ == end_) return failAt("the file ends early, in " + quoteBytes(found) + " (truncated?): " + what);
     return failAt(what + ", found " + quoteBytes(found));
+  }
+  // The file's last token, cut short by its end.
+  Status endsIn(std::string_view token, const std::string& what) {
+    return failAt("the file ends early, in " + quoteBytes(token) + " (truncated?): " + what);
   }
   Status failAt(const std::string& what) {
     return makeError(ErrorCode::kParse, name_ + ":" + std::to_string(token_line_) + ": " + what);

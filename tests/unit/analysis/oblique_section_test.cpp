@@ -88,6 +88,10 @@ TEST(ObliqueSection, badPlanesAreRefused) {
   p.normal = {0.0, 0.0, 1.0};
   p.pixel = -1.0;
   EXPECT_EQ(computeObliqueSection(g, p).error().code, ErrorCode::kInvalidArgument);
+  p.pixel = 1e308;  // one sample for the whole model (and steps of 1e308 / h voxels: never sampled)
+  EXPECT_EQ(computeObliqueSection(g, p).error().code, ErrorCode::kInvalidArgument);
+  p.pixel = 1e-300;  // 1e300-odd samples a side: said without converting that to an integer
+  EXPECT_EQ(computeObliqueSection(g, p).error().code, ErrorCode::kLimit);
   p.pixel = 1e-6;  // 8e6 x 8e6 samples
   auto big = computeObliqueSection(g, p);
   ASSERT_FALSE(big.ok());

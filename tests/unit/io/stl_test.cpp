@@ -75,6 +75,22 @@ TEST(Stl, asciiWithoutTrailingNewlineAndWithSpacesEverywhereLoads) {
   EXPECT_EQ(r->mesh.triangles.size(), 1u);
 }
 
+// A file cut short says so, naming the cut token, only when the token is cut: a keyword's beginning or a number;
+// a whole but wrong last token (no newline after it) is named as found.
+TEST(Stl, aTruncatedAsciiFileSaysItEndsEarlyOnlyWhenItDoes) {
+  const std::string head =
+      "solid t\nfacet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n ";
+  const auto message = [](const std::string& text) {
+    const auto r = parseStl(bytesOf(text), "t.stl");
+    return r.ok() ? std::string("(loaded)") : r.error().message;
+  };
+  EXPECT_EQ(message(head + "endlo"), "t.stl:7: the file ends early, in 'endlo' (truncated?): expected 'endloop'");
+  EXPECT_EQ(message(head + "endfacet"), "t.stl:7: expected 'endloop', found 'endfacet'");
+  EXPECT_EQ(message(head.substr(0, head.size() - 16) + "vertex 1 0 -1.29e"),
+            "t.stl:6: the file ends early, in '-1.29e' (truncated?): expected a number");
+  EXPECT_EQ(message(head.substr(0, head.size() - 16) + "vertex 1 0 x"), "t.stl:6: expected a number, found 'x'");
+}
+
 TEST(Stl, asciiNumbersParseToTheNearestFloat) {
   // 0.1 is not a float; from_chars must round the decimal once, to the nearest float (not via double).
   const std::string s =
