@@ -297,7 +297,25 @@ Status sectionAt(AppState& s, const ActionArgs& a) {  // AXIS INDEX: the slider'
   }
   s.section.axis = *axis;
   s.section.index = index;
+  s.section.oblique = false;
   s.view.cut_away = true;
+  showPanel(s, Panel::kSection);
+  return Ok{};
+}
+
+Status sectionPlane(AppState& s, const ActionArgs& a) {
+  glm::dvec3 n(0.0);
+  for (int k = 0; k < 3; ++k) {
+    if (!parseFileNumber(a.words[size_t(k)], n[k])) return badValues("section-plane takes NX NY NZ [OFFSET]");
+  }
+  if (n == glm::dvec3(0.0)) return badValues("section-plane: the normal must not be zero");
+  double offset = 0.0;
+  if (a.words.size() == 4 && !parseFileNumber(a.words[3], offset)) {
+    return badValues("section-plane: '" + a.words[3] + "' is not an offset in model units");
+  }
+  s.section.normal = n;
+  s.section.offset = offset;
+  s.section.oblique = true;
   showPanel(s, Panel::kSection);
   return Ok{};
 }

@@ -109,6 +109,7 @@ void sectionNext(AppState& s);
 void sectionPlay(AppState& s);
 bool isPlaying(const AppState& s);
 Status sectionAt(AppState& s, const ActionArgs& a);
+Status sectionPlane(AppState& s, const ActionArgs& a);  // NX NY NZ [OFFSET]: a section at any angle
 
 // ---- Skin ----
 void peelOne(AppState& s);

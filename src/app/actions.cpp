@@ -88,6 +88,7 @@ const Action kActions[] = {
   {ActionId::kSectionPrev,    "section-prev",    "Section", "Previous section",                   {GLFW_KEY_PAGE_DOWN, 0},     0, 0,  sectionPrev,   nullptr,           hasSection,  nullptr},
   {ActionId::kSectionNext,    "section-next",    "Section", "Next section",                       {GLFW_KEY_PAGE_UP, 0},       0, 0,  sectionNext,   nullptr,           hasSection,  nullptr},
   {ActionId::kSectionPlay,    "section-play",    "Section", "Play / pause sections",              {GLFW_KEY_SPACE, 0},         0, 0,  sectionPlay,   nullptr,           hasSection,  isPlaying},
+  {ActionId::kSectionPlane,   "section-plane",   nullptr,   "Section at an angle",                kNone,                       3, 4,  nullptr,       sectionPlane,      hasSection,  nullptr},
   {ActionId::kSectionAt,      "section",         nullptr,   "Section at an index",                kNone,                       2, 2,  nullptr,       sectionAt,         hasSection,  nullptr},
 
   {ActionId::kPeelOne,        "peel-one",        "Skin",    "Peel one layer",                     {GLFW_KEY_P, 0},             0, 0,  peelOne,       nullptr,           canPeel,     nullptr},

@@ -75,6 +75,7 @@ enum class ActionId {
   kSectionNext,
   kSectionPlay,
   kSectionAt,
+  kSectionPlane,
   kPeelOne,
   kPeelN,
   kPeelBack,

@@ -387,6 +387,7 @@ int runGui(int argc, char** argv) {
   cancelJobs(state);
   shutdownViewport(state);
   state.section_texture.reset();
+  state.oblique_texture.reset();
   state.xray_texture.reset();
   setWidgetRecorder(nullptr);
   closeWindow(*window);

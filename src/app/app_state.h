@@ -19,6 +19,7 @@
 #include "app/settings.h"
 #include "app/texture.h"
 #include "vox/analysis/analysis.h"
+#include "vox/analysis/oblique_section.h"
 #include "vox/analysis/assembly.h"
 #include "vox/analysis/thickness.h"
 #include "vox/core/assembly.h"
@@ -129,6 +130,11 @@ struct ViewParams {
 struct SectionUi {
   Axis axis = Axis::kZ;
   int32_t index = -1;  // -1: the middle, set when a model arrives
+  // At any angle (section-plane): the plane with this normal, `offset` model units along it from the centre of the
+  // model's box. The 3D view is not cut away meanwhile.
+  bool oblique = false;
+  glm::dvec3 normal{1.0, 1.0, 0.0};
+  double offset = 0.0;
   bool playing = false;
   int32_t step = 1;
   float play_speed = 15.0f;  // sections per second while playing
@@ -336,6 +342,11 @@ struct AppState {
   std::optional<Section> section_result;
   std::string section_error;
   Texture section_texture;
+  // The section at an angle (section-plane), for the model version, normal and offset it was computed for.
+  std::optional<ObliqueSection> oblique_result;
+  std::tuple<uint64_t, glm::dvec3, double> oblique_key{0, glm::dvec3(0.0), 0.0};
+  std::string oblique_error;
+  Texture oblique_texture;
   XrayKey xray_texture_key;
   Texture xray_texture;
   std::optional<render::Box3> model_bounds;

@@ -63,12 +63,13 @@ bool exportSurface(AppState& state, const std::filesystem::path& path, bool smoo
 }
 
 bool exportSectionPng(AppState& state, const std::filesystem::path& path) {
-  const Section* section = currentSection(state);
-  if (!section) {
+  const Section* section = state.section.oblique ? nullptr : currentSection(state);
+  const ObliqueSection* oblique = state.section.oblique ? currentObliqueSection(state) : nullptr;
+  if (!section && !oblique) {
     reportError(state, "there is no section to export", path);
     return false;
   }
-  if (Status s = io::savePng(io::sectionPicture(section->mask, 1), path); !s) {
+  if (Status s = io::savePng(io::sectionPicture(section ? section->mask : oblique->mask, 1), path); !s) {
     reportError(state, describe(s.error(), path), path);
     return false;
   }

@@ -11,6 +11,8 @@
 //   export-depth PATH | export-xray-volume PATH (.vti .vdb .nrrd)
 //   voxelize R [MODE]                voxelize the open mesh (MODE auto|parity|nonzero|vote); no values: the dialog
 //   section AXIS INDEX               the section at voxel INDEX along x|y|z (and the Section panel)
+//   section-plane NX NY NZ [OFFSET]  the section at any angle: normal (NX, NY, NZ), OFFSET model units along it from
+//                                    the centre of the model's box
 //   peel N | peel-one | peel-back | peel-core | peel-reset
 //   skin-layers | cancel-skin-layers | compute-thickness | cancel-thickness   compute again after a cancel; cancel
 //   xray AXIS MODE                   X-ray along x|y|z, MODE min|max|total (and the X-ray panel)

@@ -2,6 +2,9 @@
 #include "app/update.h"
 
 #include <algorithm>
+#include <tuple>
+
+#include <glm/geometric.hpp>
 #include <cmath>
 #include <memory>
 #include <utility>
@@ -34,6 +37,32 @@ const Section* currentSection(AppState& state) {
     state.section_texture.reset();  // re-uploaded by the panel when shown
   }
   return state.section_result ? &*state.section_result : nullptr;
+}
+
+const ObliqueSection* currentObliqueSection(AppState& state) {
+  if (state.model.empty() || !state.section.oblique) return nullptr;
+  const auto key = std::make_tuple(state.model_version, state.section.normal, state.section.offset);
+  if (key != state.oblique_key) {
+    state.oblique_key = key;
+    ObliqueSectionParams p;
+    p.normal = state.section.normal;
+    const GridFrame& f = state.model.frame();
+    const glm::dvec3 centre =
+        f.origin + glm::dvec3(state.model.nx(), state.model.ny(), state.model.nz()) * (0.5 * f.voxel_size);
+    const double length = glm::length(p.normal);
+    p.point = centre + (length > 0.0 ? p.normal / length : p.normal) * state.section.offset;
+    p.point_given = true;
+    auto s = computeObliqueSection(state.model, p);
+    if (s) {
+      state.oblique_result = std::move(s).value();
+      state.oblique_error.clear();
+    } else {
+      state.oblique_result.reset();
+      state.oblique_error = s.error().message;
+    }
+    state.oblique_texture.reset();  // re-uploaded by the panel when shown
+  }
+  return state.oblique_result ? &*state.oblique_result : nullptr;
 }
 
 void updateDocument(AppState& state) {

@@ -12,6 +12,9 @@ namespace vox::app {
 void updateDocument(AppState& state);
 // The section for the current params (null when there is no model).
 const Section* currentSection(AppState& state);
+// The section at an angle the Section panel shows (SectionUi::oblique), computed when its plane or the model
+// changes; null when it is not shown or could not be made (oblique_error says why).
+const ObliqueSection* currentObliqueSection(AppState& state);
 // The X-ray for the current params, once computed (null before, and without a model).
 const XrayResult* currentXray(const AppState& state);
 // Number of voxels along an axis of the model (0 without one).

@@ -83,7 +83,7 @@ render::DrawParams drawParams(const AppState& state, bool coarse) {
   p.point_size_px = state.view.point_size_px;
   p.coarse = coarse;
   p.lod_point_budget = state.viewport.interacting ? kMovingPointBudget : kRestingPointBudget;
-  if (state.panel == Panel::kSection && state.view.cut_away && !state.model.empty()) {
+  if (state.panel == Panel::kSection && state.view.cut_away && !state.section.oblique && !state.model.empty()) {
     p.section.axis = toRenderAxis(state.section.axis);
     p.section.index = state.section.index;
     p.section.side = state.view.keep_above ? render::SectionSide::kAbove : render::SectionSide::kBelow;

@@ -58,9 +58,13 @@ expect after_refusal.txt selected_translation "$tx 0 0"
 expect after_refusal.txt selected_turns "0 0 1"
 grep -q "expected error: .*more than the" "$out/voxmod.log" || fail "the absurd move was not refused with a message"
 
-# Every panel pressed, with the assembly and with one model: 14 rounds, each with more than the 3D view's buttons.
+# The section at an angle shows its plane's facts (and its widgets are pressed below).
+grep -q "^rect_X@normal = " "$out/oblique.txt" || fail "the section at an angle shows no normal fields"
+grep -q "^rect_section_offset = " "$out/oblique.txt" || fail "the section at an angle shows no offset slider"
+
+# Every panel pressed, with the assembly and with one model: 15 rounds, each with more than the 3D view's buttons.
 rounds=$(grep -c "^press-all: pressed" "$out/voxmod.log")
-((rounds == 14)) || fail "expected 14 press-all rounds, found $rounds"
+((rounds == 15)) || fail "expected 15 press-all rounds, found $rounds"
 while read -r n; do
   ((n > 8)) || fail "a press-all round pressed only $n widgets"
 done < <(sed -n 's/^press-all: pressed \([0-9]*\) widgets.*/\1/p' "$out/voxmod.log")

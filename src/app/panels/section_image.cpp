@@ -28,7 +28,41 @@ ImageAxes imageAxes(Axis a) {
   return {0, 1};
 }
 
+// The section at an angle: its picture, right and up as the plane's axes say, a scale bar in model units.
+static void drawObliqueImage(AppState& state) {
+  const ObliqueSection* o = currentObliqueSection(state);
+  if (!o) {
+    ImGui::TextWrapped("%s", state.oblique_error.empty() ? "No section." : state.oblique_error.c_str());
+    return;
+  }
+  if (state.oblique_texture.empty()) state.oblique_texture.upload(io::sectionPicture(o->mask, 1));
+  const std::string units = state.model.frame().units;
+  ImGui::TextWrapped("Section normal to (%.3g, %.3g, %.3g), %s from the centre: %s samples", o->normal.x, o->normal.y,
+                     o->normal.z, formatLength(state.section.offset, units).c_str(), groupDigits(o->filled).c_str());
+  const int32_t iw = o->mask.width, ih = o->mask.height;
+  const float label_h = ImGui::GetTextLineHeightWithSpacing();
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const float room_w = std::max(1.0f, avail.x - 24.0f), room_h = std::max(1.0f, avail.y - 3.0f * label_h);
+  float scale = std::min(room_w / float(iw), room_h / float(ih));
+  if (scale >= 1.0f) scale = std::floor(scale);
+  const ImVec2 size(float(iw) * scale, float(ih) * scale);
+  const ImVec2 origin(ImGui::GetCursorScreenPos().x + 20.0f, ImGui::GetCursorScreenPos().y);
+  ImGui::SetCursorScreenPos(origin);
+  ImGui::Image(textureId(state.oblique_texture.id()), size);
+  markWidget("section_image");
+  ImGui::SetCursorScreenPos(ImVec2(origin.x, origin.y + size.y + 2.0f));
+  ImGui::TextDisabled("right (%.2f, %.2f, %.2f), up (%.2f, %.2f, %.2f)", o->u.x, o->u.y, o->u.z, o->v.x, o->v.y,
+                      o->v.z);
+  drawScaleBar(ImVec2(origin.x, origin.y + size.y + 2.0f + label_h), scale / float(o->pixel), units,
+               std::max(size.x * 0.5f, 60.0f));
+  ImGui::Dummy(ImVec2(0.0f, label_h));
+}
+
 void drawSectionImage(AppState& state) {
+  if (state.section.oblique) {
+    drawObliqueImage(state);
+    return;
+  }
   const Section* section = currentSection(state);
   if (!section) {
     ImGui::TextWrapped("%s", state.section_error.empty() ? "No section." : state.section_error.c_str());

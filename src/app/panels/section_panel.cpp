@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include <glm/geometric.hpp>
 #include <imgui.h>
 
 #include "app/actions.h"
@@ -57,6 +58,64 @@ void drawFullResolution(AppState& state) {
                ImVec2(float(f.mask.width) * scale, float(f.mask.height) * scale));
 }
 
+std::string numberWord(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+// A section at any angle: the plane's normal and its offset from the centre of the model's box (each edit is the
+// section-plane action), and what the section holds.
+void drawObliqueControls(AppState& state) {
+  SectionUi& s = state.section;
+  glm::dvec3 normal = s.normal;
+  double offset = s.offset;
+  bool edited = false;
+  const char* labels[3] = {"X##normal", "Y##normal", "Z##normal"};
+  ImGui::TextUnformatted("Plane normal");
+  for (int k = 0; k < 3; ++k) {
+    ImGui::SetNextItemWidth(70.0f);
+    if (k > 0) ImGui::SameLine();
+    widget::InputDouble(labels[k], &normal[k], 0.0, 0.0, "%.3g");
+    edited = edited || ImGui::IsItemDeactivatedAfterEdit();
+  }
+  const GridFrame& f = state.model.frame();
+  const float reach =
+      float(0.5 * f.voxel_size * glm::length(glm::dvec3(state.model.nx(), state.model.ny(), state.model.nz())));
+  float off = float(offset);
+  ImGui::SetNextItemWidth(-1.0f);
+  if (widget::SliderFloat("##offset", &off, -reach, reach, "offset %.4g")) {
+    offset = double(off);
+    edited = true;
+  }
+  markWidget("section_offset");
+  if (edited && normal != glm::dvec3(0.0)) {
+    dispatchValues(state, ActionId::kSectionPlane,
+                   {numberWord(normal.x), numberWord(normal.y), numberWord(normal.z), numberWord(offset)});
+  }
+  const ObliqueSection* o = currentObliqueSection(state);
+  if (!o) {
+    if (!state.oblique_error.empty()) ImGui::TextWrapped("%s", state.oblique_error.c_str());
+    return;
+  }
+  heading("This section");
+  const std::string units = unitsLabel(f.units);
+  if (beginFactTable("oblique_facts")) {
+    tableRow("Filled samples", groupDigits(o->filled));
+    char text[96];
+    std::snprintf(text, sizeof text, "%.5g %s^2", o->area, units.c_str());
+    tableRow("Area", text);
+    tableRow("Sample spacing", formatLength(o->pixel, f.units));
+    std::snprintf(text, sizeof text, "(%.3f, %.3f, %.3f)", o->point.x, o->point.y, o->point.z);
+    tableRow("Through", text);
+    ImGui::EndTable();
+  }
+  wrappedColoured(ImGui::GetStyle().Colors[ImGuiCol_TextDisabled],
+                  "The 3D view is not cut at an angle; pick X, Y or Z for the cut-away.");
+  ImGui::Spacing();
+  if (widget::Button("Export section PNG...")) dispatch(state, ActionId::kExportSectionPng);
+}
+
 }  // namespace
 
 void drawSectionPanel(AppState& state) {
@@ -66,7 +125,7 @@ void drawSectionPanel(AppState& state) {
   }
   peeledNotice(state);
   SectionUi& s = state.section;
-  int axis = int(s.axis);
+  int axis = s.oblique ? 3 : int(s.axis);
   ImGui::TextUnformatted("Normal to");
   for (int a = 0; a < 3; ++a) {
     ImGui::SameLine();
@@ -75,6 +134,15 @@ void drawSectionPanel(AppState& state) {
       const Axis to = Axis(a);
       dispatchValues(state, ActionId::kSectionAt, {axisName(to), std::to_string(axisLength(state, to) / 2)});
     }
+  }
+  ImGui::SameLine();
+  if (widget::RadioButton("any##axis", &axis, 3) && !s.oblique) {
+    dispatchValues(state, ActionId::kSectionPlane,
+                   {numberWord(s.normal.x), numberWord(s.normal.y), numberWord(s.normal.z), numberWord(s.offset)});
+  }
+  if (s.oblique) {
+    drawObliqueControls(state);
+    return;
   }
   const int32_t n = axisLength(state, s.axis);
   advancePlayback(state, n);
