@@ -367,8 +367,10 @@ void drawViewport(AppState& state) {
     drawMeasureOverlay(state, dl, pos, w, h, aspect, legend_bottom + 4.0f);
     drawClearanceOverlay(state, dl, pos, w, h, aspect);
     drawAxisTriad(state.view.camera, ImVec2(pos.x + 40.0f, pos.y + float(h) - 60.0f), 28.0f);
-    if (vp.overlay_key % 4 == 3) {
-      dl->AddText(ImVec2(pos.x + 8.0f, pos.y + 8.0f), IM_COL32(255, 70, 60, 255), interferencePairText(state).c_str());
+    if (vp.overlay_key % 4 == 3) {  // under the view buttons, wrapped within the view
+      const ImVec2 at(pos.x + 8.0f, pos.y + 12.0f + ImGui::GetFrameHeight());
+      dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), at, IM_COL32(255, 70, 60, 255),
+                  interferencePairText(state).c_str(), nullptr, std::max(80.0f, float(w) - 16.0f));
     } else if (vp.overlay_key != 0) {
       const bool core = vp.overlay_key % 4 == 1;
       dl->AddText(ImVec2(pos.x + 8.0f, pos.y + 8.0f), core ? IM_COL32(255, 60, 220, 255) : IM_COL32(255, 215, 30, 255),

@@ -24,6 +24,11 @@ namespace {
 
 constexpr int kMostPairs = 500;  // more would not be read; the count above the list says how many there are
 
+// A volume column's header: with the unit when the model has one ("Volume, mm^3"), else "Volume" (in model units).
+std::string volumeHeader(const std::string& units) {
+  return units == "model" || units.empty() ? std::string("Volume") : "Volume, " + unitsLabel(units) + "^3";
+}
+
 // A volume for a column headed with its unit: four significant digits, never an exponent ("15 790", "2.77").
 std::string volumeText(int64_t voxels, double voxel_size) {
   const double v = double(voxels) * voxel_size * voxel_size * voxel_size;
@@ -117,8 +122,7 @@ void drawPartList(AppState& state, const Assembly& parts) {
   if (!beginList("parts", 3, int(parts.size()), 10)) return;
   ImGui::TableSetupColumn("Show", ImGuiTableColumnFlags_WidthFixed, 58.0f);
   ImGui::TableSetupColumn("Part");
-  ImGui::TableSetupColumn(("Volume, " + unitsLabel(parts.lattice().units) + "^3").c_str(),
-                          ImGuiTableColumnFlags_WidthFixed, 110.0f);
+  ImGui::TableSetupColumn(volumeHeader(parts.lattice().units).c_str(), ImGuiTableColumnFlags_WidthFixed, 110.0f);
   ImGui::TableHeadersRow();
   ImGuiListClipper clipper;
   clipper.Begin(int(parts.size()));
@@ -247,7 +251,7 @@ void drawPairList(AppState& state, const Assembly& parts, const Interference& in
   ImGui::TableSetupColumn("A");
   ImGui::TableSetupColumn("B");
   ImGui::TableSetupColumn("Voxels", ImGuiTableColumnFlags_WidthFixed, 64.0f);
-  ImGui::TableSetupColumn(("Volume, " + unitsLabel(units) + "^3").c_str(), ImGuiTableColumnFlags_WidthFixed, 90.0f);
+  ImGui::TableSetupColumn(volumeHeader(units).c_str(), ImGuiTableColumnFlags_WidthFixed, 90.0f);
   ImGui::TableHeadersRow();
   for (int i = 0; i < rows; ++i) {
     const InterferencePair& p = inter.pairs[size_t(i)];

@@ -70,9 +70,9 @@ void drawSectionImage(AppState& state) {
   }
   if (state.section_texture.empty()) state.section_texture.upload(partsSectionPicture(state, *section));
   const std::string units = state.model.frame().units;
-  ImGui::Text("Section %s = %s, index %d: %s voxels", axisName(section->axis),
-              formatCoordinate(section->position, units, state.model.voxelSize()).c_str(), section->index,
-              groupDigits(section->filled).c_str());
+  ImGui::TextWrapped("Section %s = %s, index %d: %s voxels", axisName(section->axis),
+                     formatCoordinate(section->position, units, state.model.voxelSize()).c_str(), section->index,
+                     groupDigits(section->filled).c_str());
 
   const ImageAxes ax = imageAxes(section->axis);
   const int32_t iw = section->mask.width, ih = section->mask.height;
