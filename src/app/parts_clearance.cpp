@@ -1,11 +1,15 @@
 // The clearance between two parts (vox/analysis/assembly.h, findClearance) for the Parts panel: found on a worker for
 // the two selected parts of one model version; the panel shows the gap and the 3D view marks the two voxels that
 // realise it (view_overlays.cpp).
+#include <algorithm>
 #include <cstdio>
 #include <utility>
 #include <vector>
 
+#include <glm/common.hpp>
+
 #include "app/parts.h"
+#include "app/update.h"
 #include "vox/core/text.h"
 
 namespace vox::app {
@@ -59,6 +63,13 @@ void updateClearance(AppState& state) {
   if (r->ok()) {
     ui.clearance = std::move(*r).value();
     ui.clearance_error.clear();
+    // The view turns to the gap, as to a clicked interference pair: its marker was off screen until a Fit.
+    glm::ivec3 a, b;
+    if (clearanceVoxels(state, a, b)) {
+      const glm::dvec3 mid = (glm::dvec3(a) + glm::dvec3(b)) * 0.5 + 0.5;
+      const glm::ivec3 span = glm::abs(a - b);
+      centreView(state, mid, 1.2 * double(std::max({span.x, span.y, span.z})) + 8.0);
+    }
   } else {
     ui.clearance.reset();
     ui.clearance_error = r->error().message;

@@ -691,6 +691,8 @@ TEST(AppParts, theClearanceOfTwoPartsIsTheLibrarysAndMarksTwoVoxels) {
   ASSERT_TRUE(clearanceVoxels(state, va, vb));
   EXPECT_EQ(va, c.voxel_a - parts.extent().min);  // the model's voxel coordinates
   EXPECT_EQ(vb, c.voxel_b - parts.extent().min);
+  // The view turned to the gap (its marker was off screen until a Fit).
+  EXPECT_EQ(state.view.camera.target, (glm::dvec3(va) + glm::dvec3(vb)) * 0.5 + 0.5);
   EXPECT_NE(clearanceText(state).find("Gap between a.vxm and b.vxm: 2 model units"), std::string::npos)
       << clearanceText(state);
   // Shown while the two parts are the selection.
