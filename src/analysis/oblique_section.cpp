@@ -30,8 +30,11 @@ Result<ObliqueSection> computeObliqueSection(const VoxelGrid& grid, const Obliqu
   if (!finite(params.normal) || glm::length(params.normal) == 0.0) {
     return makeError(ErrorCode::kInvalidArgument, "the section's normal must be a non-zero vector");
   }
-  const glm::dvec3 point = params.point_given ? params.point : (box_min + box_max) * 0.5;
-  if (!finite(point)) return makeError(ErrorCode::kInvalidArgument, "the section's point must be finite");
+  const glm::dvec3 point =
+      (params.point_given ? params.point : (box_min + box_max) * 0.5) + glm::normalize(params.normal) * params.offset;
+  if (!finite(point)) {
+    return makeError(ErrorCode::kInvalidArgument, "the section's point and offset must be finite");
+  }
   const double pixel = params.pixel == 0.0 ? h : params.pixel;  // 0: the voxel size
   if (!std::isfinite(pixel) || !(pixel > 0.0)) {
     return makeError(ErrorCode::kInvalidArgument, "the section's pixel size must be a positive number");

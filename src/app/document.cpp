@@ -259,15 +259,15 @@ bool saveModel(AppState& state, const std::filesystem::path& path) {
     return false;
   }
   const std::string ext = io::lowerExtension(path);
-  if (ext == ".vxp") return saveProjectAs(state, path);
-  if (ext != ".vxm" && ext != ".binvox") {
+  if (ext != ".vxp" && ext != ".vxm" && ext != ".binvox") {
     reportError(state,
                 "models are saved as .vxp (a voxmod project: the parts with their names, colours and placements), "
                 ".vxm (voxmod's voxel file) or .binvox; choose one of those extensions",
                 path);
     return false;
   }
-  if (Status s = io::saveVoxelFile(state.model, path); !s) {
+  const Status s = ext == ".vxp" ? io::saveProject(projectOf(state), path) : io::saveVoxelFile(state.model, path);
+  if (!s) {
     reportError(state, describe(s.error(), path), path);
     return false;
   }

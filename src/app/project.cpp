@@ -35,21 +35,6 @@ io::ProjectFile projectOf(const AppState& state) {
   return p;
 }
 
-bool saveProjectAs(AppState& state, const std::filesystem::path& path) {
-  if (!state.doc.model) {
-    reportError(state, "there is no model to save yet: voxelize the mesh first", path);
-    return false;
-  }
-  if (Status s = io::saveProject(projectOf(state), path); !s) {
-    reportError(state, describe(s.error(), path), path);
-    return false;
-  }
-  state.doc.save_path = path;
-  state.doc.saved_version = state.doc.model->version;
-  addRecentFile(state.settings, std::filesystem::absolute(path).lexically_normal().string());
-  return true;
-}
-
 namespace {
 
 void setPanelNamed(AppState& state, const std::string& name) {

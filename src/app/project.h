@@ -11,8 +11,6 @@ namespace vox::app {
 
 // What the document holds now, as a project (grids shared, not copied).
 io::ProjectFile projectOf(const AppState& state);
-// Saves the document as a project; on success it is the file Save writes to. Errors go to the error dialog.
-bool saveProjectAs(AppState& state, const std::filesystem::path& path);
 // A project read from `path` becomes the document, as it was saved: a new document whose model (or scene of parts)
 // is the project's, with the panel, section and selection it had. `recovered`: it comes from an autosave, so it
 // has no file of its own yet and is unsaved.

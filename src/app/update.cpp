@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <tuple>
 
-#include <glm/geometric.hpp>
 #include <cmath>
 #include <memory>
 #include <utility>
@@ -44,14 +43,9 @@ const ObliqueSection* currentObliqueSection(AppState& state) {
   const auto key = std::make_tuple(state.model_version, state.section.normal, state.section.offset);
   if (key != state.oblique_key) {
     state.oblique_key = key;
-    ObliqueSectionParams p;
+    ObliqueSectionParams p;  // through the centre of the model's box, moved along the normal
     p.normal = state.section.normal;
-    const GridFrame& f = state.model.frame();
-    const glm::dvec3 centre =
-        f.origin + glm::dvec3(state.model.nx(), state.model.ny(), state.model.nz()) * (0.5 * f.voxel_size);
-    const double length = glm::length(p.normal);
-    p.point = centre + (length > 0.0 ? p.normal / length : p.normal) * state.section.offset;
-    p.point_given = true;
+    p.offset = state.section.offset;
     auto s = computeObliqueSection(state.model, p);
     if (s) {
       state.oblique_result = std::move(s).value();

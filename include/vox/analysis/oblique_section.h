@@ -16,13 +16,14 @@ struct ObliqueSectionParams {
   glm::dvec3 normal{0.0, 0.0, 1.0};       // any length but zero
   bool point_given = false;               // else the centre of the grid's box
   glm::dvec3 point{0.0};                  // model units
+  double offset = 0.0;                    // the plane moved this far along the normal from the point (model units)
   double pixel = 0.0;                     // model units; 0: the voxel size
   int64_t max_pixels = int64_t(1) << 28;  // a larger image is refused (kLimit)
 };
 
 struct ObliqueSection {
   glm::dvec3 normal{0.0, 0.0, 1.0};  // unit
-  glm::dvec3 point{0.0};             // the plane's point (model units)
+  glm::dvec3 point{0.0};             // the plane's point (model units), the offset applied
   // The image's axes in the plane (unit vectors, right and up; u x v = normal; up is +Z laid into the plane, or +Y
   // for a plane near horizontal) and the centre of pixel (0, 0) of the bottom row: pixel (i, j) counted from the
   // bottom has its centre at origin + i pixel u + j pixel v.

@@ -38,6 +38,15 @@ TEST(ObliqueSection, aBallsDiscHasItsAreaAtEveryTiltAndOffset) {
       ASSERT_TRUE(s.ok()) << s.error().message;
       const double expected = std::numbers::pi * (r * r - d * d) * h * h;
       EXPECT_NEAR(s->area, expected, 0.03 * expected) << "normal " << n.x << "," << n.y << "," << n.z << " d " << d;
+      // The same plane given as the ball's centre and an offset along the normal: the same samples.
+      ObliqueSectionParams q;
+      q.normal = n;
+      q.point = centre;
+      q.point_given = true;
+      q.offset = d * h;
+      auto t = computeObliqueSection(ball, q);
+      ASSERT_TRUE(t.ok());
+      EXPECT_EQ(t->filled, s->filled);
       EXPECT_DOUBLE_EQ(s->area, double(s->filled) * h * h);
       EXPECT_NEAR(glm::dot(s->u, s->normal), 0.0, 1e-12);
       EXPECT_NEAR(glm::dot(s->v, s->normal), 0.0, 1e-12);
