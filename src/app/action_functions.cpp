@@ -256,7 +256,7 @@ Result<size_t> listRow(const ActionArgs& a, size_t count, const char* what, cons
 }  // namespace
 
 Status thinRegionAt(AppState& s, const ActionArgs& a) {
-  const ThinWalls* thin = currentThinWalls(s);
+  const Walls* thin = currentThinWalls(s);
   const auto i = listRow(a, thin ? thin->regions.size() : 0, "thin-region", "a region's",
                          "no wall is thinner than the minimum wall");
   if (!i) return i.error();

@@ -22,6 +22,7 @@
 #include "vox/analysis/oblique_section.h"
 #include "vox/analysis/assembly.h"
 #include "vox/analysis/thickness.h"
+#include "vox/analysis/walls.h"
 #include "vox/core/assembly.h"
 #include "vox/core/mesh.h"
 #include "vox/core/voxel_grid.h"
@@ -232,6 +233,7 @@ struct ThicknessResult {
   VoxelGrid grid;   // the voxels it was computed from (sharing their layers)
   Thickness thickness;
   std::vector<HotSpot> hot_spots;
+  WallRidge ridge;  // the wall stops, from which the walls under any minimum wall are found
   double seconds = 0.0;
 };
 
@@ -242,8 +244,8 @@ struct ThicknessUi {
   uint64_t cancelled_version = 0;  // the model version whose computation the user cancelled (not asked again)
   uint64_t thin_result = 0;        // the result (ThicknessResult::id) and the minimum wall `thin` was found for
   double thin_min_wall = -1.0;
-  std::optional<ThinWalls> thin;
-  SectionKey image_key;  // what the section texture shows, with the minimum wall it paints red
+  std::optional<Walls> thin;  // walls, not edges (vox/analysis/walls.h)
+  SectionKey image_key;       // what the section texture shows, with the minimum wall it paints red
   double image_min_wall = -1.0;
   Texture image_texture;
   // The thin-wall region and the hot spot last clicked in the lists (indices; -1: none), in the result
@@ -251,8 +253,9 @@ struct ThicknessUi {
   int32_t selected_region = -1;
   int32_t selected_spot = -1;
   uint64_t selected_result = 0;
-  uint64_t volume_key = 0;     // the result (ThicknessResult::id) the 3D view's volume holds (0: none)
-  std::string volume_problem;  // why the 3D view cannot colour by thickness (empty: it can)
+  uint64_t volume_key = 0;        // the result (ThicknessResult::id) the 3D view's volume holds (0: none)
+  double volume_min_wall = -1.0;  // ... and the minimum wall whose walls it marks
+  std::string volume_problem;     // why the 3D view cannot colour by thickness (empty: it can)
 };
 
 // A voxelization, and the CAD file's new tessellation when the open one was too coarse for its grid.

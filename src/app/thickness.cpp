@@ -46,21 +46,24 @@ void requestThickness(AppState& state) {
   const uint64_t id = takeId(state);
   state.thickness.request(key, "Computing thickness", [grid, id](const ProgressFn& progress) {
     using R = Result<std::shared_ptr<const ThicknessResult>>;
-    // The bar's share of each stage, as their times go on real parts: distance 0..10%, hot spots 10..35%,
-    // thickness 35..100%.
+    // The bar's share of each stage, as their times go on real parts: distance 0..10%, hot spots 10..30%, wall
+    // ridge 30..40%, thickness 40..100% (in the order of ThicknessStage: distance, hot spots, thickness, walls).
     const workflow::StageProgress bar = [&progress](workflow::ThicknessStage stage, double f) {
-      const double from[] = {0.0, 0.1, 0.35}, to[] = {0.1, 0.35, 1.0};
+      const double from[] = {0.0, 0.1, 0.4, 0.3}, to[] = {0.1, 0.3, 1.0, 0.4};
       const int i = int(stage);
       return !progress || progress(from[i] + (to[i] - from[i]) * f);
     };
-    auto run = workflow::runThickness(grid, {}, bar);
+    workflow::ThicknessRunOptions options;
+    options.walls = WallRidgeParams{};
+    auto run = workflow::runThickness(grid, options, bar);
     if (!run) return R(run.error());
     auto out = std::make_shared<ThicknessResult>();
     out->id = id;
     out->grid = grid;
     out->thickness = std::move(run->thickness);
     out->hot_spots = std::move(run->hot_spots);
-    out->seconds = run->distance_s + run->hot_spots_s + run->thickness_s;
+    out->ridge = std::move(run->ridge).value();
+    out->seconds = run->distance_s + run->hot_spots_s + run->walls_s + run->thickness_s;
     return R(std::shared_ptr<const ThicknessResult>(std::move(out)));
   });
 }
@@ -84,14 +87,14 @@ double minWall(const AppState& state) {
   return r ? 0.25 * r->thickness.stats.max : 0.0;
 }
 
-const ThinWalls* currentThinWalls(AppState& state) {
+const Walls* currentThinWalls(AppState& state) {
   const ThicknessResult* r = currentThickness(state);
   if (!r) return nullptr;
   ThicknessUi& ui = state.thickness_ui;
   const double wall = minWall(state);
   if (!ui.thin || ui.thin_result != r->id || ui.thin_min_wall != wall) {
     ui.selected_region = -1;  // its index was into the regions found before
-    auto thin = findThinWalls(r->thickness, wall);
+    auto thin = findWalls(r->ridge, r->thickness.radius, WallParams{wall});
     ui.thin_result = r->id;
     ui.thin_min_wall = wall;
     if (thin) {
@@ -104,7 +107,7 @@ const ThinWalls* currentThinWalls(AppState& state) {
 }
 
 const ThinWallRegion* selectedRegion(AppState& state) {
-  const ThinWalls* thin = currentThinWalls(state);
+  const Walls* thin = currentThinWalls(state);
   const ThicknessResult* r = currentThickness(state);
   const ThicknessUi& ui = state.thickness_ui;
   if (!thin || !r || ui.selected_result != r->id || ui.selected_region < 0 ||

@@ -24,7 +24,7 @@ void retryThickness(AppState& state);
 // The minimum wall in use (model units): the user's, or a quarter of the maximum thickness.
 double minWall(const AppState& state);
 // Thin walls under minWall, found again when the value or the model changed; null without a thickness.
-const ThinWalls* currentThinWalls(AppState& state);
+const Walls* currentThinWalls(AppState& state);
 // The thin-wall region and the hot spot last clicked in the panel's lists: null when none was, or when the model or
 // the thin walls have changed since.
 const ThinWallRegion* selectedRegion(AppState& state);

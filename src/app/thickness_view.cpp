@@ -85,21 +85,27 @@ void syncThicknessVolume(AppState& state) {
   ThicknessUi& ui = state.thickness_ui;
   const ThicknessResult* r = shownThickness(state);
   const uint64_t key = r ? r->id : 0;
-  if (key == ui.volume_key || !state.viewport.renderer) return;
+  const Walls* walls = r ? currentThinWalls(state) : nullptr;
+  const double wall = walls ? walls->min_wall : -1.0;
+  if ((key == ui.volume_key && wall == ui.volume_min_wall) || !state.viewport.renderer) return;
   ui.volume_key = key;
+  ui.volume_min_wall = wall;
   state.viewport.dirty = true;
   ui.volume_problem.clear();
   if (!r) {
     state.viewport.renderer->clearScalarVolume();
     return;
   }
-  // 0: empty; 1..255: thickness 0..max (the radius field holds R^2 in voxels^2; thickness = 2R).
+  // 0: no value (empty, or thinner than the minimum wall but in no wall: an edge, in the model's colour);
+  // 1..255: thickness 0..max (the radius field holds R^2 in voxels^2; thickness = 2R).
   const DistanceField& f = r->thickness.radius;
   const double max_voxels = r->thickness.stats.max / f.voxelSize();
+  const double thin_squared = wall > 0.0 ? std::pow(wall / (2.0 * f.voxelSize()), 2.0) : 0.0;
   std::vector<uint8_t> values(size_t(f.boxDims().count()), 0);
   for (size_t i = 0; i < values.size(); ++i) {
     const uint32_t sq = f.data()[i];
     if (sq == 0) continue;
+    if (double(sq) < thin_squared && !(walls->mask[i >> 6] >> (i & 63) & 1)) continue;
     const double t = max_voxels > 0.0 ? 2.0 * std::sqrt(double(sq)) / max_voxels : 0.0;
     values[i] = uint8_t(1 + std::lround(254.0 * std::clamp(t, 0.0, 1.0)));
   }

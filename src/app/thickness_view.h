@@ -29,5 +29,7 @@ float drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, i
 float drawThicknessBar(ImDrawList* dl, ImVec2 at, float height, double max, double min_wall, const std::string& units);
 // The colour of a thickness in the views: red under the minimum wall, else the ramp over 0..max.
 ImU32 thicknessColour(double thickness, double max, double min_wall);
+// Under the minimum wall but in no wall (a convex edge or corner): grey in the section, the model's colour in 3D.
+inline constexpr ImU32 kEdgeColour = IM_COL32(150, 150, 150, 255);
 
 }  // namespace vox::app

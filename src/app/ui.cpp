@@ -33,6 +33,8 @@ std::string formatLength(double value, const std::string& units) {
   return buf;
 }
 
+std::string formatArea(double value, const std::string& units) { return formatLength(value, units) + "^2"; }
+
 void heading(const char* title) {
   ImGui::Spacing();
   ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "%s", title);

@@ -26,6 +26,8 @@ std::string groupDigits(int64_t n);
 std::string formatSeconds(double s);
 // A number in model units with the units name: "12.5 mm", "0.031 model units".
 std::string formatLength(double value, const std::string& units);
+// An area: '0.25 mm^2', '3 model units^2'.
+std::string formatArea(double value, const std::string& units);
 
 // A section heading: a gap, the title in the accent colour and a rule (ImGui 1.86 has no SeparatorText).
 void heading(const char* title);

@@ -12,6 +12,7 @@
 #include "vox/analysis/distance.h"
 #include "vox/analysis/thickness.h"
 #include "vox/analysis/thickness_map.h"
+#include "vox/analysis/walls.h"
 #include "vox/io/figure.h"
 #include "vox/io/file_util.h"
 #include "vox/io/image_io.h"
@@ -24,6 +25,9 @@ namespace {
 struct ThicknessOptions {
   CommonOptions c;
   double min_wall = 0.0;  // model units; 0: no thin-wall report
+  bool edges = false;     // thin regions by local thickness alone, convex edges included (SPEC 6)
+  double ray_angle = 30.0;
+  double min_area = -1.0;  // model units^2; < 0: min_wall^2
   std::string out, distance_out, png;
   bool signed_distance = false;
   std::string section_axis;
@@ -34,11 +38,13 @@ struct ThicknessOptions {
 
 nlohmann::ordered_json bboxJson(const Box3d& b) { return {{"min", jsonVec3(b.min)}, {"max", jsonVec3(b.max)}}; }
 
-void reportThinWalls(const ThinWalls& thin, const std::string& units, Output& out) {
+// The thin regions: walls (or, with --edges, every voxel under the minimum), each with its thickness.
+void reportThinRegions(double min_wall, int64_t voxels, const std::vector<ThinWallRegion>& list, bool edges,
+                       const std::string& units, Output& out) {
   auto& d = out.data();
-  d["thin_voxels"] = thin.voxels;
+  d["thin_voxels"] = voxels;
   nlohmann::ordered_json regions = nlohmann::ordered_json::array();
-  for (const ThinWallRegion& r : thin.regions) {
+  for (const ThinWallRegion& r : list) {
     regions.push_back({{"voxels", r.voxels},
                        {"bbox", bboxJson(r.bbox)},
                        {"min", r.min},
@@ -47,14 +53,15 @@ void reportThinWalls(const ThinWalls& thin, const std::string& units, Output& ou
                        {"bbox_max_ijk", jsonVec3(r.bbox_max_ijk)}});
   }
   d["thin_regions"] = regions;
-  out.say("thinner than " + significant(thin.min_wall) + " " + units + ": " + countOf(thin.voxels, "voxel") + " in " +
-          countOf(int64_t(thin.regions.size()), "region"));
-  for (size_t i = 0; i < std::min<size_t>(thin.regions.size(), 5); ++i) {
-    const ThinWallRegion& r = thin.regions[i];
-    out.say("  " + std::to_string(r.voxels) + " voxels, thinnest " + significant(r.min, 4) + ", from (" +
-            significant(r.bbox.min.x, 4) + ", " + significant(r.bbox.min.y, 4) + ", " + significant(r.bbox.min.z, 4) +
-            ") to (" + significant(r.bbox.max.x, 4) + ", " + significant(r.bbox.max.y, 4) + ", " +
-            significant(r.bbox.max.z, 4) + ")");
+  const std::string what = edges ? "voxels thinner than " : "walls thinner than ";
+  out.say(what + significant(min_wall) + " " + units + ": " + countOf(voxels, "voxel") + " in " +
+          countOf(int64_t(list.size()), "region"));
+  for (size_t i = 0; i < std::min<size_t>(list.size(), 5); ++i) {
+    const ThinWallRegion& r = list[i];
+    out.say("  " + std::to_string(r.voxels) + " voxels, " + (edges ? "thinnest " : "wall ") + significant(r.min, 4) +
+            ", from (" + significant(r.bbox.min.x, 4) + ", " + significant(r.bbox.min.y, 4) + ", " +
+            significant(r.bbox.min.z, 4) + ") to (" + significant(r.bbox.max.x, 4) + ", " +
+            significant(r.bbox.max.y, 4) + ", " + significant(r.bbox.max.z, 4) + ")");
   }
 }
 
@@ -103,16 +110,19 @@ int runThickness(const ThicknessOptions& o) {
   const std::string units = grid.frame().units;
   // Terminal lines for the distance and the thickness; the hot spots, quick, say nothing.
   const ProgressFn distance_line = terminalProgress("distance"), thickness_line = terminalProgress("thickness");
+  const ProgressFn walls_line = o.min_wall > 0.0 ? terminalProgress("walls") : ProgressFn();
   const workflow::StageProgress progress = [&](workflow::ThicknessStage stage, double f) {
     if (stage == workflow::ThicknessStage::kDistance) return !distance_line || distance_line(f);
     if (stage == workflow::ThicknessStage::kThickness) return !thickness_line || thickness_line(f);
+    if (stage == workflow::ThicknessStage::kWalls) return !walls_line || walls_line(f);
     return true;
   };
   // local thickness paints into the field itself unless --distance still needs it
   workflow::ThicknessRunOptions run_options;
   run_options.keep_distance = !o.distance_out.empty();
-  auto run =
-      workflow::runThickness(grid, run_options, distance_line || thickness_line ? progress : workflow::StageProgress());
+  if (o.min_wall > 0.0) run_options.walls = WallRidgeParams{o.ray_angle};
+  auto run = workflow::runThickness(
+      grid, run_options, distance_line || thickness_line || walls_line ? progress : workflow::StageProgress());
   if (!run) return out.fail(run.error());
   const Thickness* thickness = &run->thickness;
   const std::vector<HotSpot>* spots = &run->hot_spots;
@@ -133,9 +143,24 @@ int runThickness(const ThicknessOptions& o) {
           significant(s.max, 4) + ", mean " + significant(s.mean, 4) + " " + units + "; deepest voxel " +
           significant(distance_max, 4) + " from the surface");
   if (o.min_wall > 0.0) {
-    auto thin = findThinWalls(*thickness, o.min_wall);
-    if (!thin) return out.fail(thin.error());
-    reportThinWalls(*thin, units, out);
+    auto walls = findWalls(*run->ridge, thickness->radius, WallParams{o.min_wall, o.min_area});
+    if (!walls) return out.fail(walls.error());
+    d["wall_min"] = walls->wall_min;
+    d["ray_angle"] = o.ray_angle;
+    d["min_area"] = walls->min_area;
+    out.say("thinnest wall " + significant(walls->wall_min, 4) + " " + units + " (convex edges and corners aside)");
+    if (o.edges) {
+      auto thin = findThinWalls(*thickness, o.min_wall);
+      if (!thin) return out.fail(thin.error());
+      reportThinRegions(o.min_wall, thin->voxels, thin->regions, true, units, out);
+    } else {
+      reportThinRegions(o.min_wall, walls->voxels, walls->regions, false, units, out);
+      d["specks"] = walls->specks;
+      if (walls->specks > 0) {
+        out.say("  and " + countOf(walls->specks, "speck") + " under " + significant(walls->min_area, 3) + " " + units +
+                "^2 of surface, not listed (--min-area)");
+      }
+    }
   }
   reportHotSpots(*spots, o.hot_spots_shown, out);
 
@@ -173,6 +198,7 @@ int runThickness(const ThicknessOptions& o) {
   }
   d["distance_s"] = run->distance_s;
   d["thickness_s"] = run->thickness_s;
+  if (run->ridge) d["walls_s"] = run->walls_s;
   return out.finish();
 }
 
@@ -183,6 +209,17 @@ void addThicknessCommand(CLI::App& sub, CommandContext& ctx) {
   addCommonOptions(sub, o->c);
   sub.add_option("--min-wall", o->min_wall, "Report walls thinner than this (model units), grouped in regions")
       ->check(CLI::PositiveNumber);
+  sub.add_flag(
+      "--edges", o->edges,
+      "With --min-wall: list every voxel whose local thickness is under it, convex edges and corners included");
+  sub.add_option("--ray-angle", o->ray_angle,
+                 "Two sides facing each other within this angle (degrees) make a wall; sharper edges do not "
+                 "(default 30)")
+      ->check(CLI::Range(1.0, 89.0));
+  sub.add_option("--min-area", o->min_area,
+                 "With --min-wall: walls with less surface than this (model units^2) are specks, counted but not "
+                 "listed (default: the minimum wall squared)")
+      ->check(CLI::NonNegativeNumber);
   sub.add_option("-o,--output", o->out, "Write the local thickness (model units): .nrrd, .vti or .vdb");
   sub.add_option("--distance", o->distance_out, "Write the distance to the surface (model units): .nrrd, .vti or .vdb");
   sub.add_flag("--signed", o->signed_distance, "With --distance: empty voxels hold minus their distance to the part");

@@ -21,6 +21,12 @@ Result<ThicknessRun> runThickness(const VoxelGrid& grid, const ThicknessRunOptio
   auto hot = findHotSpots(*distance, options.hot_spots, stage(ThicknessStage::kHotSpots));
   if (!hot) return hot.error();
   const double t2 = nowSeconds();
+  if (options.walls) {
+    auto ridge = findWallRidge(*distance, *options.walls, stage(ThicknessStage::kWalls));
+    if (!ridge) return ridge.error();
+    run.ridge = std::move(ridge).value();
+  }
+  const double t3 = nowSeconds();
   run.distance_max = distance->maxModel();
   auto thickness =
       options.keep_distance
@@ -32,7 +38,8 @@ Result<ThicknessRun> runThickness(const VoxelGrid& grid, const ThicknessRunOptio
   if (options.keep_distance) run.distance = std::move(distance).value();
   run.distance_s = t1 - t0;
   run.hot_spots_s = t2 - t1;
-  run.thickness_s = nowSeconds() - t2;
+  run.walls_s = t3 - t2;
+  run.thickness_s = nowSeconds() - t3;
   return run;
 }
 

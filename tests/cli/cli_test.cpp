@@ -1,6 +1,7 @@
 // The command line as scripts use it (docs/conventions.md, "Command line"): exit codes, JSON keys, images, error
 // messages.
 #include <cmath>
+#include <numbers>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -209,8 +210,8 @@ TEST_F(Cli, thicknessOfABoxReportsSpecKeysAndWritesItsFilesTogether) {
                       path("t.png")});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json j = parse(r);
-  for (const char* key : {"min", "max", "mean", "histogram", "distance_max", "thin_voxels", "thin_regions", "hot_spots",
-                          "distance_s", "thickness_s"}) {
+  for (const char* key : {"min", "max", "mean", "histogram", "distance_max", "wall_min", "thin_voxels", "thin_regions",
+                          "specks", "hot_spots", "distance_s", "thickness_s", "walls_s"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   EXPECT_NEAR(j["max"].get<double>(), 1.0, 1e-9);
@@ -220,11 +221,21 @@ TEST_F(Cli, thicknessOfABoxReportsSpecKeysAndWritesItsFilesTogether) {
   EXPECT_NEAR(j["hot_spots"][0]["radius"].get<double>(), 0.5, 1e-9);
   EXPECT_NEAR(j["hot_spots"][0]["modulus"].get<double>(), 0.5 / 3.0, 1e-9);
   for (int a = 0; a < 3; ++a) EXPECT_NEAR(j["hot_spots"][0]["centre"][a].get<double>(), 0.5, 1e-9);
-  EXPECT_GT(j["thin_voxels"].get<int64_t>(), 0);  // the block's corners: no large ball reaches them
-  for (const auto& region : j["thin_regions"]) {
+  // walls, not edges: no wall of the block is thinner than 0.45, and its thinnest wall is its size
+  EXPECT_EQ(j["thin_voxels"].get<int64_t>(), 0);
+  EXPECT_EQ(j["thin_regions"].size(), 0u);
+  EXPECT_NEAR(j["wall_min"].get<double>(), 1.0, 0.2);
+  // --edges: every voxel under the minimum, as local thickness reads the block's corners (no large ball reaches them)
+  auto edges = runVoxmod({"thickness", box_stl(), "--res", "10", "--json", "--min-wall", "0.45", "--edges"});
+  ASSERT_EQ(edges.exit_code, 0) << edges.err;
+  const json je = parse(edges);
+  EXPECT_GT(je["thin_voxels"].get<int64_t>(), 0);
+  EXPECT_GT(je["thin_regions"].size(), 0u);
+  for (const auto& region : je["thin_regions"]) {
     for (const char* key : {"voxels", "bbox", "min"}) EXPECT_TRUE(region.contains(key)) << key;
     EXPECT_LT(region["min"].get<double>(), 0.45);
   }
+  EXPECT_NEAR(je["wall_min"].get<double>(), 1.0, 0.2);
   for (const char* f : {"t.nrrd", "d.nrrd", "t.png"}) EXPECT_TRUE(std::filesystem::exists(path(f))) << f;
 
   // A PNG that cannot be written: none of the three files is.
@@ -346,6 +357,52 @@ TEST_F(Cli, unwritableOutputFailsAndKeepsTheOldFile) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("sub.vxm"), std::string::npos) << r.err;
   EXPECT_EQ(test::readFile(path("keep.vxm")), before);
+}
+
+}  // namespace
+}  // namespace vox
+
+namespace vox {
+namespace {
+
+// The unit cube's triangles scaled to [lo, hi] and turned by `yaw` about z, then `pitch` about x (degrees), about c.
+void addTurnedBox(TriangleMesh& m, glm::dvec3 lo, glm::dvec3 hi, double yaw, double pitch, glm::dvec3 c) {
+  const double a = yaw * std::numbers::pi / 180, b = pitch * std::numbers::pi / 180;
+  for (Triangle t : test::unitCubeMesh().triangles) {
+    for (auto& v : t.v) {
+      glm::dvec3 p = lo + glm::dvec3(v) * (hi - lo) - c;
+      p = {p.x * std::cos(a) - p.y * std::sin(a), p.x * std::sin(a) + p.y * std::cos(a), p.z};
+      p = {p.x, p.y * std::cos(b) - p.z * std::sin(b), p.y * std::sin(b) + p.z * std::cos(b)};
+      v = glm::vec3(p + c);
+    }
+    m.triangles.push_back(t);
+  }
+}
+
+// The issue's own part: a 20 x 20 x 10 mm block with one fin 0.6 mm thick, turned 30 and 20 degrees. Local thickness
+// alone lists every edge of the block (--edges); the walls are the fin, one region reading its thickness.
+TEST(CliWalls, aTurnedBlockWithOneFinHasOneThinWallAtTheFinsThickness) {
+  test::TempDir dir;
+  TriangleMesh m;
+  const glm::dvec3 c(10, 10, 8);
+  addTurnedBox(m, {0, 0, 0}, {20, 20, 10}, 30, 20, c);
+  addTurnedBox(m, {4, 9.7, 9.5}, {16, 10.3, 16}, 30, 20, c);  // the fin, its foot inside the block
+  const std::string stl = (dir / "fin.stl").string();
+  ASSERT_TRUE(io::saveStlBinary(m, stl).ok());
+  for (const char* res : {"100", "200"}) {
+    SCOPED_TRACE(std::string("R = ") + res);
+    auto r = test::runVoxmod({"thickness", stl, "--res", res, "--units", "mm", "--min-wall", "1.0", "--json"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const double h = j["voxel_size"].get<double>();
+    ASSERT_EQ(j["thin_regions"].size(), 1u) << r.out;
+    EXPECT_NEAR(j["thin_regions"][0]["min"].get<double>(), 0.6, 2 * h);
+    EXPECT_NEAR(j["wall_min"].get<double>(), j["thin_regions"][0]["min"].get<double>(), 1e-9);
+    auto edges =
+        test::runVoxmod({"thickness", stl, "--res", res, "--units", "mm", "--min-wall", "1.0", "--edges", "--json"});
+    ASSERT_EQ(edges.exit_code, 0) << edges.err;
+    EXPECT_GT(nlohmann::json::parse(edges.out)["thin_regions"].size(), 1u);  // the edges, as local thickness reads them
+  }
 }
 
 }  // namespace

@@ -1,19 +1,21 @@
 #pragma once
 // The thickness pipeline both front ends run (docs/conventions.md, "Distance and thickness"): the exact distance
-// field, the hot spots on it, then local thickness painted from it. `voxmod thickness` and the window's Thickness
-// panel call this one function; each reports progress its own way (a terminal line per stage, one bar).
+// field, the hot spots and the wall ridge on it, then local thickness painted from it. `voxmod thickness` and the
+// window's Thickness panel call this one function; each reports progress its own way (a terminal line per stage, one
+// bar).
 #include <functional>
 #include <optional>
 #include <vector>
 
 #include "vox/analysis/distance.h"
 #include "vox/analysis/thickness.h"
+#include "vox/analysis/walls.h"
 #include "vox/core/result.h"
 #include "vox/core/voxel_grid.h"
 
 namespace vox::workflow {
 
-enum class ThicknessStage { kDistance, kHotSpots, kThickness };
+enum class ThicknessStage { kDistance, kHotSpots, kThickness, kWalls };
 
 // Progress within one stage (fraction in [0, 1]); returning false stops the run, which then fails with kCancelled.
 using StageProgress = std::function<bool(ThicknessStage stage, double fraction)>;
@@ -22,14 +24,17 @@ struct ThicknessRunOptions {
   bool keep_distance = false;  // keep the distance field (else local thickness paints into it)
   ThicknessParams thickness;
   HotSpotParams hot_spots;
+  // The wall stops (vox/analysis/walls.h), from which the walls under any minimum wall are found; none: not sought.
+  std::optional<WallRidgeParams> walls;
 };
 
 struct ThicknessRun {
   Thickness thickness;
   std::vector<HotSpot> hot_spots;
   std::optional<DistanceField> distance;  // with keep_distance
+  std::optional<WallRidge> ridge;         // with options.walls
   double distance_max = 0.0;              // the deepest voxel's distance from the surface, model units
-  double distance_s = 0.0, hot_spots_s = 0.0, thickness_s = 0.0;  // each stage's wall time
+  double distance_s = 0.0, hot_spots_s = 0.0, walls_s = 0.0, thickness_s = 0.0;  // each stage's wall time
 };
 
 Result<ThicknessRun> runThickness(const VoxelGrid& grid, const ThicknessRunOptions& options = {},

@@ -77,7 +77,7 @@ ImageAxes imageAxes(Axis a);
 float drawXrayColourBar(const XrayResult& x, const ScalarMapLegend& legend, ImVec2 map0, ImVec2 size);
 
 // thickness_lists.cpp: the Thickness panel's thin-wall regions and hot spots; a click moves the section there.
-void drawThinWallList(AppState& state, const ThinWalls& thin, const std::string& units);
+void drawThinWallList(AppState& state, const Walls& thin, const std::string& units);
 void drawHotSpotList(AppState& state, const ThicknessResult& r, const std::string& units);
 
 // dialogs.cpp: the next window appears at the middle of the main viewport.

@@ -27,6 +27,8 @@ bool uploadThicknessSection(AppState& state, const ThicknessResult& r, int32_t& 
   iw = map->width;
   ih = map->height;
   if (key == ui.image_key && wall == ui.image_min_wall && !ui.image_texture.empty()) return true;
+  const Walls* walls = currentThinWalls(state);
+  const ImageAxes ax = imageAxes(state.section.axis);
   ImageRgb picture(iw, ih);
   for (int32_t v = 0; v < ih; ++v) {
     for (int32_t u = 0; u < iw; ++u) {
@@ -35,7 +37,14 @@ bool uploadThicknessSection(AppState& state, const ThicknessResult& r, int32_t& 
         picture.at(u, v) = io::kNoMaterialColour;
         continue;
       }
-      const ImU32 c = thicknessColour(double(tenths) / kThicknessTenths * h, max, wall);
+      const double t = double(tenths) / kThicknessTenths * h;
+      glm::ivec3 voxel(0);
+      voxel[int(state.section.axis)] = state.section.index;
+      voxel[ax.right] = u;
+      voxel[ax.up] = ih - 1 - v;
+      // under the minimum wall but in no wall: an edge or corner, grey
+      const bool edge = t < wall && walls && !walls->inWall(voxel.x, voxel.y, voxel.z);
+      const ImU32 c = edge ? kEdgeColour : thicknessColour(t, max, wall);
       picture.at(u, v) = Rgb8{uint8_t(c & 0xff), uint8_t((c >> 8) & 0xff), uint8_t((c >> 16) & 0xff)};
     }
   }

@@ -18,9 +18,10 @@ namespace {
 
 constexpr int kMostRows = 200;  // more would not be read; the count above the list says how many there are
 
-bool beginList(const char* id, int columns, int rows) {
+// A scrolling table showing at most `shown` rows at once.
+bool beginList(const char* id, int columns, int rows, int shown) {
   const float row_h = ImGui::GetTextLineHeightWithSpacing() + 2.0f;
-  const float height = std::min(float(std::min(rows, 8) + 1) * row_h + 6.0f, 10.0f * row_h);
+  const float height = float(std::min(rows, shown) + 1) * row_h + 6.0f;
   if (!ImGui::BeginTable(id, columns, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersOuter,
                          ImVec2(0.0f, height)))
     return false;
@@ -30,18 +31,25 @@ bool beginList(const char* id, int columns, int rows) {
 
 }  // namespace
 
-void drawThinWallList(AppState& state, const ThinWalls& thin, const std::string& units) {
-  if (thin.voxels == 0) {
-    ImGui::TextWrapped("No voxel is thinner than %s.", formatLength(thin.min_wall, units).c_str());
+void drawThinWallList(AppState& state, const Walls& thin, const std::string& units) {
+  const std::string specks = thin.specks > 0 ? " (and " + countOf(thin.specks, "speck") + " under " +
+                                                   formatArea(thin.min_area, units) + ", not listed)"
+                                             : std::string();
+  if (thin.regions.empty()) {
+    ImGui::TextWrapped("No wall is thinner than %s%s. Convex edges and corners are not walls.",
+                       formatLength(thin.min_wall, units).c_str(), specks.c_str());
     return;
   }
-  ImGui::TextWrapped("%s voxels thinner than %s, in %s (red in the views; lengths in %s). Click one to see it.",
-                     groupDigits(thin.voxels).c_str(), formatLength(thin.min_wall, units).c_str(),
-                     countOf(int64_t(thin.regions.size()), "region").c_str(), unitsLabel(units).c_str());
+  ImGui::TextWrapped(
+      "%s thinner than %s%s: red in the views (edges and corners under it grey in the section, in the model's colour "
+      "in 3D); lengths in %s. Click one "
+      "to see it.",
+      countOf(int64_t(thin.regions.size()), "wall").c_str(), formatLength(thin.min_wall, units).c_str(), specks.c_str(),
+      unitsLabel(units).c_str());
   const int rows = std::min(int(thin.regions.size()), kMostRows);
-  if (!beginList("thin_walls", 3, rows)) return;
+  if (!beginList("thin_walls", 3, rows, 5)) return;
   ImGui::TableSetupColumn("Voxels", ImGuiTableColumnFlags_WidthFixed, 70.0f);
-  ImGui::TableSetupColumn("Thinnest");
+  ImGui::TableSetupColumn("Wall");
   ImGui::TableSetupColumn("Box, voxels");
   ImGui::TableHeadersRow();
   for (int i = 0; i < rows; ++i) {
@@ -70,12 +78,12 @@ void drawThinWallList(AppState& state, const ThinWalls& thin, const std::string&
 
 void drawHotSpotList(AppState& state, const ThicknessResult& r, const std::string& units) {
   ImGui::TextWrapped(
-      "The centres of the thickest regions (magenta rings in the 3D view): where a casting solidifies last. "
-      "Isolated: cut off from thicker ones by a thinner neck, so it needs its own feeder. Lengths in %s.",
+      "Centres of the thickest regions (magenta rings): where a casting freezes last. Isolated: behind a thinner "
+      "neck, so it needs its own feeder. Lengths in %s.",
       unitsLabel(units).c_str());
   if (r.hot_spots.empty()) return;
   const int rows = std::min(int(r.hot_spots.size()), kMostRows);
-  if (!beginList("hot_spots", 4, rows)) return;
+  if (!beginList("hot_spots", 4, rows, 8)) return;
   ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, 24.0f);
   ImGui::TableSetupColumn("Radius");
   ImGui::TableSetupColumn("Modulus");

@@ -63,8 +63,11 @@ void drawThicknessPanel(AppState& state) {
   const ThicknessStats& st = r->thickness.stats;
   const std::string units = state.model.frame().units;
 
+  const Walls* walls = currentThinWalls(state);
   if (beginFactTable("thickness_facts")) {
-    tableRow("Thinnest", formatLength(st.min, units));
+    // the thinnest wall first: the local thickness's own minimum is a convex edge's, no wall's
+    if (walls) tableRow("Thinnest wall", formatLength(walls->wall_min, units));
+    tableRow("Thinnest (sphere)", formatLength(st.min, units));
     tableRow("Thickest", formatLength(st.max, units));
     tableRow("Mean", formatLength(st.mean, units));
     tableRow("Voxels", groupDigits(st.voxels) + " in " + formatSeconds(r->seconds));
@@ -81,7 +84,7 @@ void drawThicknessPanel(AppState& state) {
     dispatchValues(state, ActionId::kMinWall, {std::to_string(v)});
   }
   markWidget("min_wall_slider");
-  if (const ThinWalls* thin = currentThinWalls(state)) drawThinWallList(state, *thin, units);
+  if (walls) drawThinWallList(state, *walls, units);
 
   heading("Hot spots");
   drawHotSpotList(state, *r, units);

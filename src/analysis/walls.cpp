@@ -1,0 +1,282 @@
+// Walls, not edges: the wall stops on the distance field's ridge, and the thin walls as the union of their inscribed
+// balls. See vox/analysis/walls.h.
+#include "vox/analysis/walls.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <unordered_map>
+
+#include <glm/common.hpp>
+
+#include "analysis/neighbours.h"
+#include "analysis/progress_gate.h"
+#include "vox/core/parallel.h"
+
+namespace vox {
+namespace {
+
+struct Offset {
+  int32_t dx, dy, dz;
+  int64_t delta;  // index step in the box
+  double length;
+};
+
+// Offsets within `reach` voxels (Euclidean), nearest first: a voxel off a ridge is rejected at its first face
+// neighbour, one step up the distance.
+std::vector<Offset> reachOffsets(int32_t reach, int64_t nx, int64_t plane) {
+  std::vector<Offset> out;
+  for (int32_t dz = -reach; dz <= reach; ++dz)
+    for (int32_t dy = -reach; dy <= reach; ++dy)
+      for (int32_t dx = -reach; dx <= reach; ++dx) {
+        const int32_t q = dx * dx + dy * dy + dz * dz;
+        if (q == 0 || q > reach * reach) continue;
+        out.push_back({dx, dy, dz, dx + nx * dy + plane * dz, std::sqrt(double(q))});
+      }
+  std::stable_sort(out.begin(), out.end(), [](const Offset& a, const Offset& b) { return a.length < b.length; });
+  return out;
+}
+
+// Whether voxel (x, y, z) of value `a` is a wall stop: no voxel within reach rises by slope * its distance or more.
+bool isStop(const uint32_t* data, int64_t i, int64_t x, int64_t y, int64_t z, const Dims& d,
+            const std::vector<Offset>& offsets, double slope) {
+  const uint32_t a = data[i];
+  const double r = std::sqrt(double(a));
+  for (const Offset& o : offsets) {
+    const int64_t qx = x + o.dx, qy = y + o.dy, qz = z + o.dz;
+    if (qx < 0 || qy < 0 || qz < 0 || qx >= d.nx || qy >= d.ny || qz >= d.nz) continue;
+    const uint32_t b = data[i + o.delta];
+    if (b <= a) continue;
+    const double need = r + slope * o.length;
+    if (double(b) >= need * need - 1e-9) return false;
+  }
+  return true;
+}
+
+// The centres of the inscribed ball of squared radius a (|o|^2 < a), as index steps in the box.
+std::vector<int64_t> ballSteps(uint32_t a, int64_t nx, int64_t plane) {
+  std::vector<int64_t> out;
+  const int32_t r = int32_t(std::ceil(std::sqrt(double(a))));
+  for (int32_t dz = -r; dz <= r; ++dz)
+    for (int32_t dy = -r; dy <= r; ++dy)
+      for (int32_t dx = -r; dx <= r; ++dx)
+        if (uint32_t(dx * dx + dy * dy + dz * dz) < a) out.push_back(dx + nx * dy + plane * dz);
+  return out;
+}
+
+// A wall's mid-surface is a sheet of stops at about the same distance (a thin pin's axis a line of them). A stop
+// with fewer than two others within `reach` on each axis and within a voxel of its own distance, itself within
+// `reach` of the surface, is the tip of a sampled corner or edge, where the voxels leave no room to climb (a lone stop
+// deeper in is a ball's centre).
+void dropLoneStops(WallRidge& ridge, int32_t reach) {
+  const Dims d = ridge.box_dims;
+  const int64_t nx = d.nx, ny = d.ny, nz = d.nz;
+  std::vector<uint64_t> at(size_t((d.count() + 63) / 64), 0);
+  for (const WallRidge::Stop& s : ridge.stops) at[size_t(s.index >> 6)] |= uint64_t(1) << (s.index & 63);
+  std::vector<WallRidge::Stop> by_index = ridge.stops;
+  std::sort(by_index.begin(), by_index.end(),
+            [](const WallRidge::Stop& a, const WallRidge::Stop& b) { return a.index < b.index; });
+  const auto squaredAt = [&](int64_t j) {
+    auto it = std::lower_bound(by_index.begin(), by_index.end(), j,
+                               [](const WallRidge::Stop& s, int64_t v) { return s.index < v; });
+    return it->squared;
+  };
+  std::vector<uint8_t> keep(ridge.stops.size(), 0);
+  const auto alike = [](uint32_t a, uint32_t b) { return std::abs(std::sqrt(double(a)) - std::sqrt(double(b))) < 1.0; };
+  parallelChunks(0, int64_t(ridge.stops.size()), 4096, threadsFor(int64_t(ridge.stops.size()) * 64),
+                 [&](int, int64_t b, int64_t e) {
+                   for (int64_t k = b; k < e; ++k) {
+                     const WallRidge::Stop s = ridge.stops[size_t(k)];
+                     if (s.squared > uint32_t(reach * reach)) {
+                       keep[size_t(k)] = 1;
+                       continue;
+                     }
+                     const int64_t i = s.index, x = i % nx, y = (i / nx) % ny, z = i / (nx * ny);
+                     int found = 0;
+                     for (int64_t qz = std::max<int64_t>(0, z - reach); qz <= std::min(nz - 1, z + reach); ++qz)
+                       for (int64_t qy = std::max<int64_t>(0, y - reach); qy <= std::min(ny - 1, y + reach); ++qy)
+                         for (int64_t qx = std::max<int64_t>(0, x - reach); qx <= std::min(nx - 1, x + reach); ++qx) {
+                           const int64_t j = qx + nx * (qy + ny * qz);
+                           if ((at[size_t(j >> 6)] >> (j & 63)) & 1) found += int(alike(squaredAt(j), s.squared));
+                         }
+                     keep[size_t(k)] = found >= 3;
+                   }
+                 });
+  size_t n = 0;
+  for (size_t k = 0; k < ridge.stops.size(); ++k)
+    if (keep[k]) ridge.stops[n++] = ridge.stops[k];
+  ridge.stops.resize(n);
+}
+
+}  // namespace
+
+Result<WallRidge> findWallRidge(const DistanceField& distance, const WallRidgeParams& params,
+                                const ProgressFn& progress) {
+  if (!(params.angle_deg > 0.0 && params.angle_deg < 180.0)) {
+    return makeError(ErrorCode::kInvalidArgument, "walls: the wall angle must lie between 0 and 180 degrees");
+  }
+  if (params.reach < 1 || params.reach > 8) {
+    return makeError(ErrorCode::kInvalidArgument, "walls: the ridge reach must be 1 to 8 voxels");
+  }
+  WallRidge out;
+  out.box_dims = distance.boxDims();
+  out.box_min = distance.boxMin();
+  out.frame = distance.frame();
+  const Dims d = out.box_dims;
+  if (d.count() == 0) return out;
+  DistanceField dense_copy;
+  const DistanceField* f = &distance;
+  if (!distance.isDense()) {
+    dense_copy = distance.denseCopy();
+    if (!dense_copy.data()) return makeError(ErrorCode::kLimit, "walls: no memory for a dense distance field");
+    f = &dense_copy;
+  }
+  const uint32_t* data = f->data();
+  const int64_t nx = d.nx, plane = int64_t(d.nx) * d.ny;
+  const std::vector<Offset> offsets = reachOffsets(params.reach, nx, plane);
+  const double slope = std::sin(params.angle_deg * std::numbers::pi / 360.0);
+  analysis_detail::ProgressGate gate(progress);
+  const int threads = threadsFor(d.count() / 8);
+  std::vector<std::vector<WallRidge::Stop>> found(static_cast<size_t>(threads));
+  std::atomic<int64_t> layers_done{0};
+  parallelChunks(0, d.nz, 1, threads, [&](int t, int64_t z0, int64_t z1) {
+    for (int64_t z = z0; z < z1 && !gate.cancelled(); ++z) {
+      for (int64_t y = 0; y < d.ny; ++y) {
+        const int64_t row = nx * y + plane * z;
+        for (int64_t x = 0; x < nx; ++x) {
+          if (data[row + x] != 0 && isStop(data, row + x, x, y, z, d, offsets, slope)) {
+            found[size_t(t)].push_back({row + x, data[row + x]});
+          }
+        }
+      }
+      gate.report(double(++layers_done) / double(d.nz));
+    }
+  });
+  if (gate.cancelled() || !gate.report(1.0)) return makeError(ErrorCode::kCancelled, "walls cancelled");
+  for (auto& v : found) out.stops.insert(out.stops.end(), v.begin(), v.end());
+  dropLoneStops(out, params.reach);
+  std::sort(out.stops.begin(), out.stops.end(), [](const WallRidge::Stop& a, const WallRidge::Stop& b) {
+    return a.squared != b.squared ? a.squared < b.squared : a.index < b.index;
+  });
+  return out;
+}
+
+bool Walls::inWall(int64_t x, int64_t y, int64_t z) const {
+  const int64_t bx = x - box_min.x, by = y - box_min.y, bz = z - box_min.z;
+  if (bx < 0 || by < 0 || bz < 0 || bx >= box_dims.nx || by >= box_dims.ny || bz >= box_dims.nz) return false;
+  const int64_t i = bx + int64_t(box_dims.nx) * (by + int64_t(box_dims.ny) * bz);
+  return (mask[size_t(i >> 6)] >> (i & 63)) & 1;
+}
+
+namespace {
+
+// The 26-connected regions of the painted walls: their voxels, exposed faces, box and thinnest stop; regions under
+// the speck area are counted and cleared from the mask.
+void collectRegions(const WallRidge& ridge, const uint32_t* filled,
+                    const std::unordered_map<int64_t, uint32_t>& thin_stops, Walls& out) {
+  const Dims d = ridge.box_dims;
+  const int64_t nx = d.nx, ny = d.ny, nz = d.nz, plane = nx * ny;
+  const double h = ridge.frame.voxel_size;
+  std::vector<uint64_t> todo = out.mask;
+  auto take = [&](int64_t i) {
+    uint64_t& w = todo[size_t(i >> 6)];
+    const uint64_t bit = uint64_t(1) << (i & 63);
+    if (!(w & bit)) return false;
+    w &= ~bit;
+    return true;
+  };
+  std::vector<int64_t> queue;
+  for (int64_t wi = 0; wi < int64_t(todo.size()); ++wi) {
+    while (todo[size_t(wi)]) {
+      const int64_t seed = wi * 64 + std::countr_zero(todo[size_t(wi)]);
+      take(seed);
+      ThinWallRegion r;
+      uint32_t min_a = UINT32_MAX;
+      glm::ivec3 bmin(INT32_MAX), bmax(INT32_MIN);
+      queue.assign(1, seed);
+      for (size_t qi = 0; qi < queue.size(); ++qi) {
+        const int64_t i = queue[qi];
+        const int64_t x = i % nx, y = (i / nx) % ny, z = i / plane;
+        ++r.voxels;
+        if (auto s = thin_stops.find(i); s != thin_stops.end()) min_a = std::min(min_a, s->second);
+        bmin = glm::min(bmin, glm::ivec3(int32_t(x), int32_t(y), int32_t(z)));
+        bmax = glm::max(bmax, glm::ivec3(int32_t(x), int32_t(y), int32_t(z)));
+        r.exposed_faces += (x == 0 || !filled[i - 1]) + (x == nx - 1 || !filled[i + 1]) + (y == 0 || !filled[i - nx]) +
+                           (y == ny - 1 || !filled[i + nx]) + (z == 0 || !filled[i - plane]) +
+                           (z == nz - 1 || !filled[i + plane]);
+        analysis_detail::forEach26(x, y, z, nx, ny, nz, [&](int64_t j) {
+          if (take(j)) queue.push_back(j);
+        });
+      }
+      r.area = double(r.exposed_faces) * h * h;
+      if (r.area < out.min_area) {
+        ++out.specks;
+        for (int64_t i : queue) out.mask[size_t(i >> 6)] &= ~(uint64_t(1) << (i & 63));
+        continue;
+      }
+      r.bbox_min_ijk = bmin + ridge.box_min;
+      r.bbox_max_ijk = bmax + ridge.box_min;
+      r.bbox.min = ridge.frame.origin + glm::dvec3(r.bbox_min_ijk) * h;
+      r.bbox.max = ridge.frame.origin + glm::dvec3(r.bbox_max_ijk + 1) * h;
+      r.min = 2.0 * std::sqrt(double(min_a)) * h;
+      out.voxels += r.voxels;
+      out.regions.push_back(r);
+    }
+  }
+  std::stable_sort(out.regions.begin(), out.regions.end(),
+                   [](const ThinWallRegion& a, const ThinWallRegion& b) { return a.voxels > b.voxels; });
+}
+
+}  // namespace
+
+Result<Walls> findWalls(const WallRidge& ridge, const DistanceField& filled, const WallParams& params,
+                        const ProgressFn& progress) {
+  if (!(params.min_wall >= 0) || !std::isfinite(params.min_wall)) {
+    return makeError(ErrorCode::kInvalidArgument, "walls: the minimum wall must be a number >= 0");
+  }
+  if (filled.boxDims().count() != ridge.box_dims.count() || filled.boxMin() != ridge.box_min ||
+      (ridge.box_dims.count() > 0 && !filled.isDense())) {
+    return makeError(ErrorCode::kInvalidArgument, "walls: the field does not cover the ridge's box densely");
+  }
+  Walls out;
+  out.min_wall = params.min_wall;
+  out.box_dims = ridge.box_dims;
+  out.box_min = ridge.box_min;
+  const double h = ridge.frame.voxel_size;
+  out.min_area = params.min_area >= 0.0 ? params.min_area : params.min_wall * params.min_wall;
+  const Dims d = ridge.box_dims;
+  out.mask.assign(size_t((d.count() + 63) / 64), 0);
+  if (d.count() == 0 || ridge.stops.empty()) return out;
+  const int64_t nx = d.nx, plane = nx * int64_t(d.ny);
+  // thin: 2 r h < min_wall, r^2 = a
+  const double limit = params.min_wall / (2.0 * h);
+  analysis_detail::ProgressGate gate(progress);
+  std::unordered_map<int64_t, uint32_t> thin_stops;
+  std::vector<int64_t> ball;
+  uint32_t ball_a = 0;
+  size_t k = 0;
+  for (; k < ridge.stops.size() && double(ridge.stops[k].squared) < limit * limit; ++k) {
+    const WallRidge::Stop& s = ridge.stops[k];
+    thin_stops.emplace(s.index, s.squared);
+    if (s.squared != ball_a) ball = ballSteps(ball_a = s.squared, nx, plane);
+    for (int64_t step : ball) {
+      const int64_t j = s.index + step;  // the ball holds filled voxels only, all inside the box
+      out.mask[size_t(j >> 6)] |= uint64_t(1) << (j & 63);
+    }
+    if ((k & 4095) == 0 && !gate.report(0.8 * double(k) / double(ridge.stops.size()))) {
+      return makeError(ErrorCode::kCancelled, "walls cancelled");
+    }
+  }
+  collectRegions(ridge, filled.data(), thin_stops, out);
+  double wall_min = k < ridge.stops.size() ? 2.0 * std::sqrt(double(ridge.stops[k].squared)) * h : INFINITY;
+  for (const ThinWallRegion& r : out.regions) wall_min = std::min(wall_min, r.min);
+  // only specks: the thinnest of them is still the part's thinnest wall
+  if (!std::isfinite(wall_min)) wall_min = 2.0 * std::sqrt(double(ridge.stops.front().squared)) * h;
+  out.wall_min = wall_min;
+  if (!gate.report(1.0)) return makeError(ErrorCode::kCancelled, "walls cancelled");
+  return out;
+}
+
+}  // namespace vox
