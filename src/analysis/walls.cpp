@@ -7,7 +7,6 @@
 #include <cmath>
 #include <map>
 #include <numbers>
-#include <unordered_map>
 
 #include <glm/common.hpp>
 
@@ -172,10 +171,21 @@ bool Walls::inWall(int64_t x, int64_t y, int64_t z) const {
 
 namespace {
 
+// The thin stops by box index, for the regions to read each one's distance.
+struct ThinStops {
+  std::vector<uint64_t> bits;              // one per box voxel
+  std::vector<WallRidge::Stop> by_index;  // sorted by index
+  uint32_t at(int64_t i) const {           // the squared distance of the stop at i, UINT32_MAX when none
+    if (!((bits[size_t(i >> 6)] >> (i & 63)) & 1)) return UINT32_MAX;
+    auto it = std::lower_bound(by_index.begin(), by_index.end(), i,
+                               [](const WallRidge::Stop& s, int64_t v) { return s.index < v; });
+    return it->squared;
+  }
+};
+
 // The 26-connected regions of the painted walls: their voxels, exposed faces, box and thinnest stop; regions under
 // the speck area are counted and cleared from the mask.
-void collectRegions(const WallRidge& ridge, const uint32_t* filled,
-                    const std::unordered_map<int64_t, uint32_t>& thin_stops, Walls& out) {
+void collectRegions(const WallRidge& ridge, const uint32_t* filled, const ThinStops& thin_stops, Walls& out) {
   const Dims d = ridge.box_dims;
   const int64_t nx = d.nx, ny = d.ny, nz = d.nz, plane = nx * ny;
   const double h = ridge.frame.voxel_size;
@@ -200,12 +210,12 @@ void collectRegions(const WallRidge& ridge, const uint32_t* filled,
         const int64_t i = queue[qi];
         const int64_t x = i % nx, y = (i / nx) % ny, z = i / plane;
         ++r.voxels;
-        if (auto s = thin_stops.find(i); s != thin_stops.end()) min_a = std::min(min_a, s->second);
+        min_a = std::min(min_a, thin_stops.at(i));
         bmin = glm::min(bmin, glm::ivec3(int32_t(x), int32_t(y), int32_t(z)));
         bmax = glm::max(bmax, glm::ivec3(int32_t(x), int32_t(y), int32_t(z)));
-        r.exposed_faces += (x == 0 || !filled[i - 1]) + (x == nx - 1 || !filled[i + 1]) + (y == 0 || !filled[i - nx]) +
-                           (y == ny - 1 || !filled[i + nx]) + (z == 0 || !filled[i - plane]) +
-                           (z == nz - 1 || !filled[i + plane]);
+        r.exposed_faces += (x == 0 || !filled[i - 1]) + (x == nx - 1 || !filled[i + 1]) +
+                           (y == 0 || !filled[i - nx]) + (y == ny - 1 || !filled[i + nx]) +
+                           (z == 0 || !filled[i - plane]) + (z == nz - 1 || !filled[i + plane]);
         analysis_detail::forEach26(x, y, z, nx, ny, nz, [&](int64_t j) {
           if (take(j)) queue.push_back(j);
         });
@@ -229,6 +239,76 @@ void collectRegions(const WallRidge& ridge, const uint32_t* filled,
                    [](const ThinWallRegion& a, const ThinWallRegion& b) { return a.voxels > b.voxels; });
 }
 
+// Sets the mask bit of every voxel centre strictly inside the ball of a stop, ball by ball: cheap while the balls
+// are small.
+void paintBalls(const WallRidge& ridge, size_t stops, std::vector<uint64_t>& mask) {
+  const int64_t nx = ridge.box_dims.nx, plane = nx * int64_t(ridge.box_dims.ny);
+  std::vector<int64_t> ball;
+  uint32_t ball_a = 0;
+  for (size_t k = 0; k < stops; ++k) {
+    const WallRidge::Stop& s = ridge.stops[k];
+    if (s.squared != ball_a) ball = ballSteps(ball_a = s.squared, nx, plane);
+    for (int64_t step : ball) {
+      const int64_t j = s.index + step;  // the ball holds filled voxels only, all inside the box
+      mask[size_t(j >> 6)] |= uint64_t(1) << (j & 63);
+    }
+  }
+}
+
+// The lower envelope of the parabolas (q - i)^2 + f[i] over one line of n values (Felzenszwalb and Huttenlocher),
+// in place; v and z are scratch of n and n + 1.
+void lowerEnvelope(float* f, int64_t n, int64_t stride, std::vector<int64_t>& v, std::vector<double>& z,
+                   std::vector<float>& line) {
+  line.resize(size_t(n));
+  for (int64_t i = 0; i < n; ++i) line[size_t(i)] = f[i * stride];
+  int64_t k = -1;
+  for (int64_t q = 0; q < n; ++q) {
+    if (!std::isfinite(line[size_t(q)])) continue;
+    double s = -INFINITY;
+    while (k >= 0) {
+      const int64_t p = v[size_t(k)];
+      s = ((double(line[size_t(q)]) + double(q * q)) - (double(line[size_t(p)]) + double(p * p))) / double(2 * (q - p));
+      if (s > z[size_t(k)]) break;
+      --k;
+    }
+    ++k;
+    v[size_t(k)] = q;
+    z[size_t(k)] = k == 0 ? -INFINITY : s;
+    z[size_t(k) + 1] = INFINITY;
+  }
+  if (k < 0) return;  // nothing finite on the line
+  int64_t j = 0;
+  for (int64_t q = 0; q < n; ++q) {
+    while (z[size_t(j) + 1] < double(q)) ++j;
+    const int64_t p = v[size_t(j)];
+    f[q * stride] = float(double((q - p) * (q - p)) + double(line[size_t(p)]));
+  }
+}
+
+// The same union of balls for any number and size of them, in time linear in the box: F(p) = min over the stops c
+// of |p - c|^2 - r(c)^2, a distance transform of the stops' -r^2 (exact in floats: integers under 2^24); p is in a
+// ball where F(p) < 0.
+void paintEnvelope(const WallRidge& ridge, size_t stops, std::vector<uint64_t>& mask) {
+  const Dims d = ridge.box_dims;
+  const int64_t nx = d.nx, ny = d.ny, nz = d.nz, plane = nx * ny;
+  std::vector<float> f(size_t(d.count()), INFINITY);
+  for (size_t k = 0; k < stops; ++k) f[size_t(ridge.stops[k].index)] = -float(ridge.stops[k].squared);
+  const int threads = threadsFor(d.count() / 8);
+  const auto pass = [&](int64_t lines, int64_t n, int64_t stride, auto first) {
+    parallelChunks(0, lines, 64, threads, [&](int, int64_t b, int64_t e) {
+      std::vector<int64_t> v(static_cast<size_t>(n));
+      std::vector<double> z(static_cast<size_t>(n) + 1);
+      std::vector<float> line;
+      for (int64_t l = b; l < e; ++l) lowerEnvelope(f.data() + first(l), n, stride, v, z, line);
+    });
+  };
+  pass(ny * nz, nx, 1, [&](int64_t l) { return l * nx; });
+  pass(nx * nz, ny, nx, [&](int64_t l) { return (l % nx) + plane * (l / nx); });
+  pass(nx * ny, nz, plane, [&](int64_t l) { return l; });
+  for (int64_t i = 0; i < d.count(); ++i)
+    if (f[size_t(i)] < 0.0f) mask[size_t(i >> 6)] |= uint64_t(1) << (i & 63);
+}
+
 }  // namespace
 
 Result<Walls> findWalls(const WallRidge& ridge, const DistanceField& filled, const WallParams& params,
@@ -249,27 +329,31 @@ Result<Walls> findWalls(const WallRidge& ridge, const DistanceField& filled, con
   const Dims d = ridge.box_dims;
   out.mask.assign(size_t((d.count() + 63) / 64), 0);
   if (d.count() == 0 || ridge.stops.empty()) return out;
-  const int64_t nx = d.nx, plane = nx * int64_t(d.ny);
-  // thin: 2 r h < min_wall, r^2 = a
-  const double limit = params.min_wall / (2.0 * h);
   analysis_detail::ProgressGate gate(progress);
-  std::unordered_map<int64_t, uint32_t> thin_stops;
-  std::vector<int64_t> ball;
-  uint32_t ball_a = 0;
+  // thin: 2 r h < min_wall, r^2 = squared
+  const double limit = params.min_wall / (2.0 * h);
+  ThinStops thin;
+  thin.bits.assign(out.mask.size(), 0);
+  double ball_volume = 0.0;
   size_t k = 0;
   for (; k < ridge.stops.size() && double(ridge.stops[k].squared) < limit * limit; ++k) {
     const WallRidge::Stop& s = ridge.stops[k];
-    thin_stops.emplace(s.index, s.squared);
-    if (s.squared != ball_a) ball = ballSteps(ball_a = s.squared, nx, plane);
-    for (int64_t step : ball) {
-      const int64_t j = s.index + step;  // the ball holds filled voxels only, all inside the box
-      out.mask[size_t(j >> 6)] |= uint64_t(1) << (j & 63);
-    }
-    if ((k & 4095) == 0 && !gate.report(0.8 * double(k) / double(ridge.stops.size()))) {
-      return makeError(ErrorCode::kCancelled, "walls cancelled");
-    }
+    thin.bits[size_t(s.index >> 6)] |= uint64_t(1) << (s.index & 63);
+    ball_volume += 4.2 * std::pow(double(s.squared), 1.5) + 1.0;
   }
-  collectRegions(ridge, filled.data(), thin_stops, out);
+  thin.by_index.assign(ridge.stops.begin(), ridge.stops.begin() + std::ptrdiff_t(k));
+  std::sort(thin.by_index.begin(), thin.by_index.end(),
+            [](const WallRidge::Stop& a, const WallRidge::Stop& b) { return a.index < b.index; });
+  // ball by ball while that is cheaper than a few passes over the box
+  const bool balls = params.paint == WallParams::Paint::kAuto ? ball_volume < 4.0 * double(d.count())
+                                                              : params.paint == WallParams::Paint::kBalls;
+  if (balls) {
+    paintBalls(ridge, k, out.mask);
+  } else {
+    paintEnvelope(ridge, k, out.mask);
+  }
+  if (!gate.report(0.7)) return makeError(ErrorCode::kCancelled, "walls cancelled");
+  collectRegions(ridge, filled.data(), thin, out);
   double wall_min = k < ridge.stops.size() ? 2.0 * std::sqrt(double(ridge.stops[k].squared)) * h : INFINITY;
   for (const ThinWallRegion& r : out.regions) wall_min = std::min(wall_min, r.min);
   // only specks: the thinnest of them is still the part's thinnest wall

@@ -46,6 +46,11 @@ struct WallParams {
   double min_wall = 0.0;  // model units: walls thinner than this are listed
   // Regions whose exposed area (model units^2) is below this are specks, counted but not listed; < 0: min_wall^2.
   double min_area = -1.0;
+  // How the union of the thin stops' balls is painted: kAuto ball by ball while their volume is under a few passes
+  // over the box, else as the lower envelope of the stops' paraboloids (a distance transform, linear in the box). The
+  // voxels are the same (the tests check both against a brute force).
+  enum class Paint { kAuto, kBalls, kEnvelope };
+  Paint paint = Paint::kAuto;
 };
 
 struct Walls {

@@ -159,6 +159,47 @@ TEST(Walls, theMaskHoldsTheListedWalls) {
   EXPECT_FALSE(w.inWall(-1, 10, 10));
 }
 
+// The thin walls' voxels are the union of the inscribed balls of the stops thinner than the minimum, painted ball by
+// ball or as the envelope of their paraboloids: both equal a brute force over the stops.
+TEST(Walls, theWallsAreTheUnionOfTheThinStopsBallsByEitherPainting) {
+  for (uint32_t seed = 1; seed <= 3; ++seed) {
+    const VoxelGrid g = test::randomBoxes(Dims{26, 22, 18}, 6, seed);
+    auto dist = computeDistance(g, {}, DistanceLayout::kDense);
+    ASSERT_TRUE(dist.ok());
+    auto ridge = findWallRidge(*dist);
+    ASSERT_TRUE(ridge.ok());
+    for (double wall : {3.0, 6.0, 100.0}) {
+      SCOPED_TRACE("seed " + std::to_string(seed) + ", wall " + std::to_string(wall));
+      WallParams p{wall, 0.0};
+      p.paint = WallParams::Paint::kBalls;
+      auto balls = findWalls(*ridge, *dist, p);
+      p.paint = WallParams::Paint::kEnvelope;
+      auto envelope = findWalls(*ridge, *dist, p);
+      ASSERT_TRUE(balls.ok() && envelope.ok());
+      EXPECT_EQ(balls->mask, envelope->mask);
+      EXPECT_EQ(balls->voxels, envelope->voxels);
+      int64_t brute = 0;
+      const Dims d = ridge->box_dims;
+      for (int64_t i = 0; i < d.count(); ++i) {
+        const int64_t x = i % d.nx, y = (i / d.nx) % d.ny, z = i / (int64_t(d.nx) * d.ny);
+        bool in = false;
+        for (const WallRidge::Stop& s : ridge->stops) {
+          if (4.0 * double(s.squared) >= wall * wall) break;  // thinnest first
+          const int64_t sx = s.index % d.nx, sy = (s.index / d.nx) % d.ny, sz = s.index / (int64_t(d.nx) * d.ny);
+          const int64_t q = (x - sx) * (x - sx) + (y - sy) * (y - sy) + (z - sz) * (z - sz);
+          if (q < int64_t(s.squared)) {
+            in = true;
+            break;
+          }
+        }
+        brute += in;
+        EXPECT_EQ(in, bool((envelope->mask[size_t(i >> 6)] >> (i & 63)) & 1)) << x << " " << y << " " << z;
+      }
+      EXPECT_EQ(brute, envelope->voxels);  // every region listed (no speck limit)
+    }
+  }
+}
+
 TEST(Walls, refusesBadParameters) {
   VoxelGrid g(Dims{4, 4, 4});
   test::fillBox(g, {1, 1, 1}, {3, 3, 3});
