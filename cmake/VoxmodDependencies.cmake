@@ -18,6 +18,7 @@ find_package(assimp 5 REQUIRED)  # libassimp-dev: mesh formats other than STL (O
 # libminizip-dev (assimp's own zip library): 3MF packages are re-read with its 64-bit API (docs/dependencies.md).
 pkg_check_modules(MINIZIP REQUIRED IMPORTED_TARGET minizip)
 find_package(EXPAT REQUIRED)  # libexpat1-dev: the length unit of a 3MF model (assimp does not report it)
+find_package(embree 3 REQUIRED)  # libembree-dev: ray thickness, rays cast against the mesh
 
 # libocct-*-dev (Open CASCADE 7.6): STEP and IGES. Debian's config checks every component's targets, so all the
 # installed ones are named; only the data-exchange, healing and meshing libraries are linked (OCCT::occt). Its

@@ -9,6 +9,8 @@ packages=(
   # libraries
   libglm-dev libglfw3-dev libimgui-dev libstb-dev zlib1g-dev libteem-dev nlohmann-json3-dev libcli11-dev
   libassimp-dev libminizip-dev libexpat1-dev
+  # ray thickness against the mesh (Embree); see docs/dependencies.md
+  libembree-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   # volume export: VTK image data (.vti) and OpenVDB (.vdb); see docs/dependencies.md

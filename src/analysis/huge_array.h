@@ -2,6 +2,7 @@
 // Zeroed arrays on 2 MiB pages where the kernel gives them, for the analyses that read memory at scattered places.
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
@@ -17,6 +18,17 @@ namespace vox::analysis_detail {
 // on "madvise"): for arrays read at scattered places, where with 4 KiB pages most reads would miss the address
 // translation caches as well as the data caches (a ball's walk reads packed brick words all over its thread's
 // array, 18 MB at first at R = 1000; the containment test reads the lattice table, 44 MB there).
+// Asks the kernel to back [p, p + bytes) with 2 MiB pages where it can (the whole 2 MiB pages inside it), before the
+// memory is first written: for a vector reserved, then filled.
+inline void adviseHugePages([[maybe_unused]] void* p, [[maybe_unused]] size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr uintptr_t kHuge = uintptr_t(2) << 20;
+  const uintptr_t b = (reinterpret_cast<uintptr_t>(p) + kHuge - 1) / kHuge * kHuge;
+  const uintptr_t e = (reinterpret_cast<uintptr_t>(p) + bytes) / kHuge * kHuge;
+  if (e > b) madvise(reinterpret_cast<void*>(b), e - b, MADV_HUGEPAGE);  // a hint
+#endif
+}
+
 template <class T>
 class HugeArray {
  public:

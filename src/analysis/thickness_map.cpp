@@ -37,6 +37,49 @@ Result<Image2D<int32_t>> thicknessSection(const Thickness& thickness, const Sect
   return img;
 }
 
+Result<Image2D<int32_t>> fieldSection(const ScalarField& field, const SectionParams& params) {
+  const Dims& dims = field.dims;
+  const int a = int(params.axis);
+  const int32_t n = along(dims, params.axis);
+  if (params.index < 0 || params.index >= n) {
+    return makeError(ErrorCode::kInvalidArgument, std::string("section index ") + std::to_string(params.index) +
+                                                      " is outside 0.." + std::to_string(n - 1) + " along " +
+                                                      axisName(params.axis));
+  }
+  const int right = int(imageRightAxis(params.axis)), up_axis = int(imageUpAxis(params.axis));
+  const int32_t w = along(dims, Axis(right)), h = along(dims, Axis(up_axis));
+  Image2D<int32_t> img(w, h, 0);
+  for (int32_t row = 0; row < h; ++row) {
+    for (int32_t col = 0; col < w; ++col) {
+      int32_t v[3] = {0, 0, 0};
+      v[a] = params.index;
+      v[right] = col;
+      v[up_axis] = h - 1 - row;
+      const double t = field.at(v[0], v[1], v[2]) / field.frame.voxel_size;
+      img.at(col, row) = t > 0.0 ? std::max<int32_t>(1, int32_t(std::lround(t * kThicknessTenths))) : 0;
+    }
+  }
+  return img;
+}
+
+ScalarMapLegend rayThicknessLegend(const ScalarField& field, const SectionParams& params, const std::string& units,
+                                   double min, double max, double mean) {
+  ScalarMapLegend l;
+  l.title = std::string("Ray thickness, section ") + axisName(params.axis) + " = " + std::to_string(params.index);
+  l.value_name = "voxels";
+  l.units_per_value = field.frame.voxel_size;
+  l.value_divisor = kThicknessTenths;
+  l.units = units.empty() || units == "model" ? "model units" : units;
+  l.right_axis = axisName(imageRightAxis(params.axis));
+  l.up_axis = axisName(imageUpAxis(params.axis));
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "whole part: min %.4g, max %.4g, mean %.4g %s (voxel size %.4g %s)", min, max, mean,
+                l.units.c_str(), field.frame.voxel_size, l.units.c_str());
+  l.notes.push_back(buf);
+  l.notes.push_back("ray thickness: along the inward normal to the opposite wall facing back; blank: no wall");
+  return l;
+}
+
 ScalarMapLegend thicknessLegend(const Thickness& thickness, const SectionParams& params, const std::string& units) {
   const double h = thickness.radius.voxelSize();
   ScalarMapLegend l;

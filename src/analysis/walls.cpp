@@ -173,9 +173,9 @@ namespace {
 
 // The thin stops by box index, for the regions to read each one's distance.
 struct ThinStops {
-  std::vector<uint64_t> bits;              // one per box voxel
+  std::vector<uint64_t> bits;             // one per box voxel
   std::vector<WallRidge::Stop> by_index;  // sorted by index
-  uint32_t at(int64_t i) const {           // the squared distance of the stop at i, UINT32_MAX when none
+  uint32_t at(int64_t i) const {          // the squared distance of the stop at i, UINT32_MAX when none
     if (!((bits[size_t(i >> 6)] >> (i & 63)) & 1)) return UINT32_MAX;
     auto it = std::lower_bound(by_index.begin(), by_index.end(), i,
                                [](const WallRidge::Stop& s, int64_t v) { return s.index < v; });
@@ -213,9 +213,9 @@ void collectRegions(const WallRidge& ridge, const uint32_t* filled, const ThinSt
         min_a = std::min(min_a, thin_stops.at(i));
         bmin = glm::min(bmin, glm::ivec3(int32_t(x), int32_t(y), int32_t(z)));
         bmax = glm::max(bmax, glm::ivec3(int32_t(x), int32_t(y), int32_t(z)));
-        r.exposed_faces += (x == 0 || !filled[i - 1]) + (x == nx - 1 || !filled[i + 1]) +
-                           (y == 0 || !filled[i - nx]) + (y == ny - 1 || !filled[i + nx]) +
-                           (z == 0 || !filled[i - plane]) + (z == nz - 1 || !filled[i + plane]);
+        r.exposed_faces += (x == 0 || !filled[i - 1]) + (x == nx - 1 || !filled[i + 1]) + (y == 0 || !filled[i - nx]) +
+                           (y == ny - 1 || !filled[i + nx]) + (z == 0 || !filled[i - plane]) +
+                           (z == nz - 1 || !filled[i + plane]);
         analysis_detail::forEach26(x, y, z, nx, ny, nz, [&](int64_t j) {
           if (take(j)) queue.push_back(j);
         });

@@ -220,6 +220,18 @@ Status minWallAt(AppState& s, const ActionArgs& a) {  // VALUE: the Thickness pa
   showPanel(s, Panel::kThickness);
   return Ok{};
 }
+Status thicknessMethodAt(AppState& s, const ActionArgs& a) {  // VALUE: sphere | ray
+  const std::string& m = a.words[0];
+  if (m != "sphere" && m != "ray") return badValues("thickness-method takes sphere or ray");
+  if (m == "ray" && !rayMesh(s)) {
+    return makeError(ErrorCode::kInvalidArgument,
+                     "the ray thickness follows the mesh the model was voxelized from: this model has none as it is "
+                     "(a voxel file, a peeled model or a scene of parts)");
+  }
+  s.thickness_ui.ray = m == "ray";
+  showPanel(s, Panel::kThickness);
+  return Ok{};
+}
 
 namespace {
 

@@ -98,6 +98,7 @@ bool onMass(const AppState& s);
 void panelThickness(AppState& s);
 bool onThickness(const AppState& s);
 Status minWallAt(AppState& s, const ActionArgs& a);
+Status thicknessMethodAt(AppState& s, const ActionArgs& a);
 // N: the Thickness panel's thin-wall region N or hot spot N (1: the first of its list), selected and shown: the
 // section through it, the 3D view turned about it.
 Status thinRegionAt(AppState& s, const ActionArgs& a);

@@ -79,6 +79,7 @@ const Action kActions[] = {
   {ActionId::kPanelThickness, "panel-thickness", "View",    "Thickness panel",                    {GLFW_KEY_6, kCtrl},         0, 0,  panelThickness, nullptr,          nullptr,     onThickness},
   {ActionId::kPanelParts,     "panel-parts",     "View",    "Parts panel",                        {GLFW_KEY_7, kCtrl},         0, 0,  panelParts,    nullptr,           nullptr,     onParts},
   {ActionId::kMinWall,        "min-wall",        nullptr,   "Minimum wall (model units)",         kNone,                       1, 1,  nullptr,       minWallAt,         hasSection,  nullptr},
+  {ActionId::kThicknessMethod, "thickness-method", nullptr, "Thickness shown: sphere or ray",    kNone,                       1, 1,  nullptr,       thicknessMethodAt, hasSection,  nullptr},
   {ActionId::kThinRegion,     "thin-region",     nullptr,   "Show a thin-wall region",            kNone,                       1, 1,  nullptr,       thinRegionAt,      hasThickness, nullptr},
   {ActionId::kHotSpot,        "hot-spot",        nullptr,   "Show a hot spot",                    kNone,                       1, 1,  nullptr,       hotSpotAt,         hasThickness, nullptr},
 

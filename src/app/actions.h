@@ -67,6 +67,7 @@ enum class ActionId {
   kPanelThickness,
   kPanelParts,
   kMinWall,
+  kThicknessMethod,
   kThinRegion,
   kHotSpot,
   kComputeThickness,

@@ -22,6 +22,7 @@
 #include "vox/analysis/oblique_section.h"
 #include "vox/analysis/assembly.h"
 #include "vox/analysis/thickness.h"
+#include "vox/analysis/ray_thickness.h"
 #include "vox/analysis/walls.h"
 #include "vox/core/assembly.h"
 #include "vox/core/mesh.h"
@@ -233,7 +234,8 @@ struct ThicknessResult {
   VoxelGrid grid;   // the voxels it was computed from (sharing their layers)
   Thickness thickness;
   std::vector<HotSpot> hot_spots;
-  WallRidge ridge;  // the wall stops, from which the walls under any minimum wall are found
+  WallRidge ridge;                        // the wall stops, from which the walls under any minimum wall are found
+  std::optional<RayThicknessResult> ray;  // when asked for and the model is its mesh's voxelization
   double seconds = 0.0;
 };
 
@@ -241,12 +243,14 @@ struct ThicknessResult {
 // thin walls under it, recomputed on the main thread when the value or the model changes.
 struct ThicknessUi {
   double min_wall = -1.0;
+  bool ray = false;  // the views show the ray thickness (vox/analysis/ray_thickness.h), not local thickness
   uint64_t cancelled_version = 0;  // the model version whose computation the user cancelled (not asked again)
   uint64_t thin_result = 0;        // the result (ThicknessResult::id) and the minimum wall `thin` was found for
   double thin_min_wall = -1.0;
   std::optional<Walls> thin;  // walls, not edges (vox/analysis/walls.h)
   SectionKey image_key;       // what the section texture shows, with the minimum wall it paints red
   double image_min_wall = -1.0;
+  bool image_ray = false;
   Texture image_texture;
   // The thin-wall region and the hot spot last clicked in the lists (indices; -1: none), in the result
   // selected_result (ThicknessResult::id; a region, in the thin walls found then: thin_result and thin_min_wall).
@@ -255,6 +259,7 @@ struct ThicknessUi {
   uint64_t selected_result = 0;
   uint64_t volume_key = 0;        // the result (ThicknessResult::id) the 3D view's volume holds (0: none)
   double volume_min_wall = -1.0;  // ... and the minimum wall whose walls it marks
+  bool volume_ray = false;        // ... and whether it holds the ray thickness
   std::string volume_problem;     // why the 3D view cannot colour by thickness (empty: it can)
 };
 

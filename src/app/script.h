@@ -17,6 +17,7 @@
 //   skin-layers | cancel-skin-layers | compute-thickness | cancel-thickness   compute again after a cancel; cancel
 //   xray AXIS MODE                   X-ray along x|y|z, MODE min|max|total (and the X-ray panel)
 //   panel-model | panel-section | panel-skin | panel-xray | panel-mass | panel-thickness | panel-parts
+//   thickness-method sphere|ray      what the Thickness panel's views show (ray: the model's mesh only)
 //   min-wall W | thin-region N | hot-spot N   the Thickness panel's minimum wall (model units); row N of its lists of
 //                                    thin-wall regions and hot spots, selected and shown (section and 3D view there)
 //   view YAW PITCH | view-iso | view-pos-x | view-neg-x | ... | zoom FACTOR | zoom-in | zoom-out | fit

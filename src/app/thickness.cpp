@@ -29,9 +29,20 @@ void adoptThickness(AppState& state) {
   }
 }
 
+std::shared_ptr<const MeshSource> rayMesh(const AppState& state) {
+  const auto& m = state.doc.model;
+  if (!state.doc.mesh || !m || m->peeled > 0 || !m->round_peels.empty() || m->parts) return nullptr;
+  return state.doc.mesh;
+}
+
 void requestThickness(AppState& state) {
   state.thickness.poll();
   const uint64_t key = state.model_version;
+  // the ray method asked for on a result computed without it: computed again with it
+  if (const auto* held = state.thickness.get(key);
+      held && *held && state.thickness_ui.ray && !(*held)->ray && rayMesh(state) && !state.thickness.busy()) {
+    state.thickness.clear();
+  }
   if (state.thickness.get(key)) {
     // Back to a model whose result is here (undo): a computation still under way for the one left is not wanted,
     // and its end would replace this result.
@@ -44,17 +55,19 @@ void requestThickness(AppState& state) {
   if (state.thickness.get(key)) return;
   VoxelGrid grid = state.model;
   const uint64_t id = takeId(state);
-  state.thickness.request(key, "Computing thickness", [grid, id](const ProgressFn& progress) {
+  const std::shared_ptr<const MeshSource> mesh = state.thickness_ui.ray ? rayMesh(state) : nullptr;
+  state.thickness.request(key, "Computing thickness", [grid, id, mesh](const ProgressFn& progress) {
     using R = Result<std::shared_ptr<const ThicknessResult>>;
     // The bar's share of each stage, as their times go on real parts: distance 0..10%, hot spots 10..30%, wall
     // ridge 30..40%, thickness 40..100% (in the order of ThicknessStage: distance, hot spots, thickness, walls).
     const workflow::StageProgress bar = [&progress](workflow::ThicknessStage stage, double f) {
-      const double from[] = {0.0, 0.1, 0.4, 0.3}, to[] = {0.1, 0.3, 1.0, 0.4};
+      const double from[] = {0.0, 0.1, 0.4, 0.3, 0.8}, to[] = {0.1, 0.3, 0.8, 0.4, 1.0};
       const int i = int(stage);
       return !progress || progress(from[i] + (to[i] - from[i]) * f);
     };
     workflow::ThicknessRunOptions options;
     options.walls = WallRidgeParams{};
+    if (mesh) options.ray_mesh = &mesh->mesh;
     auto run = workflow::runThickness(grid, options, bar);
     if (!run) return R(run.error());
     auto out = std::make_shared<ThicknessResult>();
@@ -63,9 +76,14 @@ void requestThickness(AppState& state) {
     out->thickness = std::move(run->thickness);
     out->hot_spots = std::move(run->hot_spots);
     out->ridge = std::move(run->ridge).value();
-    out->seconds = run->distance_s + run->hot_spots_s + run->walls_s + run->thickness_s;
+    out->ray = std::move(run->ray);
+    out->seconds = run->distance_s + run->hot_spots_s + run->walls_s + run->thickness_s + run->ray_s;
     return R(std::shared_ptr<const ThicknessResult>(std::move(out)));
   });
+}
+
+const RayThicknessResult* shownRay(const AppState& state, const ThicknessResult& r) {
+  return state.thickness_ui.ray && r.ray ? &*r.ray : nullptr;
 }
 
 const ThicknessResult* currentThickness(const AppState& state) {

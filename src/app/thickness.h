@@ -4,6 +4,7 @@
 // that leaves the solid as it was, or its undo, keeps them),
 // the thin walls under the minimum wall (main thread: cheap), and the round skin removal (peel by distance) as an
 // undoable change of the model. No ImGui and no GL here.
+#include <memory>
 #include <string>
 
 #include "app/app_state.h"
@@ -25,6 +26,11 @@ void retryThickness(AppState& state);
 double minWall(const AppState& state);
 // Thin walls under minWall, found again when the value or the model changed; null without a thickness.
 const Walls* currentThinWalls(AppState& state);
+// The mesh the ray thickness can follow: the document's, while the model is its voxelization as it was (not peeled,
+// not a scene of parts); null otherwise.
+std::shared_ptr<const MeshSource> rayMesh(const AppState& state);
+// The ray thickness the views show: when the panel's method is ray and the result holds it; else null.
+const RayThicknessResult* shownRay(const AppState& state, const ThicknessResult& r);
 // The thin-wall region and the hot spot last clicked in the panel's lists: null when none was, or when the model or
 // the thin walls have changed since.
 const ThinWallRegion* selectedRegion(AppState& state);

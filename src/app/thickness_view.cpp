@@ -56,12 +56,39 @@ void hoverReadout(const AppState& state, const ThicknessResult& r, ImDrawList* d
   if (!v) return;
   const std::string units = state.model.frame().units;
   char line[160];
-  std::snprintf(line, sizeof line, "Thickness %s at voxel (%d, %d, %d)",
-                formatLength(r.thickness.model(v->x, v->y, v->z), units).c_str(), v->x, v->y, v->z);
+  const RayThicknessResult* ray = shownRay(state, r);
+  const double t = ray ? double(ray->field.at(v->x, v->y, v->z)) : r.thickness.model(v->x, v->y, v->z);
+  std::snprintf(line, sizeof line, "%s %s at voxel (%d, %d, %d)", ray ? "Ray thickness" : "Thickness",
+                ray && t <= 0.0 ? "(no wall facing back)" : formatLength(t, units).c_str(), v->x, v->y, v->z);
   const float lh = ImGui::GetTextLineHeightWithSpacing();
   shadowText(dl, ImVec2(pos.x + 8.0f, pos.y + float(h) - 2.0f * lh - 6.0f), IM_COL32(255, 255, 255, 255), line);
   ImVec2 c;
   if (project(vp, glm::dvec3(*v) + 0.5, pos, w, h, c)) dl->AddCircle(c, 5.0f, IM_COL32(255, 255, 255, 255), 0, 1.5f);
+}
+
+// Local thickness: 1..255 for 0..max; thinner than the minimum wall but in no wall (an edge): 0, the model's colour.
+void sphereVolume(const DistanceField& f, double max_voxels, double thin_squared, const Walls* walls,
+                  std::vector<uint8_t>& values) {
+  for (size_t i = 0; i < values.size(); ++i) {
+    const uint32_t sq = f.data()[i];
+    if (sq == 0) continue;
+    if (double(sq) < thin_squared && !(walls->mask[i >> 6] >> (i & 63) & 1)) continue;
+    const double t = max_voxels > 0.0 ? 2.0 * std::sqrt(double(sq)) / max_voxels : 0.0;
+    values[i] = uint8_t(1 + std::lround(254.0 * std::clamp(t, 0.0, 1.0)));
+  }
+}
+
+// The ray thickness over the local thickness's box, on the same scale (0 .. the thickest ball; longer rays at its top).
+void rayVolume(const RayThicknessResult& ray, const DistanceField& f, double max, std::vector<uint8_t>& values) {
+  const glm::ivec3 b = f.boxMin();
+  const Dims& d = f.boxDims();
+  size_t i = 0;
+  for (int32_t z = 0; z < d.nz; ++z)
+    for (int32_t y = 0; y < d.ny; ++y)
+      for (int32_t x = 0; x < d.nx; ++x, ++i) {
+        const double t = ray.field.at(b.x + x, b.y + y, b.z + z);
+        if (t > 0.0) values[i] = uint8_t(1 + std::lround(254.0 * std::clamp(max > 0.0 ? t / max : 0.0, 0.0, 1.0)));
+      }
 }
 
 }  // namespace
@@ -87,9 +114,13 @@ void syncThicknessVolume(AppState& state) {
   const uint64_t key = r ? r->id : 0;
   const Walls* walls = r ? currentThinWalls(state) : nullptr;
   const double wall = walls ? walls->min_wall : -1.0;
-  if ((key == ui.volume_key && wall == ui.volume_min_wall) || !state.viewport.renderer) return;
+  const RayThicknessResult* ray = r ? shownRay(state, *r) : nullptr;
+  if ((key == ui.volume_key && wall == ui.volume_min_wall && (ray != nullptr) == ui.volume_ray) ||
+      !state.viewport.renderer)
+    return;
   ui.volume_key = key;
   ui.volume_min_wall = wall;
+  ui.volume_ray = ray != nullptr;
   state.viewport.dirty = true;
   ui.volume_problem.clear();
   if (!r) {
@@ -102,12 +133,10 @@ void syncThicknessVolume(AppState& state) {
   const double max_voxels = r->thickness.stats.max / f.voxelSize();
   const double thin_squared = wall > 0.0 ? std::pow(wall / (2.0 * f.voxelSize()), 2.0) : 0.0;
   std::vector<uint8_t> values(size_t(f.boxDims().count()), 0);
-  for (size_t i = 0; i < values.size(); ++i) {
-    const uint32_t sq = f.data()[i];
-    if (sq == 0) continue;
-    if (double(sq) < thin_squared && !(walls->mask[i >> 6] >> (i & 63) & 1)) continue;
-    const double t = max_voxels > 0.0 ? 2.0 * std::sqrt(double(sq)) / max_voxels : 0.0;
-    values[i] = uint8_t(1 + std::lround(254.0 * std::clamp(t, 0.0, 1.0)));
+  if (ray) {
+    rayVolume(*ray, f, r->thickness.stats.max, values);
+  } else {
+    sphereVolume(f, max_voxels, thin_squared, walls, values);
   }
   if (Status s = state.viewport.renderer->setScalarVolume(f.boxMin(), f.boxDims(), values); !s) {
     ui.volume_problem = "The 3D view is not coloured by thickness: " + s.error().message + ".";
@@ -227,8 +256,10 @@ float drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, i
   // The colour scale along the top, under the view's buttons, with the hot spots' ring explained beside its title.
   const float strip_w = std::clamp(float(w) - 24.0f, 60.0f, 300.0f);
   const float y0 = pos.y + kLegendTop;
-  shadowText(dl, ImVec2(pos.x + 12.0f, y0), IM_COL32(230, 230, 230, 255), "Thickness");
-  const float ring_x = pos.x + 12.0f + ImGui::CalcTextSize("Thickness").x + 24.0f;
+  // the legend names the method shown
+  const char* title = shownRay(state, *r) ? "Thickness by rays" : "Thickness by spheres";
+  shadowText(dl, ImVec2(pos.x + 12.0f, y0), IM_COL32(230, 230, 230, 255), title);
+  const float ring_x = pos.x + 12.0f + ImGui::CalcTextSize(title).x + 24.0f;
   dl->AddCircle(ImVec2(ring_x, y0 + lh * 0.45f), 6.0f, kHotSpotColour, 0, 2.0f);
   shadowText(dl, ImVec2(ring_x + 10.0f, y0), kHotSpotColour, "hot spot");
   drawThicknessStrip(dl, ImVec2(pos.x + 12.0f, y0 + lh + 2.0f), strip_w, r->thickness.stats.max, minWall(state), units);

@@ -12,6 +12,7 @@
 #include "vox/analysis/distance.h"
 #include "vox/analysis/thickness.h"
 #include "vox/analysis/thickness_map.h"
+#include "vox/analysis/ray_thickness.h"
 #include "vox/analysis/walls.h"
 #include "vox/io/figure.h"
 #include "vox/io/file_util.h"
@@ -27,7 +28,8 @@ struct ThicknessOptions {
   double min_wall = 0.0;  // model units; 0: no thin-wall report
   bool edges = false;     // thin regions by local thickness alone, convex edges included (SPEC 6)
   double ray_angle = 30.0;
-  double min_area = -1.0;  // model units^2; < 0: min_wall^2
+  double min_area = -1.0;         // model units^2; < 0: min_wall^2
+  std::string method = "sphere";  // the field -o and --png show: sphere (local thickness) or ray
   std::string out, distance_out, png;
   bool signed_distance = false;
   std::string section_axis;
@@ -85,6 +87,31 @@ void reportHotSpots(const std::vector<HotSpot>& spots, int32_t shown, Output& ou
   }
 }
 
+// With --min-wall: the thinnest wall, and the walls (or, with --edges, the voxels) thinner than it.
+Status reportWalls(const workflow::ThicknessRun& run, const ThicknessOptions& o, const std::string& units,
+                   Output& out) {
+  auto& d = out.data();
+  auto walls = findWalls(*run.ridge, run.thickness.radius, WallParams{o.min_wall, o.min_area});
+  if (!walls) return walls.error();
+  d["wall_min"] = walls->wall_min;
+  d["ray_angle"] = o.ray_angle;
+  d["min_area"] = walls->min_area;
+  out.say("thinnest wall " + significant(walls->wall_min, 4) + " " + units + " (convex edges and corners aside)");
+  if (o.edges) {
+    auto thin = findThinWalls(run.thickness, o.min_wall);
+    if (!thin) return thin.error();
+    reportThinRegions(o.min_wall, thin->voxels, thin->regions, true, units, out);
+  } else {
+    reportThinRegions(o.min_wall, walls->voxels, walls->regions, false, units, out);
+    d["specks"] = walls->specks;
+    if (walls->specks > 0) {
+      out.say("  and " + countOf(walls->specks, "speck") + " under " + significant(walls->min_area, 3) + " " + units +
+              "^2 of surface, not listed (--min-area)");
+    }
+  }
+  return Ok{};
+}
+
 // The section PNG's bytes: the thickness map with its colour bar and legend.
 Result<std::vector<uint8_t>> sectionPng(const Thickness& t, const SectionParams& p, const std::string& units,
                                         const ThicknessOptions& o) {
@@ -92,6 +119,21 @@ Result<std::vector<uint8_t>> sectionPng(const Thickness& t, const SectionParams&
   if (!map) return map.error();
   const int64_t max_value = std::max<int64_t>(1, int64_t(std::lround(2.0 * t.radius.maxVoxels() * kThicknessTenths)));
   return io::encodePng(io::drawScalarMapFigure(*map, max_value, thicknessLegend(t, p, units), o.scale).image, o.png);
+}
+
+// The same for the ray thickness. Its colours stop at the thickest inscribed ball's diameter (`top`): a longer ray
+// runs along the part (from an end face down a bar), and would leave every wall the scale's bottom colour.
+Result<std::vector<uint8_t>> rayPng(const RayThicknessResult& r, double top, const SectionParams& p,
+                                    const std::string& units, const ThicknessOptions& o) {
+  auto map = fieldSection(r.field, p);
+  if (!map) return map.error();
+  const double h = r.field.frame.voxel_size;
+  const int64_t max_value = std::max<int64_t>(1, std::lround(std::min(r.max, top) / h * kThicknessTenths));
+  ScalarMapLegend legend = rayThicknessLegend(r.field, p, units, r.min, r.max, r.mean);
+  if (r.max > top) {
+    legend.notes.push_back("longer rays (along the part) in the top colour: it is the thickest inscribed ball's");
+  }
+  return io::encodePng(io::drawScalarMapFigure(*map, max_value, legend, o.scale).image, o.png);
 }
 
 int runThickness(const ThicknessOptions& o) {
@@ -104,25 +146,38 @@ int runThickness(const ThicknessOptions& o) {
     if (const std::string why = pngOutputProblem(o.png); !why.empty()) return out.fail(kExitUsage, why);
     if (o.section_axis.empty()) return out.fail(kExitUsage, "--png needs --section-axis and --section-index");
   }
-  auto model = loadModel(o.c.file, o.c.mesh, out);
+  const bool ray = o.method == "ray";
+  auto model = loadModel(o.c.file, o.c.mesh, out, ray);
   if (!model) return out.fail(model.error());
+  if (ray && !model->mesh) {
+    return out.fail(kExitUsage, "--method ray follows a mesh's own surface: " +
+                                    std::filesystem::path(o.c.file).filename().string() +
+                                    " is a voxel file (give the mesh, or use --method sphere)");
+  }
   const VoxelGrid& grid = model->grid;
   const std::string units = grid.frame().units;
   // Terminal lines for the distance and the thickness; the hot spots, quick, say nothing.
   const ProgressFn distance_line = terminalProgress("distance"), thickness_line = terminalProgress("thickness");
   const ProgressFn walls_line = o.min_wall > 0.0 ? terminalProgress("walls") : ProgressFn();
+  const ProgressFn rays_line = ray ? terminalProgress("rays") : ProgressFn();
   const workflow::StageProgress progress = [&](workflow::ThicknessStage stage, double f) {
     if (stage == workflow::ThicknessStage::kDistance) return !distance_line || distance_line(f);
     if (stage == workflow::ThicknessStage::kThickness) return !thickness_line || thickness_line(f);
     if (stage == workflow::ThicknessStage::kWalls) return !walls_line || walls_line(f);
+    if (stage == workflow::ThicknessStage::kRays) return !rays_line || rays_line(f);
     return true;
   };
   // local thickness paints into the field itself unless --distance still needs it
   workflow::ThicknessRunOptions run_options;
   run_options.keep_distance = !o.distance_out.empty();
   if (o.min_wall > 0.0) run_options.walls = WallRidgeParams{o.ray_angle};
+  if (ray) {
+    run_options.ray_mesh = &*model->mesh;
+    run_options.ray.angle_deg = o.ray_angle;
+  }
   auto run = workflow::runThickness(
-      grid, run_options, distance_line || thickness_line || walls_line ? progress : workflow::StageProgress());
+      grid, run_options,
+      distance_line || thickness_line || walls_line || rays_line ? progress : workflow::StageProgress());
   if (!run) return out.fail(run.error());
   const Thickness* thickness = &run->thickness;
   const std::vector<HotSpot>* spots = &run->hot_spots;
@@ -142,31 +197,24 @@ int runThickness(const ThicknessOptions& o) {
   out.say("local thickness over " + std::to_string(s.voxels) + " voxels: min " + significant(s.min, 4) + ", max " +
           significant(s.max, 4) + ", mean " + significant(s.mean, 4) + " " + units + "; deepest voxel " +
           significant(distance_max, 4) + " from the surface");
+  d["method"] = o.method;
+  if (run->ray) {
+    const RayThicknessResult& r = *run->ray;
+    d["ray"] = {{"min", r.min},       {"max", r.max},   {"mean", r.mean},
+                {"voxels", r.voxels}, {"rays", r.rays}, {"accepted", r.accepted}};
+    out.say("ray thickness over " + std::to_string(r.voxels) + " voxels: min " + significant(r.min, 4) + ", max " +
+            significant(r.max, 4) + ", mean " + significant(r.mean, 4) + " " + units + " (" +
+            std::to_string(r.accepted) + " of " + std::to_string(r.rays) + " rays met a wall facing back)");
+  }
   if (o.min_wall > 0.0) {
-    auto walls = findWalls(*run->ridge, thickness->radius, WallParams{o.min_wall, o.min_area});
-    if (!walls) return out.fail(walls.error());
-    d["wall_min"] = walls->wall_min;
-    d["ray_angle"] = o.ray_angle;
-    d["min_area"] = walls->min_area;
-    out.say("thinnest wall " + significant(walls->wall_min, 4) + " " + units + " (convex edges and corners aside)");
-    if (o.edges) {
-      auto thin = findThinWalls(*thickness, o.min_wall);
-      if (!thin) return out.fail(thin.error());
-      reportThinRegions(o.min_wall, thin->voxels, thin->regions, true, units, out);
-    } else {
-      reportThinRegions(o.min_wall, walls->voxels, walls->regions, false, units, out);
-      d["specks"] = walls->specks;
-      if (walls->specks > 0) {
-        out.say("  and " + countOf(walls->specks, "speck") + " under " + significant(walls->min_area, 3) + " " + units +
-                "^2 of surface, not listed (--min-area)");
-      }
-    }
+    if (Status st = reportWalls(*run, o, units, out); !st) return out.fail(st.error());
   }
   reportHotSpots(*spots, o.hot_spots_shown, out);
 
   std::vector<io::PendingFile> files;
   if (!o.out.empty()) {
-    auto bytes = encodeFieldFile("thickness", thicknessField(*thickness), o.out, terminalProgress("writing"));
+    auto bytes = encodeFieldFile("thickness", run->ray ? run->ray->field : thicknessField(*thickness), o.out,
+                                 terminalProgress("writing"));
     if (!bytes) return out.fail(bytes.error());
     files.push_back({o.out, std::move(bytes).value()});
   }
@@ -186,7 +234,7 @@ int runThickness(const ThicknessOptions& o) {
     SectionParams p;
     p.axis = parseAxis(o.section_axis).value();
     p.index = o.section_index;
-    auto png = sectionPng(*thickness, p, units, o);
+    auto png = run->ray ? rayPng(*run->ray, thickness->stats.max, p, units, o) : sectionPng(*thickness, p, units, o);
     if (!png) return out.fail(png.error());
     files.push_back({o.png, std::move(png).value()});
   }
@@ -199,6 +247,7 @@ int runThickness(const ThicknessOptions& o) {
   d["distance_s"] = run->distance_s;
   d["thickness_s"] = run->thickness_s;
   if (run->ridge) d["walls_s"] = run->walls_s;
+  if (run->ray) d["ray_s"] = run->ray_s;
   return out.finish();
 }
 
@@ -212,6 +261,10 @@ void addThicknessCommand(CLI::App& sub, CommandContext& ctx) {
   sub.add_flag(
       "--edges", o->edges,
       "With --min-wall: list every voxel whose local thickness is under it, convex edges and corners included");
+  sub.add_option("--method", o->method,
+                 "The thickness -o and --png show: sphere (local thickness, exact; the default) or ray (along the "
+                 "inward normal of a mesh FILE to the opposite wall)")
+      ->check(CLI::IsMember({"sphere", "ray"}));
   sub.add_option("--ray-angle", o->ray_angle,
                  "Two sides facing each other within this angle (degrees) make a wall; sharper edges do not "
                  "(default 30)")

@@ -128,7 +128,8 @@ void warnMeshOnlyOptions(const std::filesystem::path& file, const MeshOptions& o
   }
 }
 
-Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptions& options, Output& out) {
+Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptions& options, Output& out,
+                              bool keep_mesh) {
   LoadedModel m;
   const double t0 = nowSeconds();
   if (io::isVoxelFile(file)) {
@@ -165,6 +166,7 @@ Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptio
   out.say("voxelized " + file.filename().string() + " with mode " + m.mode_used + " (" + result->mode_reason + ")");
   m.grid = std::move(result->grid);
   m.grid.frame().source = file.filename().string();
+  if (keep_mesh) m.mesh = std::move(mesh->mesh);
   return m;
 }
 

@@ -39,9 +39,10 @@ void addMeshOptions(CLI::App& sub, MeshOptions& options, const std::string& mode
 struct LoadedModel {
   VoxelGrid grid;
   bool from_mesh = false;
-  int64_t triangles = 0;  // when from_mesh
-  MeshTopology topology;  // when from_mesh
-  std::string mode_used;  // when from_mesh
+  int64_t triangles = 0;             // when from_mesh
+  MeshTopology topology;             // when from_mesh
+  std::optional<TriangleMesh> mesh;  // when from_mesh and kept
+  std::string mode_used;             // when from_mesh
   // When from_mesh: the file's format ("binary STL", "STEP (AUTOMOTIVE_DESIGN)"), bodies, the unit it declares and,
   // for CAD files, the tessellation's deflection (model units).
   std::string format;
@@ -65,7 +66,9 @@ Result<io::MeshFileLoad> loadMesh(const std::filesystem::path& file, const MeshO
 void warnMeshOnlyOptions(const std::filesystem::path& file, const MeshOptions& options, Output& out);
 
 // Reads FILE; messages and warnings go through `out`. Progress goes to stderr when it is a terminal.
-Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptions& options, Output& out);
+// With keep_mesh, a mesh FILE's triangles stay in LoadedModel::mesh (the ray thickness casts rays against them).
+Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptions& options, Output& out,
+                              bool keep_mesh = false);
 
 // The FILE argument's help: which files a subcommand reads.
 extern const char* const kFileHelp;

@@ -39,7 +39,16 @@ Result<ThicknessRun> runThickness(const VoxelGrid& grid, const ThicknessRunOptio
   run.distance_s = t1 - t0;
   run.hot_spots_s = t2 - t1;
   run.walls_s = t3 - t2;
-  run.thickness_s = nowSeconds() - t3;
+  const double t4 = nowSeconds();
+  run.thickness_s = t4 - t3;
+  if (options.ray_mesh) {
+    RayThicknessParams ray_params = options.ray;
+    if (ray_params.paint_limit <= 0.0) ray_params.paint_limit = 2.0 * run.distance_max + 2.0 * grid.voxelSize();
+    auto ray = computeRayThickness(*options.ray_mesh, grid, ray_params, stage(ThicknessStage::kRays));
+    if (!ray) return ray.error();
+    run.ray = std::move(ray).value();
+    run.ray_s = nowSeconds() - t4;
+  }
   return run;
 }
 

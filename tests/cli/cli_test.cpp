@@ -407,3 +407,50 @@ TEST(CliWalls, aTurnedBlockWithOneFinHasOneThinWallAtTheFinsThickness) {
 
 }  // namespace
 }  // namespace vox
+
+namespace vox {
+namespace {
+
+// A 2 mm plate (20 x 20 x 2 mm) turned 0, 30 and 45 degrees reads 2 mm by both methods: the ray thickness within a
+// voxel in every voxel it reads, the walls within two (the sphere method samples voxel centres).
+TEST(CliWalls, aPlateReadsTheSameByBothMethodsAtEveryAngle) {
+  test::TempDir dir;
+  for (double angle : {0.0, 30.0, 45.0}) {
+    SCOPED_TRACE("plate at " + std::to_string(angle));
+    TriangleMesh m;
+    addTurnedBox(m, {0, 0, 0}, {20, 20, 2}, 0, angle, glm::dvec3(10, 10, 1));
+    const std::string stl = (dir / "plate.stl").string();
+    ASSERT_TRUE(io::saveStlBinary(m, stl).ok());
+    auto r = test::runVoxmod({"thickness", stl, "--res", "100", "--units", "mm", "--min-wall", "3", "--method", "ray",
+                              "--json", "-o", (dir / "ray.nrrd").string()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const double h = j["voxel_size"].get<double>();
+    EXPECT_EQ(j["method"], "ray");
+    // every ray from a face meets the other face at 2 mm; rays from the rim run along the plate and read more
+    EXPECT_NEAR(j["ray"]["min"].get<double>(), 2.0, h);
+    EXPECT_GT(j["ray"]["voxels"].get<int64_t>(), 0);
+    EXPECT_GT(j["ray"]["accepted"].get<int64_t>(), j["ray"]["rays"].get<int64_t>() / 2);
+    ASSERT_EQ(j["thin_regions"].size(), 1u);
+    EXPECT_NEAR(j["thin_regions"][0]["min"].get<double>(), 2.0, 2 * h);
+    EXPECT_NEAR(j["wall_min"].get<double>(), j["ray"]["min"].get<double>(), 2 * h);
+    EXPECT_TRUE(std::filesystem::exists(dir / "ray.nrrd"));
+  }
+}
+
+TEST(CliWalls, theRayMethodNeedsAMesh) {
+  test::TempDir dir;
+  TriangleMesh m;
+  addTurnedBox(m, {0, 0, 0}, {2, 2, 2}, 0, 0, glm::dvec3(0));
+  ASSERT_TRUE(io::saveStlBinary(m, (dir / "c.stl").string()).ok());
+  ASSERT_EQ(
+      test::runVoxmod({"voxelize", (dir / "c.stl").string(), "--res", "20", "-o", (dir / "c.vxm").string()}).exit_code,
+      0);
+  auto r = test::runVoxmod({"thickness", (dir / "c.vxm").string(), "--method", "ray"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("voxel file"), std::string::npos) << r.err;
+  EXPECT_EQ(test::runVoxmod({"thickness", (dir / "c.stl").string(), "--method", "cone"}).exit_code, 1);
+}
+
+}  // namespace
+}  // namespace vox

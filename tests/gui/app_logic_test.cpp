@@ -1015,3 +1015,48 @@ TEST(AppScriptRun, errorsFailTheRunUnlessExpected) {
 
 }  // namespace
 }  // namespace vox::app
+
+namespace vox::app {
+namespace {
+
+// The Thickness panel's method: rays follow the mesh the model was voxelized from. A 4 x 4 x 1 plate reads 1 through
+// its thickness by rays; after a peel the model is no longer the mesh's voxelization and rays are refused with the
+// reason, the views back on spheres.
+TEST(AppScriptRun, theThicknessPanelShowsRaysForAMeshsOwnVoxelization) {
+  test::TempDir dir;
+  TriangleMesh plate = test::unitCubeMesh();
+  for (Triangle& t : plate.triangles) {
+    for (glm::vec3& v : t.v) v = v * glm::vec3(4, 4, 1);
+  }
+  ASSERT_TRUE(io::saveStlBinary(plate, dir / "plate.stl").ok());
+  AppState state;
+  startOpen(state, dir / "plate.stl");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.mesh != nullptr; }));
+  startVoxelize(state, VoxelizeParams{.resolution = 40});
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  Harness h;
+  ASSERT_TRUE(runScript(state, h, "panel-thickness\nthickness-method ray\n")) << h.last_error;
+  ASSERT_TRUE(pump(state, [&] {
+    requestThickness(state);
+    const ThicknessResult* r = currentThickness(state);
+    return r && r->ray;
+  }));
+  const ThicknessResult* r = currentThickness(state);
+  ASSERT_NE(shownRay(state, *r), nullptr);
+  EXPECT_NEAR(r->ray->min, 1.0, 1e-4);  // the faces' rays cross the plate
+  const Dims d = state.model.dims();
+  EXPECT_NEAR(r->ray->field.at(d.nx / 2, d.ny / 2, d.nz / 2), 1.0f, 1e-4);
+
+  Harness h2;
+  ASSERT_TRUE(runScript(state, h2, "thickness-method sphere\n")) << h2.last_error;
+  EXPECT_EQ(shownRay(state, *r), nullptr);
+
+  Harness h3;
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE(runScript(state, h3, "peel 1\nthickness-method ray\n"));
+  EXPECT_NE(testing::internal::GetCapturedStderr().find("follows the mesh"), std::string::npos);
+  EXPECT_FALSE(state.thickness_ui.ray);
+}
+
+}  // namespace
+}  // namespace vox::app

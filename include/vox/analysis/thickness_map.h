@@ -21,6 +21,12 @@ Result<Image2D<int32_t>> thicknessSection(const Thickness& thickness, const Sect
 // Its legend: the title names the section, values in voxels and model units, statistics as notes.
 ScalarMapLegend thicknessLegend(const Thickness& thickness, const SectionParams& params, const std::string& units);
 
+// A section through a field of lengths (model units, 0: no value; the ray thickness) in the same axes and tenths of
+// a voxel, and its legend.
+Result<Image2D<int32_t>> fieldSection(const ScalarField& field, const SectionParams& params);
+ScalarMapLegend rayThicknessLegend(const ScalarField& field, const SectionParams& params, const std::string& units,
+                                   double min, double max, double mean);
+
 // The whole grid's local thickness in model units (0 in empty voxels).
 ScalarField thicknessField(const Thickness& thickness);
 // The whole grid's distance in model units (0 in empty voxels). With `clearance` (computeClearance of the same

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "vox/analysis/distance.h"
+#include "vox/analysis/ray_thickness.h"
 #include "vox/analysis/thickness.h"
 #include "vox/analysis/walls.h"
 #include "vox/core/result.h"
@@ -15,7 +16,7 @@
 
 namespace vox::workflow {
 
-enum class ThicknessStage { kDistance, kHotSpots, kThickness, kWalls };
+enum class ThicknessStage { kDistance, kHotSpots, kThickness, kWalls, kRays };
 
 // Progress within one stage (fraction in [0, 1]); returning false stops the run, which then fails with kCancelled.
 using StageProgress = std::function<bool(ThicknessStage stage, double fraction)>;
@@ -26,6 +27,9 @@ struct ThicknessRunOptions {
   HotSpotParams hot_spots;
   // The wall stops (vox/analysis/walls.h), from which the walls under any minimum wall are found; none: not sought.
   std::optional<WallRidgeParams> walls;
+  // The ray thickness (vox/analysis/ray_thickness.h) against this mesh, the grid's own (model units); null: none.
+  const TriangleMesh* ray_mesh = nullptr;
+  RayThicknessParams ray;
 };
 
 struct ThicknessRun {
@@ -33,8 +37,9 @@ struct ThicknessRun {
   std::vector<HotSpot> hot_spots;
   std::optional<DistanceField> distance;  // with keep_distance
   std::optional<WallRidge> ridge;         // with options.walls
+  std::optional<RayThicknessResult> ray;  // with options.ray_mesh
   double distance_max = 0.0;              // the deepest voxel's distance from the surface, model units
-  double distance_s = 0.0, hot_spots_s = 0.0, walls_s = 0.0, thickness_s = 0.0;  // each stage's wall time
+  double distance_s = 0.0, hot_spots_s = 0.0, walls_s = 0.0, thickness_s = 0.0, ray_s = 0.0;  // each stage's time
 };
 
 Result<ThicknessRun> runThickness(const VoxelGrid& grid, const ThicknessRunOptions& options = {},

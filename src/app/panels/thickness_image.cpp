@@ -22,11 +22,14 @@ bool uploadThicknessSection(AppState& state, const ThicknessResult& r, int32_t& 
   ThicknessUi& ui = state.thickness_ui;
   const SectionKey key{state.model_version, state.section.axis, state.section.index};
   const double wall = minWall(state), max = r.thickness.stats.max, h = state.model.voxelSize();
-  auto map = thicknessSection(r.thickness, SectionParams{state.section.axis, state.section.index});
+  const RayThicknessResult* ray = shownRay(state, r);
+  const SectionParams sp{state.section.axis, state.section.index};
+  auto map = ray ? fieldSection(ray->field, sp) : thicknessSection(r.thickness, sp);
   if (!map) return false;
   iw = map->width;
   ih = map->height;
-  if (key == ui.image_key && wall == ui.image_min_wall && !ui.image_texture.empty()) return true;
+  if (key == ui.image_key && wall == ui.image_min_wall && (ray != nullptr) == ui.image_ray && !ui.image_texture.empty())
+    return true;
   const Walls* walls = currentThinWalls(state);
   const ImageAxes ax = imageAxes(state.section.axis);
   ImageRgb picture(iw, ih);
@@ -43,7 +46,7 @@ bool uploadThicknessSection(AppState& state, const ThicknessResult& r, int32_t& 
       voxel[ax.right] = u;
       voxel[ax.up] = ih - 1 - v;
       // under the minimum wall but in no wall: an edge or corner, grey
-      const bool edge = t < wall && walls && !walls->inWall(voxel.x, voxel.y, voxel.z);
+      const bool edge = !ray && t < wall && walls && !walls->inWall(voxel.x, voxel.y, voxel.z);
       const ImU32 c = edge ? kEdgeColour : thicknessColour(t, max, wall);
       picture.at(u, v) = Rgb8{uint8_t(c & 0xff), uint8_t((c >> 8) & 0xff), uint8_t((c >> 16) & 0xff)};
     }
@@ -51,6 +54,7 @@ bool uploadThicknessSection(AppState& state, const ThicknessResult& r, int32_t& 
   ui.image_texture.upload(picture);
   ui.image_key = key;
   ui.image_min_wall = wall;
+  ui.image_ray = ray != nullptr;
   return true;
 }
 
@@ -70,7 +74,8 @@ void drawThicknessImage(AppState& state) {
   }
   const Axis axis = state.section.axis;
   const std::string units = state.model.frame().units;
-  ImGui::Text("Thickness in the section %s = %d (Section panel's slider)", axisName(axis), state.section.index);
+  ImGui::Text("%s in the section %s = %d (Section panel's slider)",
+              shownRay(state, *r) ? "Ray thickness" : "Local thickness (spheres)", axisName(axis), state.section.index);
   const ImageAxes ax = imageAxes(axis);
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float bar_room = 230.0f;  // the colour bar and its labels ("min wall 0.125 model units")

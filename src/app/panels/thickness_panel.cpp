@@ -50,6 +50,26 @@ void histogram(const ThicknessStats& st, double min_wall, const std::string& uni
   ImGui::GetWindowDrawList()->AddLine(ImVec2(x, r0.y), ImVec2(x, r1.y), IM_COL32(255, 60, 60, 255), 2.0f);
 }
 
+// Which thickness the views show: spheres (local thickness) or rays (the mesh's own normals, to the side facing back).
+void methodChoice(AppState& state, const ThicknessResult& r) {
+  const bool can_ray = rayMesh(state) != nullptr, rays = state.thickness_ui.ray && can_ray;
+  ImGui::TextUnformatted("Views show");
+  ImGui::SameLine();
+  if (widget::RadioButton("spheres", !rays)) dispatchValues(state, ActionId::kThicknessMethod, {"sphere"});
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!can_ray);
+  if (widget::RadioButton("rays", rays)) dispatchValues(state, ActionId::kThicknessMethod, {"ray"});
+  ImGui::EndDisabled();
+  if (!can_ray) {
+    helpMarker(
+        "Rays follow the mesh the model was voxelized from; a voxel file, a peeled model or a scene of parts "
+        "has none.");
+  } else if (rays && r.ray) {
+    ImGui::TextDisabled("%s of %s rays met a wall facing back", groupDigits(r.ray->accepted).c_str(),
+                        groupDigits(r.ray->rays).c_str());
+  }
+}
+
 }  // namespace
 
 void drawThicknessPanel(AppState& state) {
@@ -75,6 +95,7 @@ void drawThicknessPanel(AppState& state) {
   }
   const double wall = minWall(state);
   histogram(st, wall, units);
+  methodChoice(state, *r);
 
   heading("Minimum wall");
   float v = float(wall);
