@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "app/messages.h"
+#include "app/thickness.h"
 #include "app/update.h"
 #include "vox/analysis/cut.h"
 #include "vox/analysis/surface_mesh.h"
@@ -11,6 +12,7 @@
 #include "vox/io/image_io.h"
 #include "vox/io/mesh_export.h"
 #include "vox/io/voxel_file.h"
+#include "vox/workflow/thickness_figure.h"
 
 namespace vox::app {
 
@@ -62,7 +64,28 @@ bool exportSurface(AppState& state, const std::filesystem::path& path, bool smoo
   return true;
 }
 
+// On the Thickness panel the section exported is the one it shows: coloured by the thickness shown, with its colour
+// bar and legend, about 512 pixels across.
+bool exportThicknessSectionPng(AppState& state, const ThicknessResult& r, const std::filesystem::path& path) {
+  currentSection(state);  // clamps the index to the model
+  const Dims d = state.model.dims();
+  const int32_t across = std::max({d.nx, d.ny, d.nz, 1});
+  const int32_t scale = std::clamp((512 + across - 1) / across, 1, 8);
+  auto figure = workflow::thicknessSectionFigure(r.thickness, shownRay(state, r),
+                                                 SectionParams{state.section.axis, state.section.index},
+                                                 state.model.frame().units, scale);
+  Status s = figure ? io::savePng(*figure, path) : Status(figure.error());
+  if (!s) {
+    reportError(state, describe(s.error(), path), path);
+    return false;
+  }
+  return true;
+}
+
 bool exportSectionPng(AppState& state, const std::filesystem::path& path) {
+  if (const ThicknessResult* r = state.panel == Panel::kThickness ? currentThickness(state) : nullptr) {
+    return exportThicknessSectionPng(state, *r, path);
+  }
   const Section* section = state.section.oblique ? nullptr : currentSection(state);
   const ObliqueSection* oblique = state.section.oblique ? currentObliqueSection(state) : nullptr;
   if (!section && !oblique) {

@@ -1,5 +1,7 @@
 #include "app/ui.h"
 
+#include "vox/core/text.h"
+
 #include <algorithm>
 #include <cinttypes>
 #include <cmath>
@@ -115,8 +117,8 @@ void peeledNotice(const AppState& state) {
                                         "; Edit > Undo brings the part back).");
   }
   if (!state.doc.model || state.doc.model->peeled <= 0) return;
-  wrappedColoured(kWarningColour, "On the model peeled by " + std::to_string(state.doc.model->peeled) +
-                                      " skin layers (Skin > Reset skin for the whole part).");
+  wrappedColoured(kWarningColour, "On the model peeled by " + countOf(state.doc.model->peeled, "skin layer") +
+                                      " (Skin > Reset skin for the whole part).");
 }
 
 namespace {

@@ -18,6 +18,7 @@
 #include "vox/io/file_util.h"
 #include "vox/io/image_io.h"
 #include "vox/io/volume_export.h"
+#include "vox/workflow/thickness_figure.h"
 #include "vox/workflow/thickness_run.h"
 
 namespace vox::cli {
@@ -110,30 +111,6 @@ Status reportWalls(const workflow::ThicknessRun& run, const ThicknessOptions& o,
     }
   }
   return Ok{};
-}
-
-// The section PNG's bytes: the thickness map with its colour bar and legend.
-Result<std::vector<uint8_t>> sectionPng(const Thickness& t, const SectionParams& p, const std::string& units,
-                                        const ThicknessOptions& o) {
-  auto map = thicknessSection(t, p);
-  if (!map) return map.error();
-  const int64_t max_value = std::max<int64_t>(1, int64_t(std::lround(2.0 * t.radius.maxVoxels() * kThicknessTenths)));
-  return io::encodePng(io::drawScalarMapFigure(*map, max_value, thicknessLegend(t, p, units), o.scale).image, o.png);
-}
-
-// The same for the ray thickness. Its colours stop at the thickest inscribed ball's diameter (`top`): a longer ray
-// runs along the part (from an end face down a bar), and would leave every wall the scale's bottom colour.
-Result<std::vector<uint8_t>> rayPng(const RayThicknessResult& r, double top, const SectionParams& p,
-                                    const std::string& units, const ThicknessOptions& o) {
-  auto map = fieldSection(r.field, p);
-  if (!map) return map.error();
-  const double h = r.field.frame.voxel_size;
-  const int64_t max_value = std::max<int64_t>(1, std::lround(std::min(r.max, top) / h * kThicknessTenths));
-  ScalarMapLegend legend = rayThicknessLegend(r.field, p, units, r.min, r.max, r.mean);
-  if (r.max > top) {
-    legend.notes.push_back("longer rays (along the part) in the top colour: it is the thickest inscribed ball's");
-  }
-  return io::encodePng(io::drawScalarMapFigure(*map, max_value, legend, o.scale).image, o.png);
 }
 
 int runThickness(const ThicknessOptions& o) {
@@ -234,7 +211,9 @@ int runThickness(const ThicknessOptions& o) {
     SectionParams p;
     p.axis = parseAxis(o.section_axis).value();
     p.index = o.section_index;
-    auto png = run->ray ? rayPng(*run->ray, thickness->stats.max, p, units, o) : sectionPng(*thickness, p, units, o);
+    auto figure = workflow::thicknessSectionFigure(*thickness, run->ray ? &*run->ray : nullptr, p, units, o.scale);
+    if (!figure) return out.fail(figure.error());
+    auto png = io::encodePng(*figure, o.png);
     if (!png) return out.fail(png.error());
     files.push_back({o.png, std::move(png).value()});
   }

@@ -22,6 +22,7 @@
 #include "support/cad_parts.h"
 #include "support/test_support.h"
 #include "vox/io/cad.h"
+#include "vox/io/image_io.h"
 #include "vox/io/stl.h"
 #include "vox/io/voxel_file.h"
 #include "vox/io/vxm_stream.h"
@@ -1046,6 +1047,16 @@ TEST(AppScriptRun, theThicknessPanelShowsRaysForAMeshsOwnVoxelization) {
   EXPECT_NEAR(r->ray->min, 1.0, 1e-4);  // the faces' rays cross the plate
   const Dims d = state.model.dims();
   EXPECT_NEAR(r->ray->field.at(d.nx / 2, d.ny / 2, d.nz / 2), 1.0f, 1e-4);
+
+  // Export section PNG on the Thickness panel writes the section it shows: the figure with its colour bar, not the
+  // plain section (the plate's 40 x 10 voxels at one pixel each).
+  Harness he;
+  const std::filesystem::path png = dir / "ray_section.png";
+  ASSERT_TRUE(runScript(state, he, "section z 4\npanel-thickness\nexport-section " + png.string() + "\n"))
+      << he.last_error;
+  auto picture = io::loadPng(png);
+  ASSERT_TRUE(picture.ok());
+  EXPECT_GT(picture->width, 400);
 
   Harness h2;
   ASSERT_TRUE(runScript(state, h2, "thickness-method sphere\n")) << h2.last_error;
