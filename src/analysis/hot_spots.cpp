@@ -423,7 +423,9 @@ class HotSpotSearch {
     for (uint32_t k = 0; k < comps_.size(); ++k) {
       const Component& c = comps_[k];
       if (plateau_[k] != k) continue;  // absorbed into another plateau
-      if (c.dead && (c.saddle == c.peak || dynamic(c) < params_.min_dynamic_voxels)) continue;
+      const double least =
+          std::max(params_.min_dynamic_voxels, params_.min_dynamic_fraction * std::sqrt(double(c.peak)));
+      if (c.dead && (c.saddle == c.peak || dynamic(c) < least)) continue;
       spot_of[k] = int64_t(spot_comp.size());
       spot_comp.push_back(k);
     }
@@ -461,7 +463,8 @@ class HotSpotSearch {
     hs.modulus = hs.radius / 3.0;
     hs.dynamic = dynamic(c) * h;
     hs.saddle = c.dead ? std::sqrt(double(c.saddle)) * h : 0.0;
-    hs.isolated = !c.dead || dynamic(c) >= params_.isolation_voxels;
+    hs.isolated = !c.dead || dynamic(c) >= std::max(params_.isolation_voxels,
+                                                    params_.isolation_fraction * std::sqrt(double(c.peak)));
     double best = INFINITY;
     for (int64_t n = 0; n < count; ++n) {
       const glm::ivec3 v = coordinates(voxels[n]) + lo;

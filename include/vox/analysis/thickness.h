@@ -85,6 +85,10 @@ struct HotSpotParams {
   double min_dynamic_voxels = 1.0;
   // ... and isolated when the dynamic is at least this many voxels (a neck clearly thinner than the spot).
   double isolation_voxels = 2.0;
+  // Both also as fractions of the spot's own radius: a bump on one thick region is that region's, not a spot of its
+  // own, at any resolution (reported: dynamic >= 10% of the radius; isolated: the neck 20% thinner than the spot).
+  double min_dynamic_fraction = 0.1;
+  double isolation_fraction = 0.2;
 };
 struct HotSpot {
   glm::dvec3 centre{0.0};  // model units: the mean of the plateau's voxel centres (the grid's placement)

@@ -109,7 +109,7 @@ std::vector<HotSpot> bruteHotSpots(const DistanceField& f, const HotSpotParams& 
     }
     const double r = std::sqrt(double(v));
     const double dyn = dead ? r - std::sqrt(double(saddle)) : r;
-    if (dead && dyn < params.min_dynamic_voxels) continue;
+    if (dead && dyn < std::max(params.min_dynamic_voxels, params.min_dynamic_fraction * r)) continue;
     int64_t sx = 0, sy = 0, sz = 0;
     for (int64_t i : own) {
       sx += i % d.nx;
@@ -124,7 +124,7 @@ std::vector<HotSpot> bruteHotSpots(const DistanceField& f, const HotSpotParams& 
     hs.modulus = hs.radius / 3.0;
     hs.dynamic = dyn * h;
     hs.saddle = dead ? std::sqrt(double(saddle)) * h : 0.0;
-    hs.isolated = !dead || dyn >= params.isolation_voxels;
+    hs.isolated = !dead || dyn >= std::max(params.isolation_voxels, params.isolation_fraction * r);
     double nearest = INFINITY;
     for (int64_t i : own) {
       const glm::ivec3 g =
