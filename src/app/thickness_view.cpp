@@ -221,6 +221,23 @@ float drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, i
   }
   const std::string units = state.model.frame().units;
   const glm::dmat4 vp = state.view.camera.viewProjection(aspect, *state.model_bounds);
+  // The colour scale along the top, under the view's buttons, with the hot spots' ring explained beside its title;
+  // drawn first, so that the rings and marks go over it, never under.
+  const float strip_w = std::clamp(float(w) - 24.0f, 60.0f, 300.0f);
+  const float y0 = pos.y + kLegendTop;
+  // the legend names the method shown
+  const char* title = shownRay(state, *r) ? "Thickness by rays" : "Thickness by spheres";
+  shadowText(dl, ImVec2(pos.x + 12.0f, y0), IM_COL32(230, 230, 230, 255), title);
+  const float ring_x = pos.x + 12.0f + ImGui::CalcTextSize(title).x + 24.0f;
+  dl->AddCircle(ImVec2(ring_x, y0 + lh * 0.45f), 6.0f, kHotSpotColour, 0, 2.0f);
+  shadowText(dl, ImVec2(ring_x + 10.0f, y0), kHotSpotColour, "hot spot");
+  drawThicknessStrip(dl, ImVec2(pos.x + 12.0f, y0 + lh + 2.0f), strip_w, r->thickness.stats.max, minWall(state), units);
+  float bottom = y0 + kLegendLines * lh;  // under the strip's labels (two lines when the minimum wall is marked)
+  if (!state.thickness_ui.volume_problem.empty()) {
+    shadowText(dl, ImVec2(pos.x + 12.0f, bottom), IM_COL32(255, 200, 80, 255),
+               state.thickness_ui.volume_problem.c_str());
+    bottom += lh;
+  }
   // Hot spots: rings at their centres, numbered as in the panel's list (the largest first).
   for (size_t i = 0; i < r->hot_spots.size() && int(i) < kMostHotSpotsShown; ++i) {
     ImVec2 c;
@@ -252,22 +269,6 @@ float drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, i
         for (const int bit : {1, 2, 4})
           if (!(k & bit)) dl->AddLine(corner[k], corner[k | bit], colour, width);  // each edge from its lower corner
     }
-  }
-  // The colour scale along the top, under the view's buttons, with the hot spots' ring explained beside its title.
-  const float strip_w = std::clamp(float(w) - 24.0f, 60.0f, 300.0f);
-  const float y0 = pos.y + kLegendTop;
-  // the legend names the method shown
-  const char* title = shownRay(state, *r) ? "Thickness by rays" : "Thickness by spheres";
-  shadowText(dl, ImVec2(pos.x + 12.0f, y0), IM_COL32(230, 230, 230, 255), title);
-  const float ring_x = pos.x + 12.0f + ImGui::CalcTextSize(title).x + 24.0f;
-  dl->AddCircle(ImVec2(ring_x, y0 + lh * 0.45f), 6.0f, kHotSpotColour, 0, 2.0f);
-  shadowText(dl, ImVec2(ring_x + 10.0f, y0), kHotSpotColour, "hot spot");
-  drawThicknessStrip(dl, ImVec2(pos.x + 12.0f, y0 + lh + 2.0f), strip_w, r->thickness.stats.max, minWall(state), units);
-  float bottom = y0 + kLegendLines * lh;  // under the strip's labels (two lines when the minimum wall is marked)
-  if (!state.thickness_ui.volume_problem.empty()) {
-    shadowText(dl, ImVec2(pos.x + 12.0f, bottom), IM_COL32(255, 200, 80, 255),
-               state.thickness_ui.volume_problem.c_str());
-    bottom += lh;
   }
   hoverReadout(state, *r, dl, pos, w, h, aspect);
   return bottom;

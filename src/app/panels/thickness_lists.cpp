@@ -41,9 +41,7 @@ void drawThinWallList(AppState& state, const Walls& thin, const std::string& uni
     return;
   }
   ImGui::TextWrapped(
-      "%s thinner than %s%s: red in the views (edges and corners under it grey in the section, in the model's colour "
-      "in 3D); lengths in %s. Click one "
-      "to see it.",
+      "%s thinner than %s%s, red (edges are not walls: grey in the section). Lengths in %s; click one to see it.",
       countOf(int64_t(thin.regions.size()), "wall").c_str(), formatLength(thin.min_wall, units).c_str(), specks.c_str(),
       unitsLabel(units).c_str());
   const int rows = std::min(int(thin.regions.size()), kMostRows);
