@@ -9,36 +9,10 @@ namespace {
 
 int32_t along(const Dims& d, Axis a) { return a == Axis::kX ? d.nx : (a == Axis::kY ? d.ny : d.nz); }
 
-}  // namespace
-
-Result<Image2D<int32_t>> thicknessSection(const Thickness& thickness, const SectionParams& params) {
-  const Dims& dims = thickness.radius.gridDims();
-  const int a = int(params.axis);
-  const int32_t n = along(dims, params.axis);
-  if (params.index < 0 || params.index >= n) {
-    return makeError(ErrorCode::kInvalidArgument, std::string("section index ") + std::to_string(params.index) +
-                                                      " is outside 0.." + std::to_string(n - 1) + " along " +
-                                                      axisName(params.axis));
-  }
-  const int right = int(imageRightAxis(params.axis)), up_axis = int(imageUpAxis(params.axis));
-  const int32_t w = along(dims, Axis(right)), h = along(dims, Axis(up_axis));
-  Image2D<int32_t> img(w, h, 0);
-  for (int32_t row = 0; row < h; ++row) {
-    const int32_t up = h - 1 - row;
-    for (int32_t col = 0; col < w; ++col) {
-      int32_t v[3] = {0, 0, 0};
-      v[a] = params.index;
-      v[right] = col;
-      v[up_axis] = up;
-      const double t = thickness.voxels(v[0], v[1], v[2]);
-      img.at(col, row) = t > 0.0 ? std::max<int32_t>(1, int32_t(std::lround(t * kThicknessTenths))) : 0;
-    }
-  }
-  return img;
-}
-
-Result<Image2D<int32_t>> fieldSection(const ScalarField& field, const SectionParams& params) {
-  const Dims& dims = field.dims;
+// The section `params` names of a grid of dims `dims`, each voxel's thickness in voxels from `voxels(x, y, z)`, in
+// tenths of a voxel (0 where it reads 0).
+template <class F>
+Result<Image2D<int32_t>> tenthsSection(const Dims& dims, const SectionParams& params, F&& voxels) {
   const int a = int(params.axis);
   const int32_t n = along(dims, params.axis);
   if (params.index < 0 || params.index >= n) {
@@ -55,11 +29,24 @@ Result<Image2D<int32_t>> fieldSection(const ScalarField& field, const SectionPar
       v[a] = params.index;
       v[right] = col;
       v[up_axis] = h - 1 - row;
-      const double t = field.at(v[0], v[1], v[2]) / field.frame.voxel_size;
+      const double t = voxels(v[0], v[1], v[2]);
       img.at(col, row) = t > 0.0 ? std::max<int32_t>(1, int32_t(std::lround(t * kThicknessTenths))) : 0;
     }
   }
   return img;
+}
+
+}  // namespace
+
+Result<Image2D<int32_t>> thicknessSection(const Thickness& thickness, const SectionParams& params) {
+  return tenthsSection(thickness.radius.gridDims(), params,
+                       [&](int32_t x, int32_t y, int32_t z) { return thickness.voxels(x, y, z); });
+}
+
+Result<Image2D<int32_t>> fieldSection(const ScalarField& field, const SectionParams& params) {
+  return tenthsSection(field.dims, params, [&](int32_t x, int32_t y, int32_t z) {
+    return double(field.at(x, y, z)) / field.frame.voxel_size;
+  });
 }
 
 ScalarMapLegend rayThicknessLegend(const ScalarField& field, const SectionParams& params, const std::string& units,

@@ -8,7 +8,7 @@
 
 #include <glm/common.hpp>
 
-#include "analysis/neighbours.h"
+#include "analysis/mask_regions.h"
 #include "analysis/progress_gate.h"
 #include "vox/analysis/thickness.h"
 #include "vox/core/parallel.h"
@@ -49,59 +49,33 @@ Result<ThinWalls> findThinWalls(const Thickness& thickness, double min_wall, con
     for (int64_t c : counts) out.voxels += c;
   }
   analysis_detail::ProgressGate gate(progress);
-  auto take = [&](int64_t i) {
-    uint64_t& w = todo[size_t(i >> 6)];
-    const uint64_t bit = uint64_t(1) << (i & 63);
-    if (!(w & bit)) return false;
-    w &= ~bit;
-    return true;
-  };
   const glm::ivec3 lo = f.boxMin();
-  std::vector<int64_t> queue;
   int64_t visited = 0, next_report = 0;
-  for (int64_t wi = 0; wi < int64_t(todo.size()); ++wi) {
-    while (todo[size_t(wi)]) {
-      const int64_t seed = wi * 64 + std::countr_zero(todo[size_t(wi)]);
-      take(seed);
-      ThinWallRegion r;
-      uint32_t min_v = UINT32_MAX;
-      glm::ivec3 bmin(INT32_MAX), bmax(INT32_MIN);
-      queue.assign(1, seed);
-      for (size_t qi = 0; qi < queue.size(); ++qi) {
-        const int64_t i = queue[qi];
-        const int64_t x = i % nx, y = (i / nx) % ny, z = i / plane;
-        ++r.voxels;
-        min_v = std::min(min_v, data[i]);
-        bmin = glm::min(bmin, glm::ivec3(int32_t(x), int32_t(y), int32_t(z)));
-        bmax = glm::max(bmax, glm::ivec3(int32_t(x), int32_t(y), int32_t(z)));
-        // exposed faces: the face neighbour is empty (outside the box everything is empty)
-        if (x == 0 || !data[i - 1]) ++r.exposed_faces;
-        if (x == nx - 1 || !data[i + 1]) ++r.exposed_faces;
-        if (y == 0 || !data[i - nx]) ++r.exposed_faces;
-        if (y == ny - 1 || !data[i + nx]) ++r.exposed_faces;
-        if (z == 0 || !data[i - plane]) ++r.exposed_faces;
-        if (z == nz - 1 || !data[i + plane]) ++r.exposed_faces;
-        analysis_detail::forEach26(x, y, z, nx, ny, nz, [&](int64_t j) {
-          if (take(j)) queue.push_back(j);
-        });
-      }
-      visited += r.voxels;
-      r.area = double(r.exposed_faces) * h * h;
-      r.bbox_min_ijk = bmin + lo;
-      r.bbox_max_ijk = bmax + lo;
-      const GridFrame& fr = f.frame();
-      r.bbox.min = fr.origin + glm::dvec3(r.bbox_min_ijk) * h;
-      r.bbox.max = fr.origin + glm::dvec3(r.bbox_max_ijk + 1) * h;
-      r.min = 2.0 * std::sqrt(double(min_v)) * h;
-      out.regions.push_back(r);
-      if (visited >= next_report) {
-        next_report = visited + out.voxels / 100 + 1;
-        if (!gate.report(double(visited) / double(out.voxels))) {
-          return makeError(ErrorCode::kCancelled, "thin walls cancelled");
+  bool cancelled = false;
+  analysis_detail::forEachRegion(
+      std::move(todo), nx, ny, nz, [&](int64_t i) { return data[i] != 0; },
+      [&](const analysis_detail::MaskRegion& m) {
+        ThinWallRegion r;
+        uint32_t min_v = UINT32_MAX;
+        for (int64_t i : *m.voxels) min_v = std::min(min_v, data[i]);
+        r.voxels = int64_t(m.voxels->size());
+        r.exposed_faces = m.exposed_faces;
+        visited += r.voxels;
+        r.area = double(r.exposed_faces) * h * h;
+        r.bbox_min_ijk = m.min + lo;
+        r.bbox_max_ijk = m.max + lo;
+        const GridFrame& fr = f.frame();
+        r.bbox.min = fr.origin + glm::dvec3(r.bbox_min_ijk) * h;
+        r.bbox.max = fr.origin + glm::dvec3(r.bbox_max_ijk + 1) * h;
+        r.min = 2.0 * std::sqrt(double(min_v)) * h;
+        out.regions.push_back(r);
+        if (visited >= next_report) {
+          next_report = visited + out.voxels / 100 + 1;
+          cancelled = !gate.report(double(visited) / double(out.voxels));
         }
-      }
-    }
-  }
+        return !cancelled;
+      });
+  if (cancelled) return makeError(ErrorCode::kCancelled, "thin walls cancelled");
   std::stable_sort(out.regions.begin(), out.regions.end(),
                    [](const ThinWallRegion& a, const ThinWallRegion& b) { return a.voxels > b.voxels; });
   if (!gate.report(1.0)) return makeError(ErrorCode::kCancelled, "thin walls cancelled");

@@ -10,7 +10,7 @@
 
 #include <glm/common.hpp>
 
-#include "analysis/neighbours.h"
+#include "analysis/mask_regions.h"
 #include "analysis/progress_gate.h"
 #include "vox/core/parallel.h"
 
@@ -187,54 +187,30 @@ struct ThinStops {
 // the speck area are counted and cleared from the mask.
 void collectRegions(const WallRidge& ridge, const uint32_t* filled, const ThinStops& thin_stops, Walls& out) {
   const Dims d = ridge.box_dims;
-  const int64_t nx = d.nx, ny = d.ny, nz = d.nz, plane = nx * ny;
   const double h = ridge.frame.voxel_size;
-  std::vector<uint64_t> todo = out.mask;
-  auto take = [&](int64_t i) {
-    uint64_t& w = todo[size_t(i >> 6)];
-    const uint64_t bit = uint64_t(1) << (i & 63);
-    if (!(w & bit)) return false;
-    w &= ~bit;
-    return true;
-  };
-  std::vector<int64_t> queue;
-  for (int64_t wi = 0; wi < int64_t(todo.size()); ++wi) {
-    while (todo[size_t(wi)]) {
-      const int64_t seed = wi * 64 + std::countr_zero(todo[size_t(wi)]);
-      take(seed);
-      ThinWallRegion r;
-      uint32_t min_a = UINT32_MAX;
-      glm::ivec3 bmin(INT32_MAX), bmax(INT32_MIN);
-      queue.assign(1, seed);
-      for (size_t qi = 0; qi < queue.size(); ++qi) {
-        const int64_t i = queue[qi];
-        const int64_t x = i % nx, y = (i / nx) % ny, z = i / plane;
-        ++r.voxels;
-        min_a = std::min(min_a, thin_stops.at(i));
-        bmin = glm::min(bmin, glm::ivec3(int32_t(x), int32_t(y), int32_t(z)));
-        bmax = glm::max(bmax, glm::ivec3(int32_t(x), int32_t(y), int32_t(z)));
-        r.exposed_faces += (x == 0 || !filled[i - 1]) + (x == nx - 1 || !filled[i + 1]) + (y == 0 || !filled[i - nx]) +
-                           (y == ny - 1 || !filled[i + nx]) + (z == 0 || !filled[i - plane]) +
-                           (z == nz - 1 || !filled[i + plane]);
-        analysis_detail::forEach26(x, y, z, nx, ny, nz, [&](int64_t j) {
-          if (take(j)) queue.push_back(j);
-        });
-      }
-      r.area = double(r.exposed_faces) * h * h;
-      if (r.area < out.min_area) {
-        ++out.specks;
-        for (int64_t i : queue) out.mask[size_t(i >> 6)] &= ~(uint64_t(1) << (i & 63));
-        continue;
-      }
-      r.bbox_min_ijk = bmin + ridge.box_min;
-      r.bbox_max_ijk = bmax + ridge.box_min;
-      r.bbox.min = ridge.frame.origin + glm::dvec3(r.bbox_min_ijk) * h;
-      r.bbox.max = ridge.frame.origin + glm::dvec3(r.bbox_max_ijk + 1) * h;
-      r.min = 2.0 * std::sqrt(double(min_a)) * h;
-      out.voxels += r.voxels;
-      out.regions.push_back(r);
-    }
-  }
+  analysis_detail::forEachRegion(
+      out.mask, d.nx, d.ny, d.nz, [&](int64_t i) { return filled[i] != 0; },
+      [&](const analysis_detail::MaskRegion& m) {
+        ThinWallRegion r;
+        r.voxels = int64_t(m.voxels->size());
+        r.exposed_faces = m.exposed_faces;
+        r.area = double(r.exposed_faces) * h * h;
+        if (r.area < out.min_area) {
+          ++out.specks;
+          for (int64_t i : *m.voxels) out.mask[size_t(i >> 6)] &= ~(uint64_t(1) << (i & 63));
+          return true;
+        }
+        uint32_t min_a = UINT32_MAX;
+        for (int64_t i : *m.voxels) min_a = std::min(min_a, thin_stops.at(i));
+        r.bbox_min_ijk = m.min + ridge.box_min;
+        r.bbox_max_ijk = m.max + ridge.box_min;
+        r.bbox.min = ridge.frame.origin + glm::dvec3(r.bbox_min_ijk) * h;
+        r.bbox.max = ridge.frame.origin + glm::dvec3(r.bbox_max_ijk + 1) * h;
+        r.min = 2.0 * std::sqrt(double(min_a)) * h;
+        out.voxels += r.voxels;
+        out.regions.push_back(r);
+        return true;
+      });
   std::stable_sort(out.regions.begin(), out.regions.end(),
                    [](const ThinWallRegion& a, const ThinWallRegion& b) { return a.voxels > b.voxels; });
 }
