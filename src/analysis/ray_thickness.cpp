@@ -31,7 +31,7 @@ struct EmbreeScene {
 };
 
 // The mesh as one Embree triangle geometry (three vertices of its own per triangle, as the mesh stores them).
-Status buildScene(const TriangleMesh& mesh, EmbreeScene& s) {
+Status buildScene(const TriangleMesh& mesh, glm::dvec3 offset, EmbreeScene& s) {
   s.device = rtcNewDevice(nullptr);
   if (!s.device) return makeError(ErrorCode::kLimit, "ray thickness: Embree could not start");
   s.scene = rtcNewScene(s.device);
@@ -47,11 +47,14 @@ Status buildScene(const TriangleMesh& mesh, EmbreeScene& s) {
   }
   for (size_t t = 0; t < n; ++t) {
     for (int k = 0; k < 3; ++k) {
-      for (int c = 0; c < 3; ++c) vertices[9 * t + 3 * size_t(k) + size_t(c)] = mesh.triangles[t].v[k][c];
+      for (int c = 0; c < 3; ++c) {
+        vertices[9 * t + 3 * size_t(k) + size_t(c)] = float(double(mesh.triangles[t].v[k][c]) - offset[c]);
+      }
       indices[3 * t + size_t(k)] = unsigned(3 * t + size_t(k));
     }
   }
   rtcCommitGeometry(geometry);
+  rtcSetSceneFlags(s.scene, RTC_SCENE_FLAG_ROBUST);  // no ray slips between two triangles sharing an edge
   rtcAttachGeometry(s.scene, geometry);
   rtcReleaseGeometry(geometry);
   rtcCommitScene(s.scene);
@@ -61,7 +64,8 @@ Status buildScene(const TriangleMesh& mesh, EmbreeScene& s) {
   return Ok{};
 }
 
-// The first side the ray from p along d leaves through: its distance and triangle, or false.
+// The first side the ray from p along d leaves through: its distance and triangle, or false. p is relative to the
+// scene's offset (the grid's origin), so that floats keep their precision far from the model's zero.
 bool castRay(RTCScene scene, glm::dvec3 p, glm::dvec3 d, float t_near, float& t, unsigned& triangle) {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -96,10 +100,11 @@ bool filledAt(const VoxelGrid& grid, glm::dvec3 p) {
 // material (overlapping shells, the foot of a part inside another) are passed through, as the voxels show them.
 bool exitOf(RTCScene scene, const VoxelGrid& grid, glm::dvec3 p, glm::dvec3 d, float t_near, double& t,
             unsigned& triangle) {
+  const glm::dvec3 origin = grid.frame().origin;
   t = 0.0;
   for (int crossings = 0; crossings < 16; ++crossings) {
     float dist = 0.0f;
-    if (!castRay(scene, p + d * t, d, t_near, dist, triangle)) return false;
+    if (!castRay(scene, p - origin + d * t, d, t_near, dist, triangle)) return false;
     t += double(dist);
     if (!filledAt(grid, p + d * (t + 0.75 * grid.voxelSize()))) return true;
   }
@@ -161,7 +166,7 @@ Result<RayThicknessResult> computeRayThickness(const TriangleMesh& mesh, const V
   analysis_detail::adviseHugePages(out.field.values.data(), size_t(grid.dims().count()) * sizeof(float));
   out.field.values.assign(size_t(grid.dims().count()), std::numeric_limits<float>::infinity());
   EmbreeScene scene;
-  if (Status st = buildScene(mesh, scene); !st) return st.error();
+  if (Status st = buildScene(mesh, grid.frame().origin, scene); !st) return st.error();
   const size_t n = mesh.triangles.size();
   std::vector<glm::dvec3> normals(n);
   for (size_t t = 0; t < n; ++t) {
@@ -171,7 +176,7 @@ Result<RayThicknessResult> computeRayThickness(const TriangleMesh& mesh, const V
     normals[t] = len > 0.0 ? c / len : glm::dvec3(0.0);
   }
   const double h = grid.voxelSize(), facing = std::cos(params.angle_deg * std::numbers::pi / 180.0);
-  const float t_near = float(1e-4 * h);
+  const float t_near = float(1e-3 * h);  // past the side it starts on: floats over a grid of ~10^4 voxels
   analysis_detail::ProgressGate gate(progress);
   const int threads = threadsFor(int64_t(n) * 64);
   std::vector<int64_t> rays(size_t(threads), 0), accepted(size_t(threads), 0);
@@ -185,9 +190,9 @@ Result<RayThicknessResult> computeRayThickness(const TriangleMesh& mesh, const V
       const double area = 0.5 * glm::length(glm::cross(e1, e2));
       const int64_t samples = std::max<int64_t>(1, std::llround(params.samples_per_face * area / (h * h)));
       for (int64_t k = 0; k < samples; ++k) {
-        // a low-discrepancy point of the unit square (Roberts' R2), folded into the triangle
-        double a = std::fmod(0.5 + 0.7548776662466927 * double(k), 1.0);
-        double c = std::fmod(0.5 + 0.5698402909980532 * double(k), 1.0);
+        // a low-discrepancy point of the unit square (Roberts' R2) from the centroid, folded into the triangle
+        double a = std::fmod(1.0 / 3.0 + 0.7548776662466927 * double(k), 1.0);
+        double c = std::fmod(1.0 / 3.0 + 0.5698402909980532 * double(k), 1.0);
         if (a + c > 1.0) a = 1.0 - a, c = 1.0 - c;
         const glm::dvec3 p = v0 + a * e1 + c * e2;
         // a side inside the material (overlapping shells) is no surface to measure from

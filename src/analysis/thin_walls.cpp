@@ -25,7 +25,7 @@ Result<ThinWalls> findThinWalls(const Thickness& thickness, double min_wall, con
   const Dims d = f.boxDims();
   const double h = f.voxelSize();
   if (d.count() == 0) return out;
-  const int64_t nx = d.nx, ny = d.ny, nz = d.nz, plane = nx * ny;
+  const int64_t nx = d.nx, ny = d.ny, nz = d.nz;
   const uint32_t* data = f.data();
   auto thin = [&](uint32_t v) { return v != 0 && 2.0 * std::sqrt(double(v)) * h < min_wall; };
 

@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <map>
+#include <new>
 #include <numbers>
 
 #include <glm/common.hpp>
@@ -106,6 +107,7 @@ void dropLoneStops(WallRidge& ridge, int32_t reach) {
   size_t n = 0;
   for (size_t k = 0; k < ridge.stops.size(); ++k)
     if (keep[k]) ridge.stops[n++] = ridge.stops[k];
+  if (n == 0) return;  // a part a few voxels across: its stops are all it has
   ridge.stops.resize(n);
 }
 
@@ -287,12 +289,13 @@ void paintEnvelope(const WallRidge& ridge, size_t stops, std::vector<uint64_t>& 
 
 }  // namespace
 
-Result<Walls> findWalls(const WallRidge& ridge, const DistanceField& filled, const WallParams& params,
-                        const ProgressFn& progress) {
+static Result<Walls> findWallsIn(const WallRidge& ridge, const DistanceField& filled, const WallParams& params,
+                                 const ProgressFn& progress) {
   if (!(params.min_wall >= 0) || !std::isfinite(params.min_wall)) {
     return makeError(ErrorCode::kInvalidArgument, "walls: the minimum wall must be a number >= 0");
   }
-  if (filled.boxDims().count() != ridge.box_dims.count() || filled.boxMin() != ridge.box_min ||
+  const Dims fd = filled.boxDims(), rd = ridge.box_dims;
+  if (fd.nx != rd.nx || fd.ny != rd.ny || fd.nz != rd.nz || filled.boxMin() != ridge.box_min ||
       (ridge.box_dims.count() > 0 && !filled.isDense())) {
     return makeError(ErrorCode::kInvalidArgument, "walls: the field does not cover the ridge's box densely");
   }
@@ -330,13 +333,19 @@ Result<Walls> findWalls(const WallRidge& ridge, const DistanceField& filled, con
   }
   if (!gate.report(0.7)) return makeError(ErrorCode::kCancelled, "walls cancelled");
   collectRegions(ridge, filled.data(), thin, out);
-  double wall_min = k < ridge.stops.size() ? 2.0 * std::sqrt(double(ridge.stops[k].squared)) * h : INFINITY;
-  for (const ThinWallRegion& r : out.regions) wall_min = std::min(wall_min, r.min);
-  // only specks: the thinnest of them is still the part's thinnest wall
-  if (!std::isfinite(wall_min)) wall_min = 2.0 * std::sqrt(double(ridge.stops.front().squared)) * h;
-  out.wall_min = wall_min;
+  // the thinnest stop, whatever the minimum wall and the speck area: the part's thinnest wall
+  out.wall_min = 2.0 * std::sqrt(double(ridge.stops.front().squared)) * h;
   if (!gate.report(1.0)) return makeError(ErrorCode::kCancelled, "walls cancelled");
   return out;
+}
+
+Result<Walls> findWalls(const WallRidge& ridge, const DistanceField& filled, const WallParams& params,
+                        const ProgressFn& progress) {
+  try {
+    return findWallsIn(ridge, filled, params, progress);
+  } catch (const std::bad_alloc&) {
+    return makeError(ErrorCode::kLimit, "walls: not enough memory for the walls' mask and regions");
+  }
 }
 
 }  // namespace vox

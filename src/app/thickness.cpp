@@ -59,7 +59,7 @@ void requestThickness(AppState& state) {
   state.thickness.request(key, "Computing thickness", [grid, id, mesh](const ProgressFn& progress) {
     using R = Result<std::shared_ptr<const ThicknessResult>>;
     // The bar's share of each stage, as their times go on real parts: distance 0..10%, hot spots 10..30%, wall
-    // ridge 30..40%, thickness 40..100% (in the order of ThicknessStage: distance, hot spots, thickness, walls).
+    // ridge 30..40%, thickness 40..80%, rays (when asked for) 80..100% (in the order of ThicknessStage).
     const workflow::StageProgress bar = [&progress](workflow::ThicknessStage stage, double f) {
       const double from[] = {0.0, 0.1, 0.4, 0.3, 0.8}, to[] = {0.1, 0.3, 0.8, 0.4, 1.0};
       const int i = int(stage);

@@ -274,4 +274,57 @@ float drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, i
   return bottom;
 }
 
+namespace {
+
+void drawLegendOnImage(AppState& state, const ThicknessResult* r, ImageRgb& image) {
+  const int ts = std::max(1, image.height / 400);  // text scale: about 1/50 of the picture's height
+  const int line = io::textLineHeight(ts) + 2 * ts, x0 = 12 * ts;
+  const auto rgb = [](ImU32 c) { return Rgb8{uint8_t(c & 0xff), uint8_t((c >> 8) & 0xff), uint8_t((c >> 16) & 0xff)}; };
+  const Rgb8 ink{235, 235, 235}, shadow{0, 0, 0}, ring = rgb(kHotSpotColour);
+  const auto text = [&](int x, int y, const std::string& s, Rgb8 c) {
+    io::drawText(image, x + ts, y + ts, s, shadow, ts);
+    io::drawText(image, x, y, s, c, ts);
+  };
+  const std::string units = state.model.frame().units;
+  const double max = r->thickness.stats.max, wall = minWall(state);
+  int y = 10 * ts;
+  text(x0, y, shownRay(state, *r) ? "Thickness by rays" : "Thickness by spheres", ink);
+  y += line;
+  const int strip_w = std::min(300 * ts, image.width - 2 * x0), strip_h = 6 * ts;
+  for (int i = 0; i < strip_w; ++i) {
+    const Rgb8 c = rgb(thicknessColour(max * (double(i) + 0.5) / double(std::max(strip_w, 1)), max, wall));
+    for (int j = 0; j < strip_h; ++j)
+      if (x0 + i < image.width && y + j < image.height) image.at(x0 + i, y + j) = c;
+  }
+  y += strip_h + 2 * ts;
+  text(x0, y, "0", ink);
+  const std::string top = formatLength(max, units);
+  text(x0 + strip_w - io::textWidth(top, ts), y, top, ink);
+  if (wall > 0.0 && wall < max) text(x0, y + line, "min wall " + formatLength(wall, units), rgb(kThinTextColour));
+  // the hot spots where the view shows them, numbered as in the panel's list
+  const double aspect = double(image.width) / double(image.height);
+  const glm::dmat4 vp = state.view.camera.viewProjection(aspect, *state.model_bounds);
+  for (size_t i = 0; i < r->hot_spots.size() && int(i) < kMostHotSpotsShown; ++i) {
+    ImVec2 c;
+    if (!project(vp, glm::dvec3(r->hot_spots[i].voxel) + 0.5, ImVec2(0, 0), image.width, image.height, c)) continue;
+    io::drawRing(image, c.x, c.y, 8.0 * ts, 4.0 * ts, shadow);
+    io::drawRing(image, c.x, c.y, 8.0 * ts, 2.0 * ts, ring);
+    text(int(c.x) + 10 * ts, int(c.y) - 18 * ts, std::to_string(i + 1), ring);
+  }
+}
+
+}  // namespace
+
+void drawThicknessLegendOnImage(AppState& state, ImageRgba& image) {
+  const ThicknessResult* r = shownThickness(state);
+  if (!r || !state.model_bounds || image.width < 1 || image.height < 1) return;
+  ImageRgb rgb(image.width, image.height);
+  for (int32_t y = 0; y < image.height; ++y)
+    for (int32_t x = 0; x < image.width; ++x) rgb.at(x, y) = Rgb8{image.at(x, y).r, image.at(x, y).g, image.at(x, y).b};
+  drawLegendOnImage(state, r, rgb);
+  for (int32_t y = 0; y < image.height; ++y)
+    for (int32_t x = 0; x < image.width; ++x)
+      image.at(x, y) = Rgba8{rgb.at(x, y).r, rgb.at(x, y).g, rgb.at(x, y).b, 255};
+}
+
 }  // namespace vox::app

@@ -24,6 +24,9 @@ void thicknessDrawParams(const AppState& state, render::DrawParams& p);
 // The colour bar, the hot spots, the place clicked in the panel's lists and the read-out of the thickness under the
 // mouse, over the view at `pos`. Returns the y below what it wrote at the view's top left (pos.y when nothing).
 float drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, int h, double aspect);
+// The same legend on an exported picture of the view (the Thickness panel open): the colour scale with the method's
+// name and the minimum wall, and the hot spots' numbered rings.
+void drawThicknessLegendOnImage(AppState& state, ImageRgba& image);
 // A vertical colour bar of `height` pixels at `at`: 0 at the bottom, `max` at the top (model units), red under
 // `min_wall`, labelled. Returns its width with the labels.
 float drawThicknessBar(ImDrawList* dl, ImVec2 at, float height, double max, double min_wall, const std::string& units);

@@ -394,6 +394,7 @@ bool exportViewPng(AppState& state, const std::filesystem::path& path) {
   renderView(state, w, h, false);
   vp.drawn_signature.clear();  // the panel redraws its own (possibly coarse) image next frame
   ImageRgba image = vp.framebuffer.readPixels();
+  drawThicknessLegendOnImage(state, image);  // what the window draws over the view, on the picture too
   if (Status s = io::savePng(image, path); !s) {
     reportError(state, s.error().message, path);
     return false;

@@ -18,6 +18,7 @@
 #include "vox/io/file_util.h"
 #include "vox/io/image_io.h"
 #include "vox/io/volume_export.h"
+#include "vox/io/voxel_file.h"
 #include "vox/workflow/thickness_figure.h"
 #include "vox/workflow/thickness_run.h"
 
@@ -124,13 +125,13 @@ int runThickness(const ThicknessOptions& o) {
     if (o.section_axis.empty()) return out.fail(kExitUsage, "--png needs --section-axis and --section-index");
   }
   const bool ray = o.method == "ray";
-  auto model = loadModel(o.c.file, o.c.mesh, out, ray);
-  if (!model) return out.fail(model.error());
-  if (ray && !model->mesh) {
+  if (ray && io::isVoxelFile(o.c.file)) {
     return out.fail(kExitUsage, "--method ray follows a mesh's own surface: " +
                                     std::filesystem::path(o.c.file).filename().string() +
                                     " is a voxel file (give the mesh, or use --method sphere)");
   }
+  auto model = loadModel(o.c.file, o.c.mesh, out, ray);
+  if (!model) return out.fail(model.error());
   const VoxelGrid& grid = model->grid;
   const std::string units = grid.frame().units;
   // Terminal lines for the distance and the thickness; the hot spots, quick, say nothing.

@@ -106,6 +106,18 @@ void drawText(ImageRgb& image, int x, int y, std::string_view text, Rgb8 colour,
   }
 }
 
+void drawRing(ImageRgb& image, double cx, double cy, double r, double width, Rgb8 colour) {
+  const double outer = r + 0.5 * width, inner = std::max(0.0, r - 0.5 * width);
+  const int x0 = std::max(0, int(std::floor(cx - outer))), x1 = std::min(image.width - 1, int(std::ceil(cx + outer)));
+  const int y0 = std::max(0, int(std::floor(cy - outer))), y1 = std::min(image.height - 1, int(std::ceil(cy + outer)));
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      const double d = std::hypot(x + 0.5 - cx, y + 0.5 - cy);
+      if (d >= inner && d <= outer) image.at(x, y) = colour;
+    }
+  }
+}
+
 ScalarMapFigure drawScalarMapFigure(const Image2D<int32_t>& values, int64_t max_value, const ScalarMapLegend& legend,
                                     int32_t scale) {
   ScalarMapFigure fig;

@@ -1045,8 +1045,19 @@ TEST(AppScriptRun, theThicknessPanelShowsRaysForAMeshsOwnVoxelization) {
   const ThicknessResult* r = currentThickness(state);
   ASSERT_NE(shownRay(state, *r), nullptr);
   EXPECT_NEAR(r->ray->min, 1.0, 1e-4);  // the faces' rays cross the plate
+  // the plate's middle layer, its rim aside: read 1 where a ray crossed, nearly everywhere
   const Dims d = state.model.dims();
-  EXPECT_NEAR(r->ray->field.at(d.nx / 2, d.ny / 2, d.nz / 2), 1.0f, 1e-4);
+  int64_t read = 0, total = 0;
+  for (int32_t y = 2; y < d.ny - 2; ++y)
+    for (int32_t x = 2; x < d.nx - 2; ++x) {
+      const float t = r->ray->field.at(x, y, d.nz / 2);
+      ++total;
+      if (t > 0.0f) {
+        ++read;
+        EXPECT_NEAR(t, 1.0f, 1e-4);
+      }
+    }
+  EXPECT_GT(read, total * 95 / 100);
 
   // Export section PNG on the Thickness panel writes the section it shows: the figure with its colour bar, not the
   // plain section (the plate's 40 x 10 voxels at one pixel each).

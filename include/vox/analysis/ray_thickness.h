@@ -1,6 +1,6 @@
 #pragma once
 // Ray thickness (`voxmod thickness --method ray`): measured on the mesh's own surface, along its inward normal, to the
-// opposite wall, with Embree's rays. From points spread over every triangle (about one per voxel face of area), a ray
+// opposite wall, with Embree's rays. From points spread over every triangle (about two per voxel face of area), a ray
 // goes inward along the triangle's normal; where it leaves the material through a triangle facing back within
 // `angle_deg` (the two sides face each other), the wall's thickness is the ray's length, and every filled voxel the
 // ray crosses takes the least such length (a ray longer than paint_limit: the voxels at its ends only). Rays leaving
@@ -18,9 +18,10 @@ namespace vox {
 
 struct RayThicknessParams {
   double angle_deg = 30.0;      // the most the opposite side's normal may turn from facing back
-  double samples_per_face = 1;  // ray origins per voxel face of triangle area
+  double samples_per_face = 2;  // ray origins per voxel face of triangle area
   // A ray longer than this (model units; <= 0: no limit) runs along the part, not across a wall: only the voxels at
-  // its two ends take its length, not those between (the workflow passes the thickest inscribed ball's diameter).
+  // its two ends take its length, not those between (the workflow passes the thickest inscribed ball's diameter,
+  // twice the deepest distance, plus two voxels).
   double paint_limit = 0.0;
 };
 

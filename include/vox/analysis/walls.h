@@ -56,7 +56,7 @@ struct WallParams {
 struct Walls {
   double min_wall = 0.0;                // model units
   double min_area = 0.0;                // the speck limit used, model units^2
-  double wall_min = 0.0;                // the part's thinnest wall (specks aside), model units; 0: no filled voxel
+  double wall_min = 0.0;                // the part's thinnest wall: twice its thinnest stop, model units (0: empty)
   int64_t voxels = 0;                   // voxels in the listed thin walls
   int64_t specks = 0;                   // thin regions under min_area, not listed
   std::vector<ThinWallRegion> regions;  // 26-connected, largest first; `min` is the wall's thickness

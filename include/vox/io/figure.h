@@ -25,6 +25,9 @@ int textLineHeight(int scale);
 // Draws `text` with its top-left corner at (x, y), clipped to the image.
 void drawText(ImageRgb& image, int x, int y, std::string_view text, Rgb8 colour, int scale);
 
+// A ring of radius r (pixels) and the given width about (cx, cy), clipped to the image.
+void drawRing(ImageRgb& image, double cx, double cy, double r, double width, Rgb8 colour);
+
 // A picture of a section's filled mask (0 or 1, row 0 at the top): material in a solid colour, outline voxels
 // (material with an empty in-plane neighbour) darker, empty space light grey; `scale` pixels per voxel.
 ImageRgb sectionPicture(const Image2D<uint8_t>& mask, int32_t scale = 1);

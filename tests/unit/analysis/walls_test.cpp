@@ -138,11 +138,11 @@ TEST(Walls, specksUnderTheMinimumAreaAreCountedNotListed) {
   const VoxelGrid g = sample(blockWithFin, 16, h);
   const Walls all = wallsOf(g, 1.0, 0.0);
   ASSERT_EQ(all.regions.size(), 1u);
-  const Walls none = wallsOf(g, 1.0, all.regions[0].area * 1.01);
+  const Walls none = wallsOf(g, 1.0, all.regions[0].area * 1.01);  // the fin is a speck
   EXPECT_EQ(none.regions.size(), 0u);
   EXPECT_EQ(none.specks, 1);
   EXPECT_EQ(none.voxels, 0);
-  EXPECT_NEAR(none.wall_min, 5.0, 2 * h);  // specks aside, the block's height
+  EXPECT_NEAR(none.wall_min, all.regions[0].min, 1e-12);  // a speck's wall is still the part's thinnest
 }
 
 TEST(Walls, theMaskHoldsTheListedWalls) {
@@ -198,6 +198,15 @@ TEST(Walls, theWallsAreTheUnionOfTheThinStopsBallsByEitherPainting) {
       EXPECT_EQ(brute, envelope->voxels);  // every region listed (no speck limit)
     }
   }
+}
+
+// A part a few voxels across has only stops near its surface: they are kept, and it is one wall.
+TEST(Walls, aTinyPartKeepsItsStops) {
+  VoxelGrid g(Dims{9, 9, 9});
+  test::fillBox(g, {2, 2, 2}, {7, 7, 7});  // 5 voxels
+  const Walls w = wallsOf(g, 100.0, 0.0);
+  EXPECT_NEAR(w.wall_min, 6.0, 1.0);
+  ASSERT_EQ(w.regions.size(), 1u);
 }
 
 TEST(Walls, refusesBadParameters) {
