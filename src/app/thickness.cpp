@@ -39,8 +39,9 @@ void requestThickness(AppState& state) {
   state.thickness.poll();
   const uint64_t key = state.model_version;
   // the ray method asked for on a result computed without it: computed again with it
-  if (const auto* held = state.thickness.get(key);
-      held && *held && state.thickness_ui.ray && !(*held)->ray && rayMesh(state) && !state.thickness.busy()) {
+  if (const auto* held = state.thickness.get(key); held && *held && state.thickness_ui.ray && !(*held)->ray &&
+                                                   rayMesh(state) && !state.thickness.busy() &&
+                                                   state.panel == Panel::kThickness) {
     state.thickness.clear();
   }
   if (state.thickness.get(key)) {
@@ -59,9 +60,10 @@ void requestThickness(AppState& state) {
   state.thickness.request(key, "Computing thickness", [grid, id, mesh](const ProgressFn& progress) {
     using R = Result<std::shared_ptr<const ThicknessResult>>;
     // The bar's share of each stage, as their times go on real parts: distance 0..10%, hot spots 10..30%, wall
-    // ridge 30..40%, thickness 40..80%, rays (when asked for) 80..100% (in the order of ThicknessStage).
-    const workflow::StageProgress bar = [&progress](workflow::ThicknessStage stage, double f) {
-      const double from[] = {0.0, 0.1, 0.4, 0.3, 0.8}, to[] = {0.1, 0.3, 0.8, 0.4, 1.0};
+    // ridge 30..40%, thickness 40..100%, or 40..80% and rays 80..100% (in the order of ThicknessStage).
+    const double thickness_end = mesh ? 0.8 : 1.0;
+    const workflow::StageProgress bar = [&progress, thickness_end](workflow::ThicknessStage stage, double f) {
+      const double from[] = {0.0, 0.1, 0.4, 0.3, 0.8}, to[] = {0.1, 0.3, thickness_end, 0.4, 1.0};
       const int i = int(stage);
       return !progress || progress(from[i] + (to[i] - from[i]) * f);
     };

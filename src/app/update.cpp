@@ -2,10 +2,9 @@
 #include "app/update.h"
 
 #include <algorithm>
-#include <tuple>
-
 #include <cmath>
 #include <memory>
+#include <tuple>
 #include <utility>
 
 #include "app/document.h"
@@ -18,6 +17,24 @@
 
 namespace vox::app {
 
+namespace {
+
+// A section just computed: kept with no error, or none with the error's words; its texture is re-uploaded by the
+// panel when shown.
+template <class T>
+void keepResult(Result<T> r, std::optional<T>& result, std::string& error, Texture& texture) {
+  if (r) {
+    result = std::move(r).value();
+    error.clear();
+  } else {
+    result.reset();
+    error = r.error().message;
+  }
+  texture.reset();
+}
+
+}  // namespace
+
 const Section* currentSection(AppState& state) {
   if (state.model.empty()) return nullptr;
   const int32_t n = axisLength(state, state.section.axis);
@@ -25,15 +42,8 @@ const Section* currentSection(AppState& state) {
   const SectionKey key{state.model_version, state.section.axis, state.section.index};
   if (!(key == state.section_key)) {
     state.section_key = key;
-    auto s = computeSection(state.model, SectionParams{state.section.axis, state.section.index});
-    if (s) {
-      state.section_result = std::move(s).value();
-      state.section_error.clear();
-    } else {
-      state.section_result.reset();
-      state.section_error = s.error().message;
-    }
-    state.section_texture.reset();  // re-uploaded by the panel when shown
+    keepResult(computeSection(state.model, SectionParams{state.section.axis, state.section.index}),
+               state.section_result, state.section_error, state.section_texture);
   }
   return state.section_result ? &*state.section_result : nullptr;
 }
@@ -46,15 +56,7 @@ const ObliqueSection* currentObliqueSection(AppState& state) {
     ObliqueSectionParams p;  // through the centre of the model's box, moved along the normal
     p.normal = state.section.normal;
     p.offset = state.section.offset;
-    auto s = computeObliqueSection(state.model, p);
-    if (s) {
-      state.oblique_result = std::move(s).value();
-      state.oblique_error.clear();
-    } else {
-      state.oblique_result.reset();
-      state.oblique_error = s.error().message;
-    }
-    state.oblique_texture.reset();  // re-uploaded by the panel when shown
+    keepResult(computeObliqueSection(state.model, p), state.oblique_result, state.oblique_error, state.oblique_texture);
   }
   return state.oblique_result ? &*state.oblique_result : nullptr;
 }
