@@ -2,8 +2,6 @@
 // vox/analysis/ray_thickness.h.
 #include "vox/analysis/ray_thickness.h"
 
-#include <embree3/rtcore.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -13,6 +11,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "analysis/embree_scene.h"
 #include "analysis/huge_array.h"
 #include "analysis/progress_gate.h"
 #include "vox/core/parallel.h"
@@ -20,73 +19,8 @@
 namespace vox {
 namespace {
 
-// Embree's device and scene, released on every path.
-struct EmbreeScene {
-  RTCDevice device = nullptr;
-  RTCScene scene = nullptr;
-  ~EmbreeScene() {
-    if (scene) rtcReleaseScene(scene);
-    if (device) rtcReleaseDevice(device);
-  }
-};
-
-// The mesh as one Embree triangle geometry (three vertices of its own per triangle, as the mesh stores them).
-Status buildScene(const TriangleMesh& mesh, glm::dvec3 offset, EmbreeScene& s) {
-  s.device = rtcNewDevice(nullptr);
-  if (!s.device) return makeError(ErrorCode::kLimit, "ray thickness: Embree could not start");
-  s.scene = rtcNewScene(s.device);
-  RTCGeometry geometry = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  const size_t n = mesh.triangles.size();
-  auto* vertices = static_cast<float*>(
-      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * n));
-  auto* indices = static_cast<unsigned*>(
-      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), n));
-  if (!vertices || !indices) {
-    rtcReleaseGeometry(geometry);
-    return makeError(ErrorCode::kLimit, "ray thickness: no memory for the mesh's ray index");
-  }
-  for (size_t t = 0; t < n; ++t) {
-    for (int k = 0; k < 3; ++k) {
-      for (int c = 0; c < 3; ++c) {
-        vertices[9 * t + 3 * size_t(k) + size_t(c)] = float(double(mesh.triangles[t].v[k][c]) - offset[c]);
-      }
-      indices[3 * t + size_t(k)] = unsigned(3 * t + size_t(k));
-    }
-  }
-  rtcCommitGeometry(geometry);
-  rtcSetSceneFlags(s.scene, RTC_SCENE_FLAG_ROBUST);  // no ray slips between two triangles sharing an edge
-  rtcAttachGeometry(s.scene, geometry);
-  rtcReleaseGeometry(geometry);
-  rtcCommitScene(s.scene);
-  if (rtcGetDeviceError(s.device) != RTC_ERROR_NONE) {
-    return makeError(ErrorCode::kLimit, "ray thickness: Embree could not build the mesh's ray index");
-  }
-  return Ok{};
-}
-
-// The first side the ray from p along d leaves through: its distance and triangle, or false. p is relative to the
-// scene's offset (the grid's origin), so that floats keep their precision far from the model's zero.
-bool castRay(RTCScene scene, glm::dvec3 p, glm::dvec3 d, float t_near, float& t, unsigned& triangle) {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRayHit rh{};
-  rh.ray.org_x = float(p.x);
-  rh.ray.org_y = float(p.y);
-  rh.ray.org_z = float(p.z);
-  rh.ray.dir_x = float(d.x);
-  rh.ray.dir_y = float(d.y);
-  rh.ray.dir_z = float(d.z);
-  rh.ray.tnear = t_near;
-  rh.ray.tfar = std::numeric_limits<float>::infinity();
-  rh.ray.mask = 0xFFFFFFFFu;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene, &context, &rh);
-  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-  t = rh.ray.tfar;
-  triangle = rh.hit.primID;
-  return true;
-}
+using analysis_detail::castEmbreeRay;
+using analysis_detail::EmbreeScene;
 
 // Whether the voxel holding point p (model units) is filled; outside the grid nothing is.
 bool filledAt(const VoxelGrid& grid, glm::dvec3 p) {
@@ -104,7 +38,7 @@ bool exitOf(RTCScene scene, const VoxelGrid& grid, glm::dvec3 p, glm::dvec3 d, f
   t = 0.0;
   for (int crossings = 0; crossings < 16; ++crossings) {
     float dist = 0.0f;
-    if (!castRay(scene, p - origin + d * t, d, t_near, dist, triangle)) return false;
+    if (!castEmbreeRay(scene, p - origin + d * t, d, t_near, dist, triangle)) return false;
     t += double(dist);
     if (!filledAt(grid, p + d * (t + 0.75 * grid.voxelSize()))) return true;
   }
@@ -166,7 +100,8 @@ Result<RayThicknessResult> computeRayThickness(const TriangleMesh& mesh, const V
   analysis_detail::adviseHugePages(out.field.values.data(), size_t(grid.dims().count()) * sizeof(float));
   out.field.values.assign(size_t(grid.dims().count()), std::numeric_limits<float>::infinity());
   EmbreeScene scene;
-  if (Status st = buildScene(mesh, grid.frame().origin, scene); !st) return st.error();
+  if (Status st = analysis_detail::buildEmbreeScene(mesh, grid.frame().origin, "ray thickness", scene); !st)
+    return st.error();
   const size_t n = mesh.triangles.size();
   std::vector<glm::dvec3> normals(n);
   for (size_t t = 0; t < n; ++t) {

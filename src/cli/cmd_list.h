@@ -19,4 +19,5 @@ void addBooleanCommand(CLI::App& sub, CommandContext& ctx);
 void addBodiesCommand(CLI::App& sub, CommandContext& ctx);
 void addInterfereCommand(CLI::App& sub, CommandContext& ctx);
 void addClearanceCommand(CLI::App& sub, CommandContext& ctx);
+void addPrintCheckCommand(CLI::App& sub, CommandContext& ctx);
 }  // namespace vox::cli

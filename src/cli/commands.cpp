@@ -30,6 +30,8 @@ const std::vector<Command>& commands() {
        addBodiesCommand},
       {"interfere", "Which parts or bodies share voxels, how many and where", addInterfereCommand},
       {"clearance", "The smallest gap between two parts that do not touch", addClearanceCommand},
+      {"printcheck", "3D printing: overhangs, support volume, trapped cavities, the best build direction",
+       addPrintCheckCommand},
   };
   return table;
 }

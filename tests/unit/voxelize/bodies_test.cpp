@@ -7,7 +7,7 @@
 #include <string>
 
 #include "support/test_support.h"
-#include "test_meshes.h"
+#include "support/test_meshes.h"
 #include "vox/core/bits.h"
 #include "vox/core/mesh_bodies.h"
 #include "vox/io/stl.h"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "test_meshes.h"
+#include "support/test_meshes.h"
 #include "vox/voxelize/voxelize.h"
 #include "voxelize/exact_predicates.h"
 

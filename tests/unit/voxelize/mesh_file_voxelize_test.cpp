@@ -11,7 +11,7 @@
 
 #include "support/cad_parts.h"
 #include "support/test_support.h"
-#include "test_meshes.h"
+#include "support/test_meshes.h"
 #include "vox/io/cad.h"
 #include "vox/io/mesh_file.h"
 #include "vox/io/stl.h"

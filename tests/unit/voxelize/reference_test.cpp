@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "support/test_support.h"
-#include "test_meshes.h"
+#include "support/test_meshes.h"
 #include "vox/io/stl.h"
 #include "vox/io/voxel_file.h"
 #include "vox/voxelize/voxelize.h"

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "support/test_support.h"
-#include "test_meshes.h"
+#include "support/test_meshes.h"
 #include "vox/io/mesh_file.h"
 #include "vox/io/stl.h"
 #include "vox/voxelize/voxelize.h"

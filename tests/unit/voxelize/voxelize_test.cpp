@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "support/test_support.h"
-#include "test_meshes.h"
+#include "support/test_meshes.h"
 #include "vox/core/bits.h"
 
 namespace vox {

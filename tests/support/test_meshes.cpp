@@ -1,4 +1,4 @@
-#include "test_meshes.h"
+#include "support/test_meshes.h"
 
 #include <algorithm>
 #include <array>

@@ -1,0 +1,230 @@
+// Overhangs and support along a build direction, with Embree's rays against the part's surface. See
+// vox/analysis/printability.h.
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "analysis/embree_scene.h"
+#include "analysis/progress_gate.h"
+#include "vox/analysis/printability.h"
+#include "vox/analysis/surface_mesh.h"
+#include "vox/core/parallel.h"
+
+namespace vox {
+
+struct PrintSurface::Impl {
+  analysis_detail::EmbreeScene scene;  // offset: the grid's origin
+  std::vector<glm::dvec3> corners;     // three per triangle, relative to the offset
+  std::vector<glm::dvec3> normal;      // per triangle, unit, outward (the mesh turned if it encloses a negative volume)
+};
+
+PrintSurface::PrintSurface(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+PrintSurface::PrintSurface(PrintSurface&&) noexcept = default;
+PrintSurface& PrintSurface::operator=(PrintSurface&&) noexcept = default;
+PrintSurface::~PrintSurface() = default;
+
+Result<PrintSurface> makePrintSurface(const VoxelGrid& grid, const TriangleMesh* mesh, const ProgressFn& progress) {
+  TriangleMesh own;
+  if (!mesh) {
+    // the voxels' smooth surface: slopes read as slopes, not as staircases of ceilings
+    SurfaceMeshParams sp;
+    sp.smooth_iterations = 4;
+    auto surface = extractSurfaceMesh(grid, sp, progress);
+    if (!surface) return surface.error();
+    own = surface->toTriangleMesh();
+    mesh = &own;
+  }
+  auto impl = std::make_unique<PrintSurface::Impl>();
+  const glm::dvec3 offset = grid.frame().origin;
+  const size_t n = mesh->triangles.size();
+  impl->corners.resize(3 * n);
+  impl->normal.resize(n);
+  double volume6 = 0.0;  // six times the signed volume enclosed
+  for (size_t t = 0; t < n; ++t) {
+    glm::dvec3 p[3];
+    for (int k = 0; k < 3; ++k) p[k] = glm::dvec3(mesh->triangles[t].v[k]) - offset;
+    for (int k = 0; k < 3; ++k) impl->corners[3 * t + size_t(k)] = p[k];
+    const glm::dvec3 c = glm::cross(p[1] - p[0], p[2] - p[0]);
+    const double len = glm::length(c);
+    impl->normal[t] = len > 0.0 ? c / len : glm::dvec3(0.0);
+    volume6 += glm::dot(p[0], glm::cross(p[1], p[2]));
+  }
+  if (volume6 < 0.0) {
+    for (glm::dvec3& nn : impl->normal) nn = -nn;
+  }
+  if (Status st = analysis_detail::buildEmbreeScene(*mesh, offset, "printability", impl->scene); !st) {
+    return st.error();
+  }
+  return PrintSurface(std::move(impl));
+}
+
+namespace {
+
+// Two unit vectors completing `d` to a right-handed frame; for an axis direction they are axes too, so that rays at
+// (a + 0.5) * h fall on voxel centres.
+void frameOf(glm::dvec3 d, glm::dvec3& u, glm::dvec3& v) {
+  const glm::dvec3 helper = std::abs(d.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  u = glm::normalize(helper - glm::dot(helper, d) * d);
+  v = glm::cross(d, u);
+}
+
+// The grid's layers made writable (each its own) for painting from many threads with atomic word operations.
+struct AtomicMask {
+  VoxelGrid grid;
+  std::vector<uint64_t*> layers;
+  explicit AtomicMask(const VoxelGrid& like) : grid(like.dims(), like.frame()) {
+    layers.resize(size_t(like.nz()));
+    for (int32_t z = 0; z < like.nz(); ++z) layers[size_t(z)] = grid.mutableLayerWords(z);
+  }
+  void set(int32_t x, int32_t y, int32_t z) {
+    uint64_t* word = layers[size_t(z)] + (int64_t(y) + 1) * grid.wordsPerRow() + ((int64_t(x) + 1) >> 6);
+    std::atomic_ref<uint64_t>(*word).fetch_or(uint64_t(1) << ((x + 1) & 63), std::memory_order_relaxed);
+  }
+  VoxelGrid done() {
+    grid.releaseEmptyLayers();
+    return std::move(grid);
+  }
+};
+
+// The voxel holding point p (relative to the grid's origin), or false outside the grid.
+bool voxelAt(const VoxelGrid& grid, glm::dvec3 p, glm::ivec3& v) {
+  const glm::dvec3 q = p / grid.voxelSize();
+  const double x = std::floor(q.x), y = std::floor(q.y), z = std::floor(q.z);
+  if (x < 0 || y < 0 || z < 0 || x >= grid.nx() || y >= grid.ny() || z >= grid.nz()) return false;
+  v = glm::ivec3(int(x), int(y), int(z));
+  return true;
+}
+
+struct RayJob {
+  const PrintSurface::Impl& s;
+  const VoxelGrid& grid;
+  glm::dvec3 d, u, v;
+  double spacing, plate, layer, sin_angle, extent;
+  AtomicMask *overhang = nullptr, *support = nullptr;
+};
+
+// One ray up through the part at (a, b) of the plate's lattice: the support below each bottom face steep enough to
+// need it, and the overhang area those sides hold per unit of the plate's area. The part is where the winding number of
+// the sides crossed is positive (sides facing down enter it, sides facing up leave it), so overlapping shells count
+// once.
+struct RayReading {
+  double support = 0.0;   // length of support, model units
+  double overhang = 0.0;  // overhang area per unit of the plate's area: 1 / |cos| of each overhang side entered
+};
+
+RayReading supportAlong(const RayJob& job, double a, double b, std::vector<std::pair<float, unsigned>>& hits) {
+  const glm::dvec3 foot = job.u * a + job.v * b + job.d * (job.plate - job.spacing);
+  hits.clear();
+  float t_near = 0.0f;
+  const double eps = std::max(1e-3 * job.layer, 1e-6 * job.extent);
+  for (int guard = 0; guard < 4096; ++guard) {
+    float t = 0.0f;
+    unsigned tri = 0;
+    if (!analysis_detail::castEmbreeRay(job.s.scene.scene, foot, job.d, t_near, t, tri)) break;
+    hits.emplace_back(t, tri);
+    t_near = float(double(t) + eps);
+  }
+  RayReading r;
+  double top = job.plate;
+  int winding = 0;
+  for (const auto& [t, tri] : hits) {
+    const double facing = glm::dot(job.s.normal[tri], job.d);
+    const double height = job.plate - job.spacing + double(t);
+    const int before = winding;
+    winding += facing < 0.0 ? 1 : (facing > 0.0 ? -1 : 0);
+    if (before <= 0 && winding > 0) {
+      const bool needs = height - job.plate >= job.layer && -facing > job.sin_angle;
+      if (needs) {
+        r.support += height - top;
+        r.overhang += 1.0 / -facing;
+        glm::ivec3 vox;
+        if (job.overhang && voxelAt(job.grid, foot + job.d * (double(t) + 0.5 * job.layer), vox)) {
+          job.overhang->set(vox.x, vox.y, vox.z);
+        }
+        for (double h = top + 0.5 * job.layer; job.support && h < height - 0.25 * job.layer; h += 0.5 * job.layer) {
+          if (voxelAt(job.grid, foot + job.d * (h - job.plate + job.spacing), vox) &&
+              !job.grid.get(vox.x, vox.y, vox.z)) {
+            job.support->set(vox.x, vox.y, vox.z);
+          }
+        }
+      }
+    } else if (before > 0 && winding <= 0) {
+      top = height;
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
+Result<PrintSupport> computePrintSupport(const PrintSurface& surface, const VoxelGrid& grid, const PrintParams& params,
+                                         const ProgressFn& progress) {
+  const double norm = glm::length(params.up);
+  if (!(norm > 0.0) || !std::isfinite(norm))
+    return makeError(ErrorCode::kInvalidArgument, "the build direction is zero");
+  if (!(params.overhang_angle_deg >= 0.0 && params.overhang_angle_deg < 90.0)) {
+    return makeError(ErrorCode::kInvalidArgument, "the overhang angle must lie in [0, 90) degrees");
+  }
+  const PrintSurface::Impl& s = surface.impl();
+  PrintSupport out;
+  const glm::dvec3 d = params.up / norm;
+  out.direction = d;
+  glm::dvec3 u, v;
+  frameOf(d, u, v);
+  const double h = grid.voxelSize();
+  const double spacing = params.ray_spacing > 0.0 ? params.ray_spacing : h;
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (const glm::dvec3& p : s.corners) {
+    const double c[3] = {glm::dot(p, u), glm::dot(p, v), glm::dot(p, d)};
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], c[k]), hi[k] = std::max(hi[k], c[k]);
+  }
+  if (s.corners.empty()) return out;
+  out.height = hi[2] - lo[2];
+  const double sin_angle = std::sin(params.overhang_angle_deg * std::numbers::pi / 180.0);
+  std::optional<AtomicMask> overhang, support;
+  if (params.fields) overhang.emplace(grid), support.emplace(grid);
+  const RayJob job{s,
+                   grid,
+                   d,
+                   u,
+                   v,
+                   spacing,
+                   lo[2],
+                   h,
+                   sin_angle,
+                   std::max({hi[0] - lo[0], hi[1] - lo[1], out.height}),
+                   overhang ? &*overhang : nullptr,
+                   support ? &*support : nullptr};
+  const int64_t a0 = int64_t(std::floor(lo[0] / spacing)), a1 = int64_t(std::ceil(hi[0] / spacing));
+  const int64_t b0 = int64_t(std::floor(lo[1] / spacing)), b1 = int64_t(std::ceil(hi[1] / spacing));
+  const int threads = threadsFor((a1 - a0) * (b1 - b0) * 64);
+  std::vector<RayReading> sums(static_cast<size_t>(threads));
+  std::atomic<int64_t> rows_done{0};
+  analysis_detail::ProgressGate gate(progress);
+  parallelChunks(b0, b1, 4, threads, [&](int th, int64_t begin, int64_t end) {
+    std::vector<std::pair<float, unsigned>> hits;
+    for (int64_t b = begin; b < end && !gate.cancelled(); ++b) {
+      for (int64_t a = a0; a < a1; ++a) {
+        const RayReading r = supportAlong(job, (double(a) + 0.5) * spacing, (double(b) + 0.5) * spacing, hits);
+        sums[size_t(th)].support += r.support;
+        sums[size_t(th)].overhang += r.overhang;
+      }
+      gate.report(double(rows_done.fetch_add(1) + 1) / double(b1 - b0));
+    }
+  });
+  if (gate.cancelled()) return makeError(ErrorCode::kCancelled, "printability cancelled");
+  for (const RayReading& r : sums) {
+    out.support_volume += r.support * spacing * spacing;
+    out.overhang_area += r.overhang * spacing * spacing;
+  }
+  out.rays = (a1 - a0) * (b1 - b0);
+  if (overhang) out.overhang = overhang->done(), out.support = support->done();
+  return out;
+}
+
+}  // namespace vox
