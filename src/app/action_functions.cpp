@@ -7,12 +7,13 @@
 #include "app/measure.h"
 #include "app/operations.h"
 #include "app/parts.h"
+#include "app/print.h"
 #include "vox/core/text.h"
 
 namespace vox::app::actions {
-namespace {
 
 Error badValues(std::string message) { return makeError(ErrorCode::kInvalidArgument, std::move(message)); }
+namespace {
 
 void showPanel(AppState& s, Panel p) {
   s.panel = p;
@@ -65,8 +66,8 @@ bool hasDisputed(const AppState& s) {
 }
 
 bool canCancel(const AppState& s) {
-  return modelBusy(s) || s.thickness.computing(s.model_version) || volumeExportRunning(s) || s.parts_job.active() ||
-         s.interference_job.active() || s.clearance_job.active() || skinLayersComputing(s);
+  return modelBusy(s) || s.thickness.computing(s.model_version) || printComputing(s) || volumeExportRunning(s) ||
+         s.parts_job.active() || s.interference_job.active() || s.clearance_job.active() || skinLayersComputing(s);
 }
 bool hasThickness(const AppState& s) { return currentThickness(s) != nullptr; }
 // A depth export needs the skin layers computed (the Skin panel computes them); until then the menu item is off.
@@ -154,6 +155,7 @@ Status voxelizeAt(AppState& s, const ActionArgs& a) {  // R [MODE], as the dialo
 void cancelAll(AppState& s) {
   cancelJobs(s);
   cancelThickness(s);
+  cancelPrint(s);
   cancelSkinLayers(s);
   cancelVolumeExport(s);
   s.parts_job.cancel();

@@ -5,6 +5,9 @@
 
 namespace vox::app::actions {
 
+// A usage error of an action's values, saying what it takes.
+Error badValues(std::string message);
+
 // ---- Conditions ----
 bool hasModel(const AppState& s);
 bool hasOrphanAutosave(const AppState& s);    // a window that is gone left unsaved work (autosave.h)
@@ -155,6 +158,22 @@ void clearanceSelected(AppState& s);                     // the two selected par
 Status clearanceAt(AppState& s, const ActionArgs& a);    // A B: part numbers from 1
 bool interferenceRunning(const AppState& s);
 void cancelInterferenceNow(AppState& s);
+
+// ---- Print (print_actions.cpp) ----
+void panelPrint(AppState& s);
+bool onPrint(const AppState& s);
+bool printComputingNow(const AppState& s);
+bool printCancelledNow(const AppState& s);
+bool hasPrint(const AppState& s);                             // the Print panel's result for the model and choices
+Status printDirectionAt(AppState& s, const ActionArgs& a);    // +z|-z|+x|-x|+y|-y or X,Y,Z (or X Y Z)
+Status overhangAngleAt(AppState& s, const ActionArgs& a);     // DEG in [0, 90)
+void printOrient(AppState& s);                                // search the build directions
+Status printOrientationAt(AppState& s, const ActionArgs& a);  // N: the directions list's row from 1, applied
+Status printCavityAt(AppState& s, const ActionArgs& a);       // N: the cavities list's row from 1
+void printLayFaceMode(AppState& s);                           // the next click on the 3D view lays a face down
+Status printLayFaceAt(AppState& s, const ActionArgs& a);      // I J K: the surface voxel whose face goes down
+void computePrint(AppState& s);
+void cancelPrintNow(AppState& s);
 
 // ---- Help and dialogs ----
 void controls(AppState& s);

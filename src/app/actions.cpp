@@ -78,6 +78,7 @@ const Action kActions[] = {
   {ActionId::kPanelMass,      "panel-mass",      "View",    "Mass properties panel",              {GLFW_KEY_5, kCtrl},         0, 0,  panelMass,     nullptr,           nullptr,     onMass},
   {ActionId::kPanelThickness, "panel-thickness", "View",    "Thickness panel",                    {GLFW_KEY_6, kCtrl},         0, 0,  panelThickness, nullptr,          nullptr,     onThickness},
   {ActionId::kPanelParts,     "panel-parts",     "View",    "Parts panel",                        {GLFW_KEY_7, kCtrl},         0, 0,  panelParts,    nullptr,           nullptr,     onParts},
+  {ActionId::kPanelPrint,     "panel-print",     "View",    "Print panel",                        {GLFW_KEY_8, kCtrl},         0, 0,  panelPrint,    nullptr,           nullptr,     onPrint},
   {ActionId::kMinWall,        "min-wall",        nullptr,   "Minimum wall (model units)",         kNone,                       1, 1,  nullptr,       minWallAt,         hasSection,  nullptr},
   {ActionId::kThicknessMethod, "thickness-method", nullptr, "Thickness shown: sphere or ray",    kNone,                       1, 1,  nullptr,       thicknessMethodAt, hasSection,  nullptr},
   {ActionId::kThinRegion,     "thin-region",     nullptr,   "Show a thin-wall region",            kNone,                       1, 1,  nullptr,       thinRegionAt,      hasThickness, nullptr},
@@ -85,6 +86,15 @@ const Action kActions[] = {
 
   {ActionId::kComputeThickness, "compute-thickness", nullptr, "Compute thickness",              kNone,                       0, 0,  retryThickness, nullptr,          thicknessCancelled, nullptr},
   {ActionId::kCancelThickness, "cancel-thickness", nullptr,  "Cancel thickness",                 kNone,                       0, 0,  cancelThickness, nullptr,         thicknessComputing, nullptr},
+
+  {ActionId::kPrintDirection, "print-direction", nullptr,   "Build direction",                    kNone,                       1, 3,  nullptr,       printDirectionAt,  hasModel,    nullptr},
+  {ActionId::kOverhangAngle,  "overhang-angle",  nullptr,   "Overhang angle (degrees)",           kNone,                       1, 1,  nullptr,       overhangAngleAt,   hasModel,    nullptr},
+  {ActionId::kPrintOrient,    "print-orient",    nullptr,   "Find the best way up",               kNone,                       0, 0,  printOrient,   nullptr,           hasModel,    nullptr},
+  {ActionId::kPrintOrientation, "print-orientation", nullptr, "Print in a direction of the list", kNone,                       1, 1,  nullptr,       printOrientationAt, hasPrint,   nullptr},
+  {ActionId::kPrintCavity,    "print-cavity",    nullptr,   "Show a trapped cavity",              kNone,                       1, 1,  nullptr,       printCavityAt,     hasPrint,    nullptr},
+  {ActionId::kPrintLayFace,   "print-lay-face",  nullptr,   "Lay a face on the plate",            kNone,                       3, 3,  printLayFaceMode, printLayFaceAt,  hasModel,    nullptr},
+  {ActionId::kComputePrint,   "compute-print",   nullptr,   "Check printability",                 kNone,                       0, 0,  computePrint,  nullptr,           printCancelledNow, nullptr},
+  {ActionId::kCancelPrint,    "cancel-print",    nullptr,   "Cancel the printability check",      kNone,                       0, 0,  cancelPrintNow, nullptr,          printComputingNow, nullptr},
 
   {ActionId::kSectionPrev,    "section-prev",    "Section", "Previous section",                   {GLFW_KEY_PAGE_DOWN, 0},     0, 0,  sectionPrev,   nullptr,           hasSection,  nullptr},
   {ActionId::kSectionNext,    "section-next",    "Section", "Next section",                       {GLFW_KEY_PAGE_UP, 0},       0, 0,  sectionNext,   nullptr,           hasSection,  nullptr},

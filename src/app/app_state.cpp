@@ -18,6 +18,8 @@ const char* panelName(Panel p) {
       return "thickness";
     case Panel::kParts:
       return "parts";
+    case Panel::kPrint:
+      return "print";
   }
   return "model";
 }

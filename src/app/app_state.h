@@ -15,6 +15,7 @@
 #include "app/autosave_state.h"
 #include "app/job.h"
 #include "app/parts_state.h"
+#include "app/print_state.h"
 #include "app/viewport_state.h"
 #include "app/settings.h"
 #include "app/texture.h"
@@ -111,8 +112,8 @@ struct Document {
 
 // ---- Params the widgets edit ----
 
-enum class Panel { kModel, kSection, kSkin, kXray, kMass, kThickness, kParts };
-inline constexpr int kPanelCount = 7;
+enum class Panel { kModel, kSection, kSkin, kXray, kMass, kThickness, kParts, kPrint };
+inline constexpr int kPanelCount = 8;
 const char* panelName(Panel p);  // "model", "section", ...
 
 struct ViewParams {
@@ -312,6 +313,7 @@ struct AppState {
   ThicknessUi thickness_ui;
   MeasureUi measure;
   PartsUi parts_ui;
+  PrintUi print_ui;
   VoxelizeDialog voxelize;
   FileBrowser browser;
 
@@ -336,6 +338,7 @@ struct AppState {
   AsyncValue<uint64_t, MassProperties> mass;                    // keyed by model_version
   AsyncValue<XrayKey, std::shared_ptr<const XrayResult>> xray_result;
   AsyncValue<uint64_t, std::shared_ptr<const ThicknessResult>> thickness;  // keyed by model_version
+  AsyncValue<PrintKey, std::shared_ptr<const PrintResult>> print;          // the Print panel's (print.h)
   Job<std::filesystem::path> volume_export_job;  // File > Export volume: the file being written (export_volume.h)
   // What the status line adds to "Wrote FILE" when that export is done, e.g. " (the half the cut-away keeps)".
   std::string volume_export_note;

@@ -104,6 +104,11 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
   state.thickness.clear();
   state.thickness_ui.min_wall = -1.0;  // another part: a quarter of its own thickest wall until the user chooses
   state.thickness_ui.cancelled_version = 0;
+  // another part: printed upright until the user turns it; the overhang angle is the printer's and stays
+  state.print.clear();
+  state.print_ui.up = glm::dvec3(0.0, 0.0, 1.0);
+  state.print_ui.orient = state.print_ui.lay_face = state.print_ui.was_cancelled = false;
+  state.print_ui.selected_cavity = -1;
   state.model = VoxelGrid{};
   state.model_version = 0;
   state.section.index = -1;

@@ -12,8 +12,6 @@
 namespace vox::app::actions {
 namespace {
 
-Error badValues(std::string message) { return makeError(ErrorCode::kInvalidArgument, std::move(message)); }
-
 // A part number from 1 (as the panel lists them) to an index.
 Result<size_t> partIndex(const AppState& s, const std::string& word) {
   const Assembly* parts = currentParts(s);

@@ -1,3 +1,4 @@
+#include "app/print.h"
 #include "app/script_runner.h"
 #include "app/script_step.h"
 
@@ -240,8 +241,8 @@ bool checkExpectedError(Harness& h, const Context& c, Step step) {
 
 bool settled(const AppState& s) {
   return !modelBusy(s) && !s.depth.busy() && !s.surface_stats.busy() && !s.mass.busy() && !s.xray_result.busy() &&
-         !s.thickness.busy() && !s.skin.pending_peel && !s.volume_export_job.active() && !s.parts_job.active() &&
-         !s.interference_job.active() && !s.clearance_job.active() && !autosaveBusy(s);
+         !s.thickness.busy() && !s.print.busy() && !s.skin.pending_peel && !s.volume_export_job.active() &&
+         !s.parts_job.active() && !s.interference_job.active() && !s.clearance_job.active() && !autosaveBusy(s);
 }
 
 void stepScript(Harness& h, AppState& state) {
@@ -305,6 +306,14 @@ std::string describeState(const AppState& s, const Harness& h) {
       const glm::ivec3 v = t->hot_spots[0].voxel;
       out << "hot_spot_1 = " << v.x << " " << v.y << " " << v.z << "\n";
     }
+  }
+  out << "print_direction = " << printDirectionName(s.print_ui.up) << "\n";
+  out << "print_lay_face = " << s.print_ui.lay_face << "\n";
+  if (const PrintResult* p = currentPrint(s)) {
+    out << "print_overhang_area = " << p->check.support.overhang_area << "\n";
+    out << "print_support_volume = " << p->check.support.support_volume << "\n";
+    out << "print_cavities = " << p->check.cavities.size() << "\n";
+    out << "print_orientations = " << p->check.orientations.size() << "\n";
   }
   if (const Assembly* parts = currentParts(s)) {
     out << "parts = " << parts->size() << "\n";

@@ -9,8 +9,10 @@
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
 
+#include "app/print_view.h"
 #include "app/thickness.h"
 #include "app/ui.h"
+#include "app/view_overlays.h"
 #include "vox/io/figure.h"
 
 namespace vox::app {
@@ -24,20 +26,6 @@ constexpr int kMostHotSpotsShown = 20;
 // and labels taking kLegendLines text lines.
 constexpr float kLegendTop = 30.0f;
 constexpr float kLegendLines = 4.0f;
-
-// Text with a dark shadow, readable over any colour of the model.
-void shadowText(ImDrawList* dl, ImVec2 p, ImU32 colour, const char* text) {
-  dl->AddText(ImVec2(p.x + 1.0f, p.y + 1.0f), IM_COL32(0, 0, 0, 255), text);
-  dl->AddText(p, colour, text);
-}
-
-// Screen position of a point in voxel-index space; false behind the camera.
-bool project(const glm::dmat4& vp, glm::dvec3 p, ImVec2 pos, int w, int h, ImVec2& out) {
-  const glm::dvec4 c = vp * glm::dvec4(p, 1.0);
-  if (c.w <= 0.0) return false;
-  out = ImVec2(pos.x + float((c.x / c.w + 1.0) * 0.5 * w), pos.y + float((1.0 - c.y / c.w) * 0.5 * h));
-  return true;
-}
 
 // The thickness of the voxel under the mouse, as a line of text at the view's bottom left, and a ring on it.
 void hoverReadout(const AppState& state, const ThicknessResult& r, ImDrawList* dl, ImVec2 pos, int w, int h,
@@ -63,7 +51,8 @@ void hoverReadout(const AppState& state, const ThicknessResult& r, ImDrawList* d
   const float lh = ImGui::GetTextLineHeightWithSpacing();
   shadowText(dl, ImVec2(pos.x + 8.0f, pos.y + float(h) - 2.0f * lh - 6.0f), IM_COL32(255, 255, 255, 255), line);
   ImVec2 c;
-  if (project(vp, glm::dvec3(*v) + 0.5, pos, w, h, c)) dl->AddCircle(c, 5.0f, IM_COL32(255, 255, 255, 255), 0, 1.5f);
+  if (projectToView(vp, glm::dvec3(*v) + 0.5, pos, w, h, c))
+    dl->AddCircle(c, 5.0f, IM_COL32(255, 255, 255, 255), 0, 1.5f);
 }
 
 // Local thickness: 1..255 for 0..max; thinner than the minimum wall but in no wall (an edge): 0, the model's colour.
@@ -124,7 +113,7 @@ void syncThicknessVolume(AppState& state) {
   state.viewport.dirty = true;
   ui.volume_problem.clear();
   if (!r) {
-    state.viewport.renderer->clearScalarVolume();
+    if (!shownPrint(state)) state.viewport.renderer->clearScalarVolume();  // the Print panel's overhangs are its own
     return;
   }
   // 0: no value (empty, or thinner than the minimum wall but in no wall: an edge, in the model's colour);
@@ -241,7 +230,7 @@ float drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, i
   // Hot spots: rings at their centres, numbered as in the panel's list (the largest first).
   for (size_t i = 0; i < r->hot_spots.size() && int(i) < kMostHotSpotsShown; ++i) {
     ImVec2 c;
-    if (!project(vp, glm::dvec3(r->hot_spots[i].voxel) + 0.5, pos, w, h, c)) continue;
+    if (!projectToView(vp, glm::dvec3(r->hot_spots[i].voxel) + 0.5, pos, w, h, c)) continue;
     dl->AddCircle(c, 8.0f, IM_COL32(0, 0, 0, 255), 0, 4.0f);
     dl->AddCircle(c, 8.0f, kHotSpotColour, 0, 2.0f);
     shadowText(dl, ImVec2(c.x + 10.0f, c.y - 18.0f), kHotSpotColour, std::to_string(i + 1).c_str());
@@ -250,7 +239,7 @@ float drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, i
   constexpr ImU32 kMarkColour = IM_COL32(255, 255, 255, 255);
   if (const HotSpot* spot = selectedHotSpot(state)) {
     ImVec2 c;
-    if (project(vp, glm::dvec3(spot->voxel) + 0.5, pos, w, h, c)) {
+    if (projectToView(vp, glm::dvec3(spot->voxel) + 0.5, pos, w, h, c)) {
       dl->AddCircle(c, 14.0f, IM_COL32(0, 0, 0, 255), 0, 4.0f);
       dl->AddCircle(c, 14.0f, kMarkColour, 0, 2.0f);
     }
@@ -261,7 +250,7 @@ float drawThicknessOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, i
     bool seen = true;
     for (int k = 0; k < 8; ++k) {
       const glm::dvec3 p(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
-      seen = seen && project(vp, p, pos, w, h, corner[k]);
+      seen = seen && projectToView(vp, p, pos, w, h, corner[k]);
     }
     for (const auto& [colour, width] : {std::pair(IM_COL32(0, 0, 0, 255), 4.0f), std::pair(kMarkColour, 2.0f)}) {
       if (!seen) break;
@@ -306,7 +295,8 @@ void drawLegendOnImage(AppState& state, const ThicknessResult* r, ImageRgb& imag
   const glm::dmat4 vp = state.view.camera.viewProjection(aspect, *state.model_bounds);
   for (size_t i = 0; i < r->hot_spots.size() && int(i) < kMostHotSpotsShown; ++i) {
     ImVec2 c;
-    if (!project(vp, glm::dvec3(r->hot_spots[i].voxel) + 0.5, ImVec2(0, 0), image.width, image.height, c)) continue;
+    if (!projectToView(vp, glm::dvec3(r->hot_spots[i].voxel) + 0.5, ImVec2(0, 0), image.width, image.height, c))
+      continue;
     io::drawRing(image, c.x, c.y, 8.0 * ts, 4.0 * ts, shadow);
     io::drawRing(image, c.x, c.y, 8.0 * ts, 2.0 * ts, ring);
     text(int(c.x) + 10 * ts, int(c.y) - 18 * ts, std::to_string(i + 1), ring);

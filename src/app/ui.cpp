@@ -36,6 +36,7 @@ std::string formatLength(double value, const std::string& units) {
 }
 
 std::string formatArea(double value, const std::string& units) { return formatLength(value, units) + "^2"; }
+std::string formatVolume(double value, const std::string& units) { return formatLength(value, units) + "^3"; }
 
 void heading(const char* title) {
   ImGui::Spacing();

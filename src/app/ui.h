@@ -28,6 +28,8 @@ std::string formatSeconds(double s);
 std::string formatLength(double value, const std::string& units);
 // An area: '0.25 mm^2', '3 model units^2'.
 std::string formatArea(double value, const std::string& units);
+// A volume: '4500 mm^3'.
+std::string formatVolume(double value, const std::string& units);
 
 // A section heading: a gap, the title in the accent colour and a rule (ImGui 1.86 has no SeparatorText).
 void heading(const char* title);

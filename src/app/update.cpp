@@ -13,6 +13,7 @@
 #include "app/messages.h"
 #include "app/model_jobs.h"
 #include "app/skin.h"
+#include "app/print.h"
 #include "app/thickness.h"
 
 namespace vox::app {
@@ -82,6 +83,7 @@ void updateDocument(AppState& state) {
   state.mass.poll();
   state.xray_result.poll();
   requestThickness(state);
+  requestPrint(state);
   pollVolumeExport(state);
   pollFullSection(state);
   if (!state.doc.model) return;

@@ -13,6 +13,18 @@
 
 namespace vox::app {
 
+void shadowText(ImDrawList* dl, ImVec2 p, ImU32 colour, const char* text) {
+  dl->AddText(ImVec2(p.x + 1.0f, p.y + 1.0f), IM_COL32(0, 0, 0, 255), text);
+  dl->AddText(p, colour, text);
+}
+
+bool projectToView(const glm::dmat4& vp, glm::dvec3 p, ImVec2 pos, int w, int h, ImVec2& out) {
+  const glm::dvec4 c = vp * glm::dvec4(p, 1.0);
+  if (c.w <= 0.0) return false;
+  out = ImVec2(pos.x + float((c.x / c.w + 1.0) * 0.5 * w), pos.y + float((1.0 - c.y / c.w) * 0.5 * h));
+  return true;
+}
+
 void drawMeasureOverlay(const AppState& state, ImDrawList* dl, ImVec2 pos, int w, int h, double aspect, float top) {
   const std::vector<glm::ivec3>& picks = measurePicks(state);
   if (picks.empty() || !state.model_bounds) return;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include <glm/mat4x4.hpp>
 #include <imgui.h>
@@ -12,6 +13,8 @@
 #include "app/operations.h"
 #include "app/parts.h"
 #include "app/parts_view.h"
+#include "app/print.h"
+#include "app/print_view.h"
 #include "app/ui.h"
 #include "app/thickness_view.h"
 #include "app/view_export.h"
@@ -89,6 +92,7 @@ render::DrawParams drawParams(const AppState& state, bool coarse) {
     p.section.side = state.view.keep_above ? render::SectionSide::kAbove : render::SectionSide::kBelow;
   }
   thicknessDrawParams(state, p);
+  printDrawParams(state, p);
   return p;
 }
 
@@ -131,6 +135,8 @@ std::vector<double> signature(const AppState& state, int w, int h, bool coarse) 
           double(p.section.index),
           double(int(p.section.side)),
           double(state.thickness_ui.volume_key),
+          double(state.print_ui.volume_key),
+          double(state.print_ui.support_key),
           double(p.scalar_colour),
           double(p.scalar_threshold)};
 }
@@ -159,6 +165,7 @@ void renderView(AppState& state, int w, int h, bool coarse) {
       faint.opacity = kGhostOpacity;
       vp.ghost->draw(state.view.camera, w, h, faint);
     }
+    drawPrintSupport(state, w, h, params);
     if (vp.overlay_key != 0) {
       // Drawn over the model regardless of depth, so the core (deep inside) or a disputed voxel shows through.
       glClear(GL_DEPTH_BUFFER_BIT);
@@ -200,8 +207,23 @@ void drawToolbar(AppState& state, ImVec2 pos) {
   }
 }
 
+// The surface voxel under the mouse in the view at `pos` (w x h pixels), or none.
+std::optional<glm::ivec3> voxelUnderMouse(const AppState& state, ImVec2 pos, int w, int h, double aspect) {
+  if (!state.model_bounds) return std::nullopt;
+  const ImGuiIO& io = ImGui::GetIO();
+  const glm::dmat4 inv = glm::inverse(state.view.camera.viewProjection(aspect, *state.model_bounds));
+  const double nx = 2.0 * double(io.MousePos.x - pos.x) / double(w) - 1.0;
+  const double ny = 1.0 - 2.0 * double(io.MousePos.y - pos.y) / double(h);
+  const auto unproject = [&](double z) {
+    const glm::dvec4 p = inv * glm::dvec4(nx, ny, z, 1.0);
+    return glm::dvec3(p) / p.w;
+  };
+  return pickVoxel(state.model, unproject(-1.0), unproject(1.0));
+}
+
 // Mouse: an invisible button over the whole view takes the drags, so they never reach the panels below it. Drags
-// orbit or pan, the wheel zooms, a double-click fits and Ctrl+click picks a voxel. Returns whether a drag is on.
+// orbit or pan, the wheel zooms, a double-click fits and Ctrl+click picks a voxel (a click lays a face on the plate
+// while the Print panel waits for one). Returns whether a drag is on.
 bool handleMouse(AppState& state, ImVec2 pos, int w, int h, double aspect) {
   ImGui::InvisibleButton(
       "##view", ImVec2(float(w), float(h)),
@@ -225,16 +247,15 @@ bool handleMouse(AppState& state, ImVec2 pos, int w, int h, double aspect) {
     if (io.MouseWheel != 0.0f) state.view.camera.zoom(std::pow(kZoomPerWheelStep, double(io.MouseWheel)));
     if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) state.view.fit_pending = true;
     // Ctrl+click (a click, not a drag) picks the voxel under the cursor for measuring.
-    if (io.KeyCtrl && ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f &&
-        state.model_bounds) {
-      const glm::dmat4 inv = glm::inverse(state.view.camera.viewProjection(aspect, *state.model_bounds));
-      const double nx = 2.0 * double(io.MousePos.x - pos.x) / double(w) - 1.0;
-      const double ny = 1.0 - 2.0 * double(io.MousePos.y - pos.y) / double(h);
-      const auto unproject = [&](double z) {
-        const glm::dvec4 p = inv * glm::dvec4(nx, ny, z, 1.0);
-        return glm::dvec3(p) / p.w;
-      };
-      if (const auto v = pickVoxel(state.model, unproject(-1.0), unproject(1.0))) addMeasurePick(state, *v);
+    const bool click = ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f;
+    if (click && io.KeyCtrl) {
+      if (const auto v = voxelUnderMouse(state, pos, w, h, aspect)) addMeasurePick(state, *v);
+    } else if (click && state.panel == Panel::kPrint && state.print_ui.lay_face) {
+      // the Print panel's "Lay a face on the plate": the face clicked goes down
+      if (const auto v = voxelUnderMouse(state, pos, w, h, aspect)) {
+        dispatchValues(state, ActionId::kPrintLayFace,
+                       {std::to_string(v->x), std::to_string(v->y), std::to_string(v->z)});
+      }
     }
   }
   return dragging;
@@ -281,6 +302,7 @@ void syncRenderers(AppState& state) {
     vp.dirty = true;
   }
   syncThicknessVolume(state);
+  syncPrintView(state);
 }
 
 Status initViewport(AppState& state) {
@@ -290,6 +312,9 @@ Status initViewport(AppState& state) {
   if (!overlay) return overlay.error();
   auto ghost = render::PointRenderer::create();
   if (!ghost) return ghost.error();
+  auto support = render::PointRenderer::create();
+  if (!support) return support.error();
+  state.viewport.support = std::move(support).value();
   state.viewport.ghost = std::move(ghost).value();
   state.viewport.renderer = std::move(main_renderer).value();
   state.viewport.overlay = std::move(overlay).value();
@@ -300,6 +325,7 @@ void shutdownViewport(AppState& state) {
   state.viewport.renderer.reset();
   state.viewport.overlay.reset();
   state.viewport.ghost.reset();
+  state.viewport.support.reset();
   state.viewport.framebuffer = render::Framebuffer();
 }
 
@@ -363,7 +389,8 @@ void drawViewport(AppState& state) {
                   vp.draw_ms);
     dl->AddText(ImVec2(pos.x + 8.0f, pos.y + float(h) - ImGui::GetFontSize() - 6.0f), IM_COL32(200, 200, 200, 255),
                 info);
-    const float legend_bottom = drawThicknessOverlay(state, dl, pos, w, h, aspect);
+    const float legend_bottom =
+        std::max(drawThicknessOverlay(state, dl, pos, w, h, aspect), drawPrintOverlay(state, dl, pos, w, h, aspect));
     drawMeasureOverlay(state, dl, pos, w, h, aspect, legend_bottom + 4.0f);
     drawClearanceOverlay(state, dl, pos, w, h, aspect);
     drawAxisTriad(state.view.camera, ImVec2(pos.x + 40.0f, pos.y + float(h) - 60.0f), 28.0f);

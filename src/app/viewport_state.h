@@ -17,6 +17,7 @@ struct Viewport {
   std::unique_ptr<render::PointRenderer> renderer;  // the model
   std::unique_ptr<render::PointRenderer> overlay;   // disputed voxels or the core, drawn over the model
   std::unique_ptr<render::PointRenderer> ghost;     // the whole part, faint, around a peeled model
+  std::unique_ptr<render::PointRenderer> support;   // the Print panel's support, translucent (print_view.h)
 
   // One renderer per part of a scene (parts_view.h), each on its placed part's own box; the model version they were
   // last brought up to date with, and how many times a part renderer was filled (setGrid) so far: a move refills only

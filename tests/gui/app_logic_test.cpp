@@ -15,6 +15,7 @@
 #include "app/job.h"
 #include "app/measure.h"
 #include "app/operations.h"
+#include "app/print.h"
 #include "app/script.h"
 #include "app/script_runner.h"
 #include "app/settings.h"
@@ -1078,6 +1079,52 @@ TEST(AppScriptRun, theThicknessPanelShowsRaysForAMeshsOwnVoxelization) {
   EXPECT_FALSE(runScript(state, h3, "peel 1\nthickness-method ray\n"));
   EXPECT_NE(testing::internal::GetCapturedStderr().find("follows the mesh"), std::string::npos);
   EXPECT_FALSE(state.thickness_ui.ray);
+}
+
+}  // namespace
+}  // namespace vox::app
+
+namespace vox::app {
+namespace {
+
+// The Print panel's actions on a block with a sealed void (tests/data/mesh/sealed_void.stl, 20 x 20 x 12 with an
+// 8 x 8 x 4 void at its middle): the void found and its click taking the section through it; a side laid on the
+// plate turning the build direction; a bad direction refused, leaving the one chosen.
+TEST(AppScriptRun, thePrintPanelFindsTheVoidAndLaysAFaceOnThePlate) {
+  AppState state;
+  startOpen(state, test::sourceDir() / "tests/data/mesh/sealed_void.stl");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.mesh != nullptr; }));
+  startVoxelize(state, VoxelizeParams{.resolution = 40});
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  Harness h;
+  ASSERT_TRUE(runScript(state, h, "panel-print\n")) << h.last_error;
+  ASSERT_TRUE(pump(state, [&] {
+    requestPrint(state);
+    return currentPrint(state) != nullptr;
+  }));
+  const PrintResult* r = currentPrint(state);
+  ASSERT_EQ(r->check.cavities.size(), 1u);
+  EXPECT_NEAR(r->check.cavities[0].volume, 256.0, 1e-6);
+  EXPECT_NEAR(r->check.support.support_volume, 256.0, 3.0);  // inside the void, under its ceiling
+  EXPECT_TRUE(r->check.from_mesh);
+
+  Harness hc;
+  ASSERT_TRUE(runScript(state, hc, "section z 0\nprint-cavity 1\n")) << hc.last_error;
+  EXPECT_EQ(state.panel, Panel::kPrint);
+  const TrappedCavity* c = selectedCavity(state);
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(state.section.index, (c->box_min.z + c->box_max.z) / 2);  // the section through the void
+
+  // the block's face x = 0 laid on the plate: up is +x
+  Harness hl;
+  ASSERT_TRUE(runScript(state, hl, "print-lay-face 0 20 10\n")) << hl.last_error;
+  EXPECT_EQ(printDirectionName(state.print_ui.up), "+x");
+  Harness hb;
+  EXPECT_TRUE(runScript(state, hb, "expect-error is zero\nprint-direction 0 0 0\n")) << hb.last_error;
+  EXPECT_EQ(printDirectionName(state.print_ui.up), "+x");
+  Harness hv;
+  ASSERT_TRUE(runScript(state, hv, "print-direction 0 1 1\n")) << hv.last_error;
+  EXPECT_NEAR(state.print_ui.up.y, std::sqrt(0.5), 1e-12);
 }
 
 }  // namespace

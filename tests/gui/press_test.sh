@@ -6,6 +6,8 @@
 #     (the panel drew on from the assembly before it: a part past its end);
 #   - typing 2 into the new part's X field moves it 2 model units in X, and nothing else;
 #   - a move no grid could hold is refused with a message and changes nothing;
+#   - the Print panel finds a sealed void, turns the build direction, searches the directions and waits for a face
+#     to be clicked when its buttons are pressed;
 #   - every button, field, toggle, list row and combo of every panel is pressed and the window goes on.
 #
 #   press_test.sh VOXMOD SOURCE_DIR OUT_DIR
@@ -62,9 +64,24 @@ grep -q "expected error: .*more than the" "$out/voxmod.log" || fail "the absurd 
 grep -q "^rect_X@normal = " "$out/oblique.txt" || fail "the section at an angle shows no normal fields"
 grep -q "^rect_section_offset = " "$out/oblique.txt" || fail "the section at an angle shows no offset slider"
 
-# Every panel pressed, with the assembly and with one model: 15 rounds, each with more than the 3D view's buttons.
+# The Print panel: the block's void found, -z pressed turns the build direction (the void's floor then hangs), the
+# search lists the six axes and 100 more directions, and "Lay a face on the plate" waits for a click.
+expect print.txt print_direction "+z"
+expect print.txt print_cavities 1
+expect print_down.txt print_direction "-z"
+expect print_down.txt print_cavities 1
+expect print_orient.txt print_orientations 106
+expect print_lay.txt print_lay_face 1
+up=$(get print.txt print_support_volume)
+down=$(get print_down.txt print_support_volume)
+python3 -c "import sys; sys.exit(0 if abs($up - 256) < 5 and abs($down - 256) < 5 else 1)" ||
+  fail "the void's 8 x 8 x 4 mm needs 256 mm^3 of support either way up, not $up and $down"
+checks=$((checks + 1))
+echo "ok $checks - support $up mm^3 up, $down mm^3 down"
+
+# Every panel pressed, with the assembly and with one model: 17 rounds, each with more than the 3D view's buttons.
 rounds=$(grep -c "^press-all: pressed" "$out/voxmod.log")
-((rounds == 15)) || fail "expected 15 press-all rounds, found $rounds"
+((rounds == 17)) || fail "expected 17 press-all rounds, found $rounds"
 while read -r n; do
   ((n > 8)) || fail "a press-all round pressed only $n widgets"
 done < <(sed -n 's/^press-all: pressed \([0-9]*\) widgets.*/\1/p' "$out/voxmod.log")

@@ -24,7 +24,7 @@ constexpr PanelEntry kPanels[] = {
     {Panel::kModel, "Model", drawModelPanel}, {Panel::kSection, "Section", drawSectionPanel},
     {Panel::kSkin, "Skin", drawSkinPanel},    {Panel::kXray, "X-ray", drawXrayPanel},
     {Panel::kMass, "Mass", drawMassPanel},    {Panel::kThickness, "Thickness", drawThicknessPanel},
-    {Panel::kParts, "Parts", drawPartsPanel},
+    {Panel::kParts, "Parts", drawPartsPanel}, {Panel::kPrint, "Print", drawPrintPanel},
 };
 
 void drawSidebar(AppState& state, ImVec2 pos, ImVec2 size) {
@@ -79,7 +79,7 @@ void drawFrame(AppState& state) {
     ImGui::SetNextWindowPos(ImVec2(main_x + layout.image_offset.x, top + layout.image_offset.y));
     ImGui::SetNextWindowSize(layout.image);
     ImGui::Begin("##image", nullptr, kFixedWindow | ImGuiWindowFlags_NoScrollWithMouse);
-    if (state.panel == Panel::kSection || state.panel == Panel::kParts) {
+    if (state.panel == Panel::kSection || state.panel == Panel::kParts || state.panel == Panel::kPrint) {
       drawSectionImage(state);
     } else if (state.panel == Panel::kThickness) {
       drawThicknessImage(state);

@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "app/print.h"
 #include "app/operations.h"
 #include "app/panels/panels.h"
 
@@ -26,7 +27,10 @@ ImageLayout layoutImage(AppState& state, float w, float h) {
   const bool thickness = state.panel == Panel::kThickness;
   // The Parts panel shows the section through the interference pair it shows.
   const bool parts = state.panel == Panel::kParts && state.parts_ui.pair >= 0;
-  if (state.model.empty() || (state.panel != Panel::kSection && state.panel != Panel::kXray && !thickness && !parts)) {
+  // The Print panel shows the section through the trapped cavity clicked in its list.
+  const bool print = state.panel == Panel::kPrint && selectedCavity(state) != nullptr;
+  if (state.model.empty() ||
+      (state.panel != Panel::kSection && state.panel != Panel::kXray && !thickness && !parts && !print)) {
     return l;
   }
   const float text = 3.0f * ImGui::GetTextLineHeightWithSpacing();  // title and read-out lines around the image

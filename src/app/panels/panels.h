@@ -29,6 +29,7 @@ void drawXrayPanel(AppState& state);
 void drawMassPanel(AppState& state);
 void drawThicknessPanel(AppState& state);
 void drawPartsPanel(AppState& state);  // parts of a scene, Booleans, interference (parts_panel.cpp)
+void drawPrintPanel(AppState& state);  // overhangs, support, trapped cavities, the best way up (print_panel.cpp)
 
 // The 2D images beside the 3D view (Section and X-ray panels).
 void drawSectionImage(AppState& state);
@@ -50,6 +51,10 @@ void drawControlsDialog(AppState& state);  // Help > Mouse and keyboard
 void drawJobWindow(AppState& state);
 
 // ---- Parts the panel files share (each defined in the file named) ----
+
+// thickness_lists.cpp: a scrolling table of `columns` columns showing at most `shown` of its `rows` rows at once,
+// its header row frozen. Call ImGui::EndTable() when it returns true.
+bool beginScrollList(const char* id, int columns, int rows, int shown);
 
 // frame.cpp, status_bar.cpp: the flags of the fixed windows of the layout.
 inline constexpr ImGuiWindowFlags kFixedWindow = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |

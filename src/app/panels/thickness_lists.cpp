@@ -18,8 +18,10 @@ namespace {
 
 constexpr int kMostRows = 200;  // more would not be read; the count above the list says how many there are
 
+}  // namespace
+
 // A scrolling table showing at most `shown` rows at once.
-bool beginList(const char* id, int columns, int rows, int shown) {
+bool beginScrollList(const char* id, int columns, int rows, int shown) {
   const float row_h = ImGui::GetTextLineHeightWithSpacing() + 2.0f;
   const float height = float(std::min(rows, shown) + 1) * row_h + 6.0f;
   if (!ImGui::BeginTable(id, columns, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersOuter,
@@ -28,8 +30,6 @@ bool beginList(const char* id, int columns, int rows, int shown) {
   ImGui::TableSetupScrollFreeze(0, 1);
   return true;
 }
-
-}  // namespace
 
 void drawThinWallList(AppState& state, const Walls& thin, const std::string& units) {
   const std::string specks = thin.specks > 0 ? " (and " + countOf(thin.specks, "speck") + " under " +
@@ -45,7 +45,7 @@ void drawThinWallList(AppState& state, const Walls& thin, const std::string& uni
       countOf(int64_t(thin.regions.size()), "wall").c_str(), formatLength(thin.min_wall, units).c_str(), specks.c_str(),
       unitsLabel(units).c_str());
   const int rows = std::min(int(thin.regions.size()), kMostRows);
-  if (!beginList("thin_walls", 3, rows, 5)) return;
+  if (!beginScrollList("thin_walls", 3, rows, 5)) return;
   ImGui::TableSetupColumn("Voxels", ImGuiTableColumnFlags_WidthFixed, 70.0f);
   ImGui::TableSetupColumn("Wall");
   ImGui::TableSetupColumn("Box, voxels");
@@ -81,7 +81,7 @@ void drawHotSpotList(AppState& state, const ThicknessResult& r, const std::strin
       unitsLabel(units).c_str());
   if (r.hot_spots.empty()) return;
   const int rows = std::min(int(r.hot_spots.size()), kMostRows);
-  if (!beginList("hot_spots", 4, rows, 8)) return;
+  if (!beginScrollList("hot_spots", 4, rows, 8)) return;
   ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, 24.0f);
   ImGui::TableSetupColumn("Radius");
   ImGui::TableSetupColumn("Modulus");
