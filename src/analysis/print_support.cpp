@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -21,6 +22,9 @@ struct PrintSurface::Impl {
   analysis_detail::EmbreeScene scene;  // offset: the grid's origin
   std::vector<glm::dvec3> corners;     // three per triangle, relative to the offset
   std::vector<glm::dvec3> normal;      // per triangle, unit, outward (the mesh turned if it encloses a negative volume)
+  // Without a mesh: the voxels, whose faces are the triangles (exact intervals along every ray) and whose ball of
+  // neighbours about a voxel gives the surface's normal there (a slope is a slope, not a staircase of ceilings).
+  std::optional<VoxelGrid> voxels;
 };
 
 PrintSurface::PrintSurface(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -30,16 +34,15 @@ PrintSurface::~PrintSurface() = default;
 
 Result<PrintSurface> makePrintSurface(const VoxelGrid& grid, const TriangleMesh* mesh, const ProgressFn& progress) {
   TriangleMesh own;
+  auto impl = std::make_unique<PrintSurface::Impl>();
   if (!mesh) {
-    // the voxels' smooth surface: slopes read as slopes, not as staircases of ceilings
-    SurfaceMeshParams sp;
-    sp.smooth_iterations = 4;
-    auto surface = extractSurfaceMesh(grid, sp, progress);
+    // the voxels' faces, merged into rectangles
+    auto surface = extractSurfaceMesh(grid, SurfaceMeshParams{}, progress);
     if (!surface) return surface.error();
     own = surface->toTriangleMesh();
     mesh = &own;
+    impl->voxels = grid;
   }
-  auto impl = std::make_unique<PrintSurface::Impl>();
   const glm::dvec3 offset = grid.frame().origin;
   const size_t n = mesh->triangles.size();
   impl->corners.resize(3 * n);
@@ -100,10 +103,56 @@ bool voxelAt(const VoxelGrid& grid, glm::dvec3 p, glm::ivec3& v) {
   return true;
 }
 
+// The outward normal of the voxels' surface at voxel v: away from the centroid of the filled voxels of the ball of
+// radius 4 about it (a half-ball's centroid lies along its flat side's normal). Only where the ball is about half
+// filled, as on a flat side or a slope (0.52 to 0.59 of it); about a convex edge (0.35) or a concave one (0.76) the
+// centroid tilts, and zero is returned.
+glm::dvec3 ballNormal(const VoxelGrid& g, glm::ivec3 v) {
+  static const std::vector<glm::ivec3> ball = [] {
+    std::vector<glm::ivec3> out;
+    constexpr int r = 4;
+    for (int z = -r; z <= r; ++z)
+      for (int y = -r; y <= r; ++y)
+        for (int x = -r; x <= r; ++x)
+          if (x * x + y * y + z * z <= r * r && (x | y | z) != 0) out.emplace_back(x, y, z);
+    return out;
+  }();
+  glm::dvec3 inward(0.0);
+  size_t filled = 0;
+  for (const glm::ivec3& o : ball) {
+    const glm::ivec3 q = v + o;
+    if (g.inBounds(q.x, q.y, q.z) && g.get(q.x, q.y, q.z)) inward += glm::dvec3(o), ++filled;
+  }
+  const double fraction = double(filled) / double(ball.size()), n = glm::length(inward);
+  if (fraction < 0.48 || fraction > 0.62 || n < 1e-9) return glm::dvec3(0.0);
+  return -inward / n;
+}
+
+bool filledVoxel(const VoxelGrid& g, glm::ivec3 q) { return g.inBounds(q.x, q.y, q.z) && g.get(q.x, q.y, q.z); }
+
+// The slope of the underside at voxel v, entered from below along `down` (a lattice step): its ball's normal, or at an
+// edge the mean of those of the underside's voxels within two voxels of it (filled, nothing below them), so that the
+// rim of a ceiling reads as the ceiling and the rim of a slope as the slope, not as the edge's bisector. Zero when none
+// of them reads.
+glm::dvec3 undersideNormal(const VoxelGrid& g, glm::ivec3 v, glm::ivec3 down) {
+  if (const glm::dvec3 n = ballNormal(g, v); n != glm::dvec3(0.0)) return n;
+  glm::dvec3 sum(0.0);
+  for (int z = -2; z <= 2; ++z)
+    for (int y = -2; y <= 2; ++y)
+      for (int x = -2; x <= 2; ++x) {
+        const glm::ivec3 q = v + glm::ivec3(x, y, z);
+        if ((x | y | z) == 0 || !filledVoxel(g, q) || filledVoxel(g, q + down)) continue;
+        sum += ballNormal(g, q);
+      }
+  const double n = glm::length(sum);
+  return n > 1e-9 ? sum / n : glm::dvec3(0.0);
+}
+
 struct RayJob {
   const PrintSurface::Impl& s;
   const VoxelGrid& grid;
   glm::dvec3 d, u, v;
+  glm::ivec3 down;  // the lattice step nearest -d
   double spacing, plate, layer, sin_angle, extent;
   AtomicMask *overhang = nullptr, *support = nullptr;
 };
@@ -133,11 +182,17 @@ RayReading supportAlong(const RayJob& job, double a, double b, std::vector<std::
   double top = job.plate;
   int winding = 0;
   for (const auto& [t, tri] : hits) {
-    const double facing = glm::dot(job.s.normal[tri], job.d);
+    double facing = glm::dot(job.s.normal[tri], job.d);
     const double height = job.plate - job.spacing + double(t);
     const int before = winding;
     winding += facing < 0.0 ? 1 : (facing > 0.0 ? -1 : 0);
     if (before <= 0 && winding > 0) {
+      glm::ivec3 above;
+      if (job.s.voxels && voxelAt(job.grid, foot + job.d * (double(t) + 0.5 * job.layer), above)) {
+        // the voxels' own surface: its slope from the ball about the voxel entered, not the face's
+        const glm::dvec3 n = undersideNormal(*job.s.voxels, above, job.down);
+        if (glm::dot(n, job.d) < 0.0) facing = glm::dot(n, job.d);
+      }
       const bool needs = height - job.plate >= job.layer && -facing > job.sin_angle;
       if (needs) {
         r.support += height - top;
@@ -188,11 +243,13 @@ Result<PrintSupport> computePrintSupport(const PrintSurface& surface, const Voxe
   const double sin_angle = std::sin(params.overhang_angle_deg * std::numbers::pi / 180.0);
   std::optional<AtomicMask> overhang, support;
   if (params.fields) overhang.emplace(grid), support.emplace(grid);
+  const glm::ivec3 down(-int(std::lround(d.x)), -int(std::lround(d.y)), -int(std::lround(d.z)));
   const RayJob job{s,
                    grid,
                    d,
                    u,
                    v,
+                   down,
                    spacing,
                    lo[2],
                    h,

@@ -8,8 +8,10 @@
 //  - trapped cavities: empty regions (6-connected) with no path to the outside, each with the shortest straight
 //    drain hole along one of 26 lattice directions;
 //  - orientation: the same for a set of build directions, least support first.
-// The surface is the mesh's own where there is a mesh; for a voxel file it is the voxels' smooth surface
-// (vox/analysis/surface_mesh.h), so that a slope is a slope and not a staircase of ceilings.
+// The surface is the mesh's own where there is a mesh. For a voxel file the rays cross the voxels' faces (exact
+// intervals), and where a ray enters the part the slope is read from the ball of radius 4 voxels about the voxel
+// entered (the centroid of its filled voxels lies along the normal), so that a slope is a slope and not a staircase
+// of ceilings.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -43,7 +45,7 @@ struct PrintSupport {
   std::optional<VoxelGrid> overhang, support;
 };
 
-// The part's surface made ready for rays: its mesh (model units), or the smooth surface of the voxels.
+// The part's surface made ready for rays: its mesh (model units), or the voxels' faces.
 class PrintSurface {
  public:
   PrintSurface(PrintSurface&&) noexcept;
@@ -58,7 +60,7 @@ class PrintSurface {
   std::unique_ptr<Impl> impl_;
 };
 
-// `mesh`: the part's own mesh in model units (the grid is its voxelization), or null to use the voxels' surface.
+// `mesh`: the part's own mesh in model units (the grid is its voxelization), or null to use the voxels.
 Result<PrintSurface> makePrintSurface(const VoxelGrid& grid, const TriangleMesh* mesh, const ProgressFn& progress = {});
 
 // Overhang area and support volume for params.up. Fails only when cancelled (or with kInvalidArgument for a zero

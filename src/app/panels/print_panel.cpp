@@ -19,6 +19,15 @@ namespace {
 
 constexpr int kMostOrientationRows = 20;
 
+// "+z", or a direction off the axes to two decimals: "(0.62, 0.37, -0.69)".
+std::string shortDirection(glm::dvec3 d) {
+  const std::string name = printDirectionName(d);
+  if (name.size() <= 2) return name;
+  char text[48];
+  std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", d.x, d.y, d.z);
+  return text;
+}
+
 void directionChoice(AppState& state) {
   heading("Build direction (up)");
   static const char* const axes[] = {"+z", "-z", "+x", "-x", "+y", "-y"};
@@ -27,7 +36,7 @@ void directionChoice(AppState& state) {
     if (i > 0) ImGui::SameLine();
     if (widget::RadioButton(axes[i], now == axes[i])) dispatchValues(state, ActionId::kPrintDirection, {axes[i]});
   }
-  if (now.size() > 2) ImGui::Text("Up: (%s)", now.c_str());
+  if (now.size() > 2) ImGui::Text("Up: %s", shortDirection(state.print_ui.up).c_str());
   const bool laying = state.print_ui.lay_face;
   if (widget::Button(laying ? "Click a face in the 3D view... (cancel)" : "Lay a face on the plate")) {
     dispatch(state, ActionId::kPrintLayFace);
@@ -108,7 +117,7 @@ void orientationList(AppState& state, const PrintResult& r, const std::string& u
   ImGui::TextWrapped("%zu directions, least support first. Click one to print that way up.", list.size());
   const int rows = std::min(int(list.size()), kMostOrientationRows);
   if (!beginScrollList("print_orientations", 3, rows, 8)) return;
-  ImGui::TableSetupColumn("Up");
+  ImGui::TableSetupColumn("Up", ImGuiTableColumnFlags_WidthFixed, 135.0f);
   ImGui::TableSetupColumn("Support");
   ImGui::TableSetupColumn("Height");
   ImGui::TableHeadersRow();
@@ -118,8 +127,8 @@ void orientationList(AppState& state, const PrintResult& r, const std::string& u
     ImGui::TableNextRow();
     ImGui::TableSetColumnIndex(0);
     ImGui::PushID(i);
-    const std::string name = printDirectionName(s.direction);
-    if (widget::Selectable(name.c_str(), name == now, ImGuiSelectableFlags_SpanAllColumns)) {
+    const std::string name = shortDirection(s.direction);
+    if (widget::Selectable(name.c_str(), printDirectionName(s.direction) == now, ImGuiSelectableFlags_SpanAllColumns)) {
       dispatchValues(state, ActionId::kPrintOrientation, {std::to_string(i + 1)});
     }
     ImGui::PopID();

@@ -107,6 +107,15 @@ TEST(PrintSupport, aSlopeNeedsSupportOnlyPastTheAngle) {
   const PrintSupport steep = supportOf(grid, &prism, {0, 0, 1}, 20.0);
   EXPECT_NEAR(steep.overhang_area, side, 0.02 * side);
   EXPECT_NEAR(steep.support_volume, 0.5 * lean * 10.0 * 20.0, 0.03 * 0.5 * lean * 10.0 * 20.0);
+  // from the voxels alone the leaning side is a slope too, not a staircase of small ceilings: at 45 degrees only the
+  // strips where it meets the prism's ends (convex edges, read by their faces) hang, and at 20 degrees the whole side
+  // does, within the width of those strips
+  const PrintSupport voxels_45 = supportOf(grid, nullptr, {0, 0, 1}, 45.0);
+  EXPECT_LT(voxels_45.overhang_area, 0.1 * side);
+  EXPECT_LT(voxels_45.support_volume, 0.1 * 0.5 * lean * 10.0 * 20.0);
+  const PrintSupport voxels = supportOf(grid, nullptr, {0, 0, 1}, 20.0);
+  EXPECT_NEAR(voxels.overhang_area, side, 0.15 * side);
+  EXPECT_NEAR(voxels.support_volume, 0.5 * lean * 10.0 * 20.0, 0.03 * 0.5 * lean * 10.0 * 20.0);
 }
 
 // A block of voxels [5, 35)^3 on a 40^3 grid of 0.5 mm voxels with a spherical void of radius 8 voxels at its centre.
