@@ -135,12 +135,7 @@ int runPrintCheck(const PrintOptions& o) {
     if (!bytes) return out.fail(bytes.error());
     files.push_back({*path, std::move(bytes).value()});
   }
-  if (!files.empty()) {
-    if (auto st = io::writeFilesAtomic(files); !st) return out.fail(st.error());
-    std::string wrote;
-    for (const io::PendingFile& f : files) wrote += (wrote.empty() ? "" : ", ") + f.path.string();
-    out.say("wrote " + wrote);
-  }
+  if (Status st = writeOutputs(files, out); !st) return out.fail(st.error());
   d["surface_s"] = check->surface_s;
   d["support_s"] = check->support_s;
   d["cavities_s"] = check->cavities_s;

@@ -218,12 +218,7 @@ int runThickness(const ThicknessOptions& o) {
     if (!png) return out.fail(png.error());
     files.push_back({o.png, std::move(png).value()});
   }
-  if (!files.empty()) {
-    if (auto st = io::writeFilesAtomic(files); !st) return out.fail(st.error());
-    std::string wrote;
-    for (const io::PendingFile& f : files) wrote += (wrote.empty() ? "" : ", ") + f.path.string();
-    out.say("wrote " + wrote);
-  }
+  if (Status st = writeOutputs(files, out); !st) return out.fail(st.error());
   d["distance_s"] = run->distance_s;
   d["thickness_s"] = run->thickness_s;
   if (run->ridge) d["walls_s"] = run->walls_s;

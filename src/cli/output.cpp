@@ -56,6 +56,15 @@ void Output::note(const std::string& line) {
   notes_.push_back(line);
 }
 
+Status writeOutputs(const std::vector<io::PendingFile>& files, const Output& out) {
+  if (files.empty()) return Ok{};
+  if (Status st = io::writeFilesAtomic(files); !st) return st;
+  std::string wrote;
+  for (const io::PendingFile& f : files) wrote += (wrote.empty() ? "" : ", ") + f.path.string();
+  out.say("wrote " + wrote);
+  return Ok{};
+}
+
 int exitCodeFor(const Error& e) {
   switch (e.code) {
     case ErrorCode::kInvalidArgument:

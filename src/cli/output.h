@@ -9,6 +9,7 @@
 #include "vox/core/progress.h"
 #include "vox/core/result.h"
 #include "vox/core/scalar_field.h"
+#include "vox/io/file_util.h"
 
 namespace vox::cli {
 
@@ -57,6 +58,9 @@ std::string fieldOutputProblem(const std::string& path);
 // A scalar field as the bytes of the volume file `path` names (checked first with fieldOutputProblem), under `name`.
 Result<std::vector<uint8_t>> encodeFieldFile(const std::string& name, const ScalarField& field, const std::string& path,
                                              const ProgressFn& progress = {});
+
+// Writes `files` together or not at all (io::writeFilesAtomic) and says "wrote A, B"; nothing when there are none.
+Status writeOutputs(const std::vector<io::PendingFile>& files, const Output& out);
 
 // A number for a human line: `digits` significant digits ("%.6g"): 0.000279412, 1e-09, 12345.7; never "0.000000".
 std::string significant(double v, int digits = 6);
