@@ -37,7 +37,20 @@ struct Component {
   uint32_t peak = 0;    // squared distance at the summit
   uint32_t saddle = 0;  // squared distance where it died (met a higher summit)
   bool dead = false;
+  uint32_t absorbed_by = UINT32_MAX;  // the set it died into, or whose plateau it joined
 };
+
+// The geometric (Chvorinov) modulus V/A, in voxels, of the region a hot spot feeds: R its inscribed radius and mean
+// the mean depth of the region's voxels (their distance less the half voxel by which the distance to the nearest
+// empty centre exceeds the depth below the surface). Where the inner offsets' areas shrink as (1 - depth / R)^(n - 1),
+// as for a plate (n = 1), a bar or cylinder (2), a cube or sphere (3), V/A = R / n and the mean depth is R / (n + 1):
+// so V/A = R mean / (R - mean), between R / 3 and R.
+double regionModulus(double radius, double depth_sum, int64_t voxels) {
+  if (voxels <= 0 || radius <= 0.0) return radius / 3.0;
+  const double mean = std::max(depth_sum / double(voxels) - 0.5, 0.0);
+  if (mean >= radius * 0.5) return radius;
+  return std::clamp(radius * mean / (radius - mean), radius / 3.0, radius);
+}
 
 // The root of i's set in a union-find forest (link[k] == k at a root), compressing the path.
 uint32_t findRoot(std::vector<uint32_t>& link, uint32_t i) {
@@ -237,6 +250,8 @@ class HotSpotSearch {
   Status basinGraph() {
     tables_.resize(static_cast<size_t>(threads_));
     plateau_voxels_.resize(static_cast<size_t>(nz_));
+    basin_depth_.assign(static_cast<size_t>(threads_), std::vector<double>(summit_voxel_.size(), 0.0));
+    basin_voxels_.assign(static_cast<size_t>(threads_), std::vector<int64_t>(summit_voxel_.size(), 0));
     if (summit_voxel_.size() < 0x8000u) {
       basins(code_.get());
     } else {
@@ -344,6 +359,8 @@ class HotSpotSearch {
               if (!s) continue;
               const L own = label[i];
               if (s == comps_[own].peak) plateau_voxels_[size_t(z)].emplace_back(uint32_t(i), own);
+              basin_depth_[size_t(t)][size_t(own)] += std::sqrt(double(s));
+              ++basin_voxels_[size_t(t)][size_t(own)];
               Labels m = at[j];
               if (below) m = both(m, below[j]);
               if (above) m = both(m, above[j]);
@@ -376,6 +393,7 @@ class HotSpotSearch {
       if (a == b) continue;
       if (comps_[b].peak > comps_[a].peak || (comps_[b].peak == comps_[a].peak && b < a)) std::swap(a, b);
       parent[b] = a;  // a survives
+      comps_[b].absorbed_by = a;
       if (comps_[a].peak == level && comps_[b].peak == level) {
         plateau_[findRoot(plateau_, b)] = findRoot(plateau_, a);
       } else {
@@ -432,12 +450,52 @@ class HotSpotSearch {
     std::vector<uint32_t> voxels;
     std::vector<int64_t> start(spot_comp.size() + 1, 0);
     plateauVoxels(spot_of, voxels, start);
+    std::vector<double> depth(spot_comp.size(), 0.0);
+    std::vector<int64_t> count(spot_comp.size(), 0);
+    regions(spot_of, depth, count);
     std::vector<HotSpot> out;
     for (size_t spot = 0; spot < spot_comp.size(); ++spot) {
       out.push_back(spotOf(comps_[spot_comp[spot]], voxels.data() + start[spot], start[spot + 1] - start[spot]));
+      out.back().modulus = regionModulus(std::sqrt(double(comps_[spot_comp[spot]].peak)), depth[spot], count[spot]) *
+                           distance_.voxelSize();
     }
     std::stable_sort(out.begin(), out.end(), [](const HotSpot& a, const HotSpot& b) { return a.radius > b.radius; });
     return out;
+  }
+
+  // The region each reported spot feeds: the basins of the sets that died into it (or joined its plateau), before it
+  // died itself, with their voxels' summed distances (depth) and counts.
+  void regions(const std::vector<int64_t>& spot_of, std::vector<double>& depth, std::vector<int64_t>& count) {
+    std::vector<int64_t> owner(comps_.size(), -2);  // -2: not resolved yet
+    std::vector<uint32_t> path;
+    for (uint32_t k = 0; k < comps_.size(); ++k) {
+      uint32_t j = k;
+      int64_t found = -1;
+      path.clear();
+      for (;;) {
+        if (owner[j] != -2) {
+          found = owner[j];
+          break;
+        }
+        path.push_back(j);
+        if (const int64_t spot = spot_of[findRoot(plateau_, j)]; spot >= 0) {
+          found = spot;
+          break;
+        }
+        if (comps_[j].absorbed_by == UINT32_MAX) break;
+        j = comps_[j].absorbed_by;
+      }
+      for (uint32_t p : path) owner[p] = found;
+    }
+    for (size_t t = 0; t < basin_depth_.size(); ++t) {
+      for (size_t k = 0; k < comps_.size(); ++k) {
+        if (owner[k] < 0) continue;
+        depth[size_t(owner[k])] += basin_depth_[t][k];
+        count[size_t(owner[k])] += basin_voxels_[t][k];
+      }
+    }
+    basin_depth_ = {};
+    basin_voxels_ = {};
   }
 
   HotSpot spotOf(const Component& c, const uint32_t* voxels, int64_t count) const {
@@ -460,7 +518,6 @@ class HotSpotSearch {
     hs.centre = frame.origin + (glm::dvec3(lo) + mean + 0.5) * h;
     hs.plateau_voxels = count;
     hs.radius = std::sqrt(double(c.peak)) * h;
-    hs.modulus = hs.radius / 3.0;
     hs.dynamic = dynamic(c) * h;
     hs.saddle = c.dead ? std::sqrt(double(c.saddle)) * h : 0.0;
     hs.isolated = !c.dead || dynamic(c) >= std::max(params_.isolation_voxels,
@@ -493,6 +550,8 @@ class HotSpotSearch {
   std::vector<Component> comps_;
   std::vector<EdgeTable> tables_;
   std::vector<std::vector<std::pair<uint32_t, uint32_t>>> plateau_voxels_;
+  std::vector<std::vector<double>> basin_depth_;    // per thread, per summit: the summed distance of its basin
+  std::vector<std::vector<int64_t>> basin_voxels_;  // ... and its voxels
   std::vector<uint32_t> plateau_;
 };
 

@@ -219,7 +219,8 @@ TEST_F(Cli, thicknessOfABoxReportsSpecKeysAndWritesItsFilesTogether) {
   EXPECT_EQ(j["histogram"]["edges"].size(), j["histogram"]["counts"].size() + 1);
   ASSERT_EQ(j["hot_spots"].size(), 1u);
   EXPECT_NEAR(j["hot_spots"][0]["radius"].get<double>(), 0.5, 1e-9);
-  EXPECT_NEAR(j["hot_spots"][0]["modulus"].get<double>(), 0.5 / 3.0, 1e-9);
+  // Chvorinov's modulus V/A of the unit cube: a sixth, read within 10% from 10 voxels
+  EXPECT_NEAR(j["hot_spots"][0]["modulus"].get<double>(), 1.0 / 6.0, 0.1 / 6.0);
   for (int a = 0; a < 3; ++a) EXPECT_NEAR(j["hot_spots"][0]["centre"][a].get<double>(), 0.5, 1e-9);
   // walls, not edges: no wall of the block is thinner than 0.45, and its thinnest wall is its size
   EXPECT_EQ(j["thin_voxels"].get<int64_t>(), 0);
@@ -450,6 +451,20 @@ TEST(CliWalls, theRayMethodNeedsAMesh) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("voxel file"), std::string::npos) << r.err;
   EXPECT_EQ(test::runVoxmod({"thickness", (dir / "c.stl").string(), "--method", "cone"}).exit_code, 1);
+  // the walls' options without the walls are refused, not ignored
+  for (const std::vector<std::string>& alone :
+       std::vector<std::vector<std::string>>{{"--edges"}, {"--min-area", "1"}, {"--ray-angle", "20"}}) {
+    std::vector<std::string> args = {"thickness", (dir / "c.stl").string(), "--res", "20"};
+    args.insert(args.end(), alone.begin(), alone.end());
+    auto refused = test::runVoxmod(args);
+    EXPECT_EQ(refused.exit_code, 1) << alone[0];
+    EXPECT_NE(refused.err.find(alone[0] == "--ray-angle" ? "--ray-angle applies" : "--min-wall"), std::string::npos)
+        << refused.err;
+  }
+  EXPECT_EQ(
+      test::runVoxmod({"thickness", (dir / "c.stl").string(), "--res", "20", "--method", "ray", "--ray-angle", "20"})
+          .exit_code,
+      0);
 }
 
 }  // namespace

@@ -94,8 +94,11 @@ struct HotSpot {
   glm::dvec3 centre{0.0};  // model units: the mean of the plateau's voxel centres (the grid's placement)
   glm::ivec3 voxel{0};     // the plateau voxel nearest that mean
   int64_t plateau_voxels = 1;
-  double radius = 0.0;   // inscribed radius (the distance at the maximum), model units
-  double modulus = 0.0;  // Chvorinov modulus of the inscribed ball, radius / 3, model units
+  double radius = 0.0;  // inscribed radius (the distance at the maximum), model units
+  // The geometric (Chvorinov) modulus V/A of the region this spot feeds (the basins of the maxima merged into it),
+  // model units: radius x mean depth / (radius - mean depth), which is half a plate's thickness, a quarter of a
+  // square bar's side, a sixth of a cube's side or a sphere's diameter (docs/accuracy.md, "Hot spots").
+  double modulus = 0.0;
   double dynamic = 0.0;  // radius minus saddle radius, model units (the global maximum: its radius)
   double saddle = 0.0;   // radius at the saddle where it merges into a higher maximum, model units (0: never)
   bool isolated = false;

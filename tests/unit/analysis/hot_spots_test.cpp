@@ -1,7 +1,8 @@
 // Hot spots against a brute force written from their definition (docs/accuracy.md), on random fields: the basins'
 // bookkeeping (the greatest neighbours by separable maxima, the paths to the summits across layers and threads, the
 // joins of basins, the merge and its plateaus) must give every regional maximum with its plateau, saddle and
-// dynamic.
+// dynamic. (Their moduli, from the regions they feed, are checked against plates, bars, cubes and balls in
+// thickness_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -121,7 +122,6 @@ std::vector<HotSpot> bruteHotSpots(const DistanceField& f, const HotSpotParams& 
     hs.centre = f.frame().origin + (glm::dvec3(lo) + glm::dvec3(double(sx), double(sy), double(sz)) / count + 0.5) * h;
     hs.plateau_voxels = int64_t(own.size());
     hs.radius = r * h;
-    hs.modulus = hs.radius / 3.0;
     hs.dynamic = dyn * h;
     hs.saddle = dead ? std::sqrt(double(saddle)) * h : 0.0;
     hs.isolated = !dead || dyn >= std::max(params.isolation_voxels, params.isolation_fraction * r);
@@ -166,8 +166,8 @@ void expectMatchesBruteForce(const DistanceField& f, const std::string& what) {
     for (size_t i = 0; i < expect.size(); ++i) {
       const HotSpot &a = sorted[i], &e = expect[i];
       const bool same = a.centre == e.centre && a.voxel == e.voxel && a.plateau_voxels == e.plateau_voxels &&
-                        a.radius == e.radius && a.modulus == e.modulus && a.dynamic == e.dynamic &&
-                        a.saddle == e.saddle && a.isolated == e.isolated;
+                        a.radius == e.radius && a.dynamic == e.dynamic && a.saddle == e.saddle &&
+                        a.isolated == e.isolated;
       EXPECT_TRUE(same) << what << ": " << describe(a) << " expected " << describe(e);
     }
     spots += int(expect.size());
