@@ -231,23 +231,25 @@ int runThickness(const ThicknessOptions& o) {
 void addThicknessCommand(CLI::App& sub, CommandContext& ctx) {
   auto o = std::make_shared<ThicknessOptions>();
   addCommonOptions(sub, o->c);
-  sub.add_option("--min-wall", o->min_wall, "Report walls thinner than this (model units), grouped in regions")
-      ->check(CLI::PositiveNumber);
-  sub.add_flag(
-      "--edges", o->edges,
-      "With --min-wall: list every voxel whose local thickness is under it, convex edges and corners included");
+  auto* min_wall =
+      sub.add_option("--min-wall", o->min_wall, "Report walls thinner than this (model units), grouped in regions")
+          ->check(CLI::PositiveNumber);
+  sub.add_flag("--edges", o->edges,
+               "With --min-wall: list every voxel whose local thickness is under it, convex edges and corners included")
+      ->needs(min_wall);
   sub.add_option("--method", o->method,
                  "The thickness -o and --png show: sphere (local thickness, exact; the default) or ray (along the "
                  "inward normal of a mesh FILE to the opposite wall)")
       ->check(CLI::IsMember({"sphere", "ray"}));
-  sub.add_option("--ray-angle", o->ray_angle,
-                 "Two sides facing each other within this angle (degrees) make a wall; sharper edges do not "
-                 "(default 30)")
-      ->check(CLI::Range(1.0, 89.0));
+  auto* ray_angle = sub.add_option("--ray-angle", o->ray_angle,
+                                   "With --min-wall or --method ray: two sides facing each other within this angle "
+                                   "(degrees) make a wall; sharper edges do not (default 30)")
+                        ->check(CLI::Range(1.0, 89.0));
   sub.add_option("--min-area", o->min_area,
                  "With --min-wall: walls with less surface than this (model units^2) are specks, counted but not "
                  "listed (default: the minimum wall squared)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::NonNegativeNumber)
+      ->needs(min_wall);
   sub.add_option("-o,--output", o->out, "Write the local thickness (model units): .nrrd, .vti or .vdb");
   sub.add_option("--distance", o->distance_out, "Write the distance to the surface (model units): .nrrd, .vti or .vdb");
   sub.add_flag("--signed", o->signed_distance, "With --distance: empty voxels hold minus their distance to the part");
@@ -260,7 +262,16 @@ void addThicknessCommand(CLI::App& sub, CommandContext& ctx) {
   sub.add_option("--scale", o->scale, "Pixels per voxel in the PNG (default 1)")->check(CLI::Range(1, 64));
   sub.add_option("--hot-spots", o->hot_spots_shown, "Hot spots listed in the text summary (JSON lists all)")
       ->check(CLI::NonNegativeNumber);
-  sub.callback([o, &ctx] { ctx.exit_code = runThickness(*o); });
+  sub.callback([o, ray_angle, &ctx] {
+    if (ray_angle->count() > 0 && o->min_wall <= 0.0 && o->method != "ray") {
+      // nothing would use it: say so rather than ignore it
+      Output out(o->c.json);
+      ctx.exit_code =
+          out.fail(kExitUsage, "--ray-angle applies to the walls of --min-wall and to --method ray; give one");
+      return;
+    }
+    ctx.exit_code = runThickness(*o);
+  });
 }
 
 }  // namespace vox::cli
