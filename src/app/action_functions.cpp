@@ -1,6 +1,7 @@
 #include "app/action_functions.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -97,6 +98,8 @@ void exportXray(AppState& s) { openBrowser(s, BrowserPurpose::kExportXrayPng); }
 Status exportXrayPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportXrayPng, a); }
 void exportCsv(AppState& s) { openBrowser(s, BrowserPurpose::kExportXrayCsv); }
 Status exportCsvPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportXrayCsv, a); }
+void exportReport(AppState& s) { openBrowser(s, BrowserPurpose::kExportReport); }
+Status exportReportPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportReport, a); }
 void exportVolume(AppState& s) { openBrowser(s, BrowserPurpose::kExportVolume); }
 Status exportVolumePath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportVolume, a); }
 void exportThickness(AppState& s) { openBrowser(s, BrowserPurpose::kExportThickness); }
@@ -219,6 +222,15 @@ Status minWallAt(AppState& s, const ActionArgs& a) {  // VALUE: the Thickness pa
   double v = 0.0;
   if (!parseNumber(a.words[0], v) || !(v >= 0.0)) return badValues("min-wall takes a length >= 0 in model units");
   s.thickness_ui.min_wall = v;
+  showPanel(s, Panel::kThickness);
+  return Ok{};
+}
+Status minAreaAt(AppState& s, const ActionArgs& a) {
+  double v = 0.0;
+  if (!parseNumber(a.words[0], v) || !std::isfinite(v)) {
+    return badValues("min-area takes an area in model units^2 (below 0: the minimum wall squared)");
+  }
+  s.thickness_ui.min_area = v < 0.0 ? -1.0 : v;
   showPanel(s, Panel::kThickness);
   return Ok{};
 }

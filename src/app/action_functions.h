@@ -48,6 +48,8 @@ void exportCsv(AppState& s);
 Status exportCsvPath(AppState& s, const ActionArgs& a);
 void exportVolume(AppState& s);
 Status exportVolumePath(AppState& s, const ActionArgs& a);
+void exportReport(AppState& s);
+Status exportReportPath(AppState& s, const ActionArgs& a);
 void exportThickness(AppState& s);
 Status exportThicknessPath(AppState& s, const ActionArgs& a);
 void exportDepth(AppState& s);
@@ -101,6 +103,7 @@ bool onMass(const AppState& s);
 void panelThickness(AppState& s);
 bool onThickness(const AppState& s);
 Status minWallAt(AppState& s, const ActionArgs& a);
+Status minAreaAt(AppState& s, const ActionArgs& a);  // AREA model units^2: smaller walls are specks; < 0: W^2
 Status thicknessMethodAt(AppState& s, const ActionArgs& a);
 // N: the Thickness panel's thin-wall region N or hot spot N (1: the first of its list), selected and shown: the
 // section through it, the 3D view turned about it.

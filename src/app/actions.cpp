@@ -42,6 +42,7 @@ const Action kActions[] = {
   {ActionId::kExportThickness, "export-thickness", "File",  "Export thickness volume (.vti .vdb .nrrd)...", kNone,              1, -1, exportThickness, exportThicknessPath, hasThickness, nullptr},
   {ActionId::kExportDepth,    "export-depth",    "File",    "Export depth volume (.vti .vdb .nrrd)...", kNone,                  1, -1, exportDepth,   exportDepthPath,   hasDepth,    nullptr},
   {ActionId::kExportXrayVolume, "export-xray-volume", "File", "Export X-ray volume (.vti .vdb .nrrd)...", kNone,                 1, -1, exportXrayVolume, exportXrayVolumePath, hasXray, nullptr},
+  {ActionId::kExportReport,   "export-report",   "File",    "Export report (HTML)...",            kNone,                       1, -1, exportReport,  exportReportPath,  hasModel,    nullptr},
   {ActionId::kExportSize,     "export-size",     nullptr,   "3D view export size",                kNone,                       2, 2,  nullptr,       exportSize,        nullptr,     nullptr},
   {ActionId::kQuit,           "quit",            "File",    "Quit",                               {GLFW_KEY_Q, kCtrl},         0, 0,  requestQuit,   nullptr,           nullptr,     nullptr},
 
@@ -80,6 +81,7 @@ const Action kActions[] = {
   {ActionId::kPanelParts,     "panel-parts",     "View",    "Parts panel",                        {GLFW_KEY_7, kCtrl},         0, 0,  panelParts,    nullptr,           nullptr,     onParts},
   {ActionId::kPanelPrint,     "panel-print",     "View",    "Print panel",                        {GLFW_KEY_8, kCtrl},         0, 0,  panelPrint,    nullptr,           nullptr,     onPrint},
   {ActionId::kMinWall,        "min-wall",        nullptr,   "Minimum wall (model units)",         kNone,                       1, 1,  nullptr,       minWallAt,         hasSection,  nullptr},
+  {ActionId::kMinArea,        "min-area",        nullptr,   "Smallest wall listed (model units^2)", kNone,                     1, 1,  nullptr,       minAreaAt,         hasSection,  nullptr},
   {ActionId::kThicknessMethod, "thickness-method", nullptr, "Thickness shown: sphere or ray",    kNone,                       1, 1,  nullptr,       thicknessMethodAt, hasSection,  nullptr},
   {ActionId::kThinRegion,     "thin-region",     nullptr,   "Show a thin-wall region",            kNone,                       1, 1,  nullptr,       thinRegionAt,      hasThickness, nullptr},
   {ActionId::kHotSpot,        "hot-spot",        nullptr,   "Show a hot spot",                    kNone,                       1, 1,  nullptr,       hotSpotAt,         hasThickness, nullptr},

@@ -188,6 +188,7 @@ enum class BrowserPurpose {
   kExportThickness,   // the thickness volume as .vti, .vdb or .nrrd
   kExportDepth,       // the Skin panel's skin depth (each voxel's layer) as .vti, .vdb or .nrrd
   kExportXrayVolume,  // the X-ray panel's image as a one-voxel-thick volume: .vti, .vdb or .nrrd
+  kExportReport,      // one HTML page of what voxmod computes of the model (export_report.h)
   kAddPart,           // a mesh or voxel file added to the scene as a part (parts.h)
   kSaveParts,         // each part as a voxel file in a folder (parts.h, saveParts)
 };
@@ -241,20 +242,24 @@ struct ThicknessResult {
 };
 
 // The Thickness panel: the minimum wall (model units; < 0: not chosen, a quarter of the maximum is used) and the
-// thin walls under it, recomputed on the main thread when the value or the model changes.
+// thin walls under it, found in the background when the value or the model changes (AppState::thin_walls).
+struct WallsKey {
+  uint64_t result = 0;  // ThicknessResult::id
+  double min_wall = -1.0, min_area = -1.0;
+  bool operator==(const WallsKey&) const = default;
+};
 struct ThicknessUi {
   double min_wall = -1.0;
-  bool ray = false;  // the views show the ray thickness (vox/analysis/ray_thickness.h), not local thickness
+  double min_area = -1.0;  // walls with less exposed area are specks, counted not listed (model units^2; < 0: W^2)
+  bool ray = false;        // the views show the ray thickness (vox/analysis/ray_thickness.h), not local thickness
   uint64_t cancelled_version = 0;  // the model version whose computation the user cancelled (not asked again)
-  uint64_t thin_result = 0;        // the result (ThicknessResult::id) and the minimum wall `thin` was found for
-  double thin_min_wall = -1.0;
-  std::optional<Walls> thin;  // walls, not edges (vox/analysis/walls.h)
-  SectionKey image_key;       // what the section texture shows, with the minimum wall it paints red
+  WallsKey walls_shown;            // the walls the selected region is a region of
+  SectionKey image_key;            // what the section texture shows, with the minimum wall it paints red
   double image_min_wall = -1.0;
   bool image_ray = false;
   Texture image_texture;
   // The thin-wall region and the hot spot last clicked in the lists (indices; -1: none), in the result
-  // selected_result (ThicknessResult::id; a region, in the thin walls found then: thin_result and thin_min_wall).
+  // selected_result (ThicknessResult::id; a region, in the thin walls walls_shown).
   int32_t selected_region = -1;
   int32_t selected_spot = -1;
   uint64_t selected_result = 0;
@@ -338,6 +343,7 @@ struct AppState {
   AsyncValue<uint64_t, MassProperties> mass;                    // keyed by model_version
   AsyncValue<XrayKey, std::shared_ptr<const XrayResult>> xray_result;
   AsyncValue<uint64_t, std::shared_ptr<const ThicknessResult>> thickness;  // keyed by model_version
+  AsyncValue<WallsKey, std::shared_ptr<const Walls>> thin_walls;           // walls, not edges (walls.h)
   AsyncValue<PrintKey, std::shared_ptr<const PrintResult>> print;          // the Print panel's (print.h)
   Job<std::filesystem::path> volume_export_job;  // File > Export volume: the file being written (export_volume.h)
   // What the status line adds to "Wrote FILE" when that export is done, e.g. " (the half the cut-away keeps)".

@@ -102,6 +102,7 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
   state.xray_result.clear();
   state.skin.pending_peel.reset();
   state.thickness.clear();
+  state.thin_walls.clear();
   state.thickness_ui.min_wall = -1.0;  // another part: a quarter of its own thickest wall until the user chooses
   state.thickness_ui.cancelled_version = 0;
   // another part: printed upright until the user turns it; the overhang angle is the printer's and stays

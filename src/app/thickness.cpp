@@ -108,22 +108,27 @@ double minWall(const AppState& state) {
 }
 
 const Walls* currentThinWalls(AppState& state) {
-  const ThicknessResult* r = currentThickness(state);
-  if (!r) return nullptr;
+  state.thin_walls.poll();
+  const auto* held = state.thickness.get(state.model_version);
+  if (!held || !*held) return nullptr;
+  const std::shared_ptr<const ThicknessResult> r = *held;
   ThicknessUi& ui = state.thickness_ui;
-  const double wall = minWall(state);
-  if (!ui.thin || ui.thin_result != r->id || ui.thin_min_wall != wall) {
-    ui.selected_region = -1;  // its index was into the regions found before
-    auto thin = findWalls(r->ridge, r->thickness.radius, WallParams{wall});
-    ui.thin_result = r->id;
-    ui.thin_min_wall = wall;
-    if (thin) {
-      ui.thin = std::move(thin).value();
-    } else {
-      ui.thin.reset();
+  const WallsKey key{r->id, minWall(state), ui.min_area};
+  if (const auto* walls = state.thin_walls.get(key); walls && *walls) {
+    if (!(ui.walls_shown == key)) {
+      ui.selected_region = -1;  // its index was into the regions found before
+      ui.walls_shown = key;
     }
+    return walls->get();
   }
-  return ui.thin ? &*ui.thin : nullptr;
+  // found in the background: at R = 1000 a large minimum wall paints for many seconds
+  state.thin_walls.request(key, "Finding walls", [r, key](const ProgressFn& progress) {
+    using R = Result<std::shared_ptr<const Walls>>;
+    auto walls = findWalls(r->ridge, r->thickness.radius, WallParams{key.min_wall, key.min_area}, progress);
+    if (!walls) return R(walls.error());
+    return R(std::shared_ptr<const Walls>(std::make_shared<Walls>(std::move(walls).value())));
+  });
+  return nullptr;
 }
 
 const ThinWallRegion* selectedRegion(AppState& state) {

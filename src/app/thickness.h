@@ -2,7 +2,7 @@
 // The Thickness panel's analyses: distance, local thickness and hot spots of the model computed in the background
 // while the panel is open (keyed by the model version, and kept for another version of the same voxels: an operation
 // that leaves the solid as it was, or its undo, keeps them),
-// the thin walls under the minimum wall (main thread: cheap), and the round skin removal (peel by distance) as an
+// the thin walls under the minimum wall (in the background too), and the round skin removal (peel by distance) as an
 // undoable change of the model. No ImGui and no GL here.
 #include <memory>
 #include <string>
@@ -24,7 +24,8 @@ void cancelThickness(AppState& state);
 void retryThickness(AppState& state);
 // The minimum wall in use (model units): the user's, or a quarter of the maximum thickness.
 double minWall(const AppState& state);
-// Thin walls under minWall, found again when the value or the model changed; null without a thickness.
+// Thin walls under minWall (and the minimum area), found again in the background when either or the model changed;
+// null without a thickness or while they are being found.
 const Walls* currentThinWalls(AppState& state);
 // The mesh the ray thickness can follow: the document's, while the model is its voxelization as it was (not peeled,
 // not a scene of parts); null otherwise.

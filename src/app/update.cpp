@@ -83,6 +83,7 @@ void updateDocument(AppState& state) {
   state.mass.poll();
   state.xray_result.poll();
   requestThickness(state);
+  if (state.panel == Panel::kThickness) currentThinWalls(state);  // the walls under the minimum wall, asked for
   requestPrint(state);
   pollVolumeExport(state);
   pollFullSection(state);

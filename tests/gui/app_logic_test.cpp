@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <fstream>
+#include <iterator>
 #include <set>
 #include <thread>
 
@@ -818,6 +820,18 @@ TEST(AppScriptRun, thicknessPanelThinWallsAndPeelByDistance) {
   EXPECT_GT(thin->voxels, block().filledCount() / 2);
   EXPECT_LT(thin->voxels, block().filledCount());
   EXPECT_EQ(currentThickness(state), r);  // the minimum wall does not recompute the thickness
+  // a smallest wall listed larger than the block's surface: the block is a speck, counted and not listed
+  Harness ha;
+  ASSERT_TRUE(runScript(state, ha, "min-area 1e9\n")) << ha.last_error;
+  thin = currentThinWalls(state);
+  ASSERT_NE(thin, nullptr);
+  EXPECT_TRUE(thin->regions.empty());
+  EXPECT_EQ(thin->specks, 1);
+  Harness hb;
+  ASSERT_TRUE(runScript(state, hb, "min-area -1\n")) << hb.last_error;  // back to the minimum wall squared
+  thin = currentThinWalls(state);
+  ASSERT_NE(thin, nullptr);
+  EXPECT_EQ(thin->regions.size(), 1u);
 
   // The round peel by one voxel removes the outer shell (distance 1): a 10 x 8 x 6 block remains, undoably.
   Harness h3;
@@ -1125,6 +1139,23 @@ TEST(AppScriptRun, thePrintPanelFindsTheVoidAndLaysAFaceOnThePlate) {
   Harness hv;
   ASSERT_TRUE(runScript(state, hv, "print-direction 0 1 1\n")) << hv.last_error;
   EXPECT_NEAR(state.print_ui.up.y, std::sqrt(0.5), 1e-12);
+
+  // File > Export report: the page written in the background, with the void among its trapped cavities
+  test::TempDir dir;
+  const std::filesystem::path html = dir / "void_report.html";
+  Harness hr;
+  ASSERT_TRUE(runScript(state, hr, "export-report " + html.string() + "\n")) << hr.last_error;
+  ASSERT_TRUE(pump(state, [&] { return !state.volume_export_job.active() && std::filesystem::exists(html); }));
+  std::ifstream in(html);
+  const std::string page((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(page.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(page.find("sealed_void.stl"), std::string::npos);
+  EXPECT_NE(page.find("Trapped cavities</th><td>1,"), std::string::npos);
+  EXPECT_NE(page.find("data:image/png;base64,iVBORw0KGgo"), std::string::npos);  // the section at least
+  Harness hx;
+  EXPECT_TRUE(runScript(state, hx, "expect-error HTML page\nexport-report " + (dir / "r.txt").string() + "\n"))
+      << hx.last_error;
+  EXPECT_FALSE(std::filesystem::exists(dir / "r.txt"));
 }
 
 }  // namespace

@@ -105,7 +105,22 @@ void drawThicknessPanel(AppState& state) {
     dispatchValues(state, ActionId::kMinWall, {std::to_string(v)});
   }
   markWidget("min_wall_slider");
-  if (walls) drawThinWallList(state, *walls, units);
+  if (walls) {
+    // walls with less surface are specks: counted, not listed
+    double area = walls->min_area;
+    ImGui::SetNextItemWidth(120.0f);
+    const std::string area_label = "Smallest wall listed, " + unitsLabel(units) + "^2";
+    if (widget::InputDouble(area_label.c_str(), &area, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue)) {
+      dispatchValues(state, ActionId::kMinArea, {std::to_string(area)});
+    }
+    markWidget("min_area_field");
+    drawThinWallList(state, *walls, units);
+  } else if (const Error* e = state.thin_walls.error(WallsKey{r->id, wall, state.thickness_ui.min_area})) {
+    wrappedColoured(kErrorColour, "The walls could not be found: " + e->message);
+  } else {
+    ImGui::Text("Finding the walls thinner than %s...", formatLength(wall, units).c_str());
+    ImGui::ProgressBar(float(state.thin_walls.progress()), ImVec2(-1.0f, 0.0f));
+  }
 
   heading("Hot spots");
   drawHotSpotList(state, *r, units);
