@@ -36,9 +36,9 @@ target_link_libraries(OCCT::occt INTERFACE TKSTEP TKSTEPBase TKIGES TKXSBase TKS
 add_library(OCCT::primitives INTERFACE IMPORTED)
 target_link_libraries(OCCT::primitives INTERFACE OCCT::occt TKPrim TKBO)
 
-# Volume export (docs/dependencies.md). libvtk9-dev: VTK image data (.vti) through VTK's own XML writer; only the
-# modules the writer needs.
-find_package(VTK REQUIRED COMPONENTS CommonCore CommonDataModel IOXML)
+# Volume export (docs/dependencies.md). libvtk9-dev: VTK image data (.vti) through VTK's own XML writer, and its base64
+# for the report's embedded pictures (io/html.cpp); only the modules those need.
+find_package(VTK REQUIRED COMPONENTS CommonCore CommonDataModel IOCore IOXML)
 # libopenvdb-dev: OpenVDB volumes (.vdb). Debian's FindOpenVDB.cmake requires Boost's iostreams CMake package, which
 # libopenvdb-dev does not depend on (libopenvdb.so links it itself), so the library and headers are found directly.
 # OpenVDB's headers use TBB and Imath's half (libtbb-dev, libimath-dev: dependencies of libopenvdb-dev).

@@ -1,3 +1,4 @@
+#include "app/export_report.h"
 #include "app/browser_purposes.h"
 
 #include <system_error>
@@ -43,6 +44,8 @@ std::vector<std::string> browserExtensions(BrowserPurpose purpose) {
     case BrowserPurpose::kExportDepth:
     case BrowserPurpose::kExportXrayVolume:
       return {".vti", ".vdb", ".nrrd"};
+    case BrowserPurpose::kExportReport:
+      return {".html"};
     case BrowserPurpose::kSaveParts:
       return {};  // a folder: the browser lists folders only
   }
@@ -79,6 +82,8 @@ const char* browserTitle(BrowserPurpose purpose) {
              "core last";
     case BrowserPurpose::kExportXrayVolume:
       return "Export the X-ray as a volume (.vti, .vdb, .nrrd): each ray's thickness in model units, one voxel thick";
+    case BrowserPurpose::kExportReport:
+      return "Export a report: one HTML page with the model, its walls, hot spots and printing, pictures included";
     case BrowserPurpose::kAddPart:
       return "Add a part from a mesh or voxel file (on the scene's lattice)";
     case BrowserPurpose::kSaveParts:
@@ -132,6 +137,9 @@ void openBrowser(AppState& state, BrowserPurpose purpose) {
       break;
     case BrowserPurpose::kExportVolume:
       b.file_name = stem + ".vti";
+      break;
+    case BrowserPurpose::kExportReport:
+      b.file_name = stem + "_report.html";
       break;
     case BrowserPurpose::kExportThickness:
       b.file_name = stem + "_thickness.vti";
@@ -209,6 +217,9 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
     case BrowserPurpose::kExportXrayVolume:
       ok = startXrayVolumeExport(state, path);
       break;
+    case BrowserPurpose::kExportReport:
+      ok = startReportExport(state, path);
+      break;
     case BrowserPurpose::kSaveParts:
       if (Status s = saveParts(state, path); !s) {
         reportError(state, s.error().message, path);
@@ -222,7 +233,7 @@ bool acceptBrowserPath(AppState& state, BrowserPurpose purpose, const std::files
     // Say where a file went (the name typed may have been relative, or the directory not the one in mind).
     const bool in_background = purpose == BrowserPurpose::kExportVolume ||
                                purpose == BrowserPurpose::kExportThickness || purpose == BrowserPurpose::kExportDepth ||
-                               purpose == BrowserPurpose::kExportXrayVolume;
+                               purpose == BrowserPurpose::kExportXrayVolume || purpose == BrowserPurpose::kExportReport;
     if (purpose != BrowserPurpose::kOpen && purpose != BrowserPurpose::kAddPart && !in_background &&
         purpose != BrowserPurpose::kSaveParts) {  // saveParts says how many files it wrote
       state.status_message = "Wrote " + std::filesystem::absolute(path).lexically_normal().string();

@@ -10,5 +10,7 @@ namespace vox::app {
 
 // Renders the view at full detail and writes it as PNG; false (and an error dialog) on failure.
 bool exportViewPng(AppState& state, const std::filesystem::path& path);
+// The view rendered at full detail as the export writes it (with the thickness legend where the panel shows one).
+Result<ImageRgba> renderViewImage(AppState& state);
 
 }  // namespace vox::app

@@ -408,11 +408,10 @@ void drawViewport(AppState& state) {
   ImGui::SetCursorScreenPos(after);
 }
 
-bool exportViewPng(AppState& state, const std::filesystem::path& path) {
+Result<ImageRgba> renderViewImage(AppState& state) {
   Viewport& vp = state.viewport;
   if (state.model.empty() || vp.width < 1 || vp.height < 1) {
-    reportError(state, "there is no 3D view to export", path);
-    return false;
+    return makeError(ErrorCode::kInvalidArgument, "there is no 3D view to export");
   }
   syncRenderers(state);
   // At the size asked for (the same view: the camera keeps its framing, the aspect follows the picture), or as shown.
@@ -422,7 +421,16 @@ bool exportViewPng(AppState& state, const std::filesystem::path& path) {
   vp.drawn_signature.clear();  // the panel redraws its own (possibly coarse) image next frame
   ImageRgba image = vp.framebuffer.readPixels();
   drawThicknessLegendOnImage(state, image);  // what the window draws over the view, on the picture too
-  if (Status s = io::savePng(image, path); !s) {
+  return image;
+}
+
+bool exportViewPng(AppState& state, const std::filesystem::path& path) {
+  auto image = renderViewImage(state);
+  if (!image) {
+    reportError(state, image.error().message, path);
+    return false;
+  }
+  if (Status s = io::savePng(*image, path); !s) {
     reportError(state, s.error().message, path);
     return false;
   }

@@ -29,13 +29,14 @@
 #include "vox/io/voxel_file.h"
 
 namespace vox::cli {
-namespace {
 
 std::string materialNames() {
   std::string names;
   for (const Material& m : commonMaterials()) names += std::string(names.empty() ? "" : ", ") + m.name;
   return names;
 }
+
+namespace {
 
 // Words to enum values, read by the parsers analysis gives them (parseAxis, parseXrayMode), so the flags bind
 // straight to the params structs the window edits.

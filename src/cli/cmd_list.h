@@ -20,4 +20,5 @@ void addBodiesCommand(CLI::App& sub, CommandContext& ctx);
 void addInterfereCommand(CLI::App& sub, CommandContext& ctx);
 void addClearanceCommand(CLI::App& sub, CommandContext& ctx);
 void addPrintCheckCommand(CLI::App& sub, CommandContext& ctx);
+void addReportCommand(CLI::App& sub, CommandContext& ctx);
 }  // namespace vox::cli

@@ -32,6 +32,8 @@ const std::vector<Command>& commands() {
       {"clearance", "The smallest gap between two parts that do not touch", addClearanceCommand},
       {"printcheck", "3D printing: overhangs, support volume, trapped cavities, the best build direction",
        addPrintCheckCommand},
+      {"report", "One HTML page of what voxmod computes of a part: model, walls, hot spots, printing, pictures",
+       addReportCommand},
   };
   return table;
 }

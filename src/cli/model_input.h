@@ -81,6 +81,9 @@ struct CommonOptions {
 };
 void addCommonOptions(CLI::App& sub, CommonOptions& c, const std::string& mode_names = "--mode,--fill-mode");
 
+// The common materials' names, for --material's help and errors ("aluminium, steel, ...").
+std::string materialNames();
+
 // Progress printer for a terminal: "voxelizing  42%" on stderr, rewritten in place; silent otherwise.
 ProgressFn terminalProgress(const std::string& label);
 
