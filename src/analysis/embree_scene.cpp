@@ -1,11 +1,13 @@
 // A triangle mesh as an Embree scene. See analysis/embree_scene.h.
 #include "analysis/embree_scene.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace vox::analysis_detail {
 
-Status buildEmbreeScene(const TriangleMesh& mesh, glm::dvec3 offset, const std::string& what, EmbreeScene& s) {
+Status buildEmbreeScene(const TriangleMesh& mesh, glm::dvec3 offset, const std::string& what, EmbreeScene& s,
+                        bool all_hits) {
   s.offset = offset;
   s.device = rtcNewDevice(nullptr);
   if (!s.device) return makeError(ErrorCode::kLimit, what + ": Embree could not start");
@@ -29,7 +31,9 @@ Status buildEmbreeScene(const TriangleMesh& mesh, glm::dvec3 offset, const std::
     }
   }
   rtcCommitGeometry(geometry);
-  rtcSetSceneFlags(s.scene, RTC_SCENE_FLAG_ROBUST);  // no ray slips between two triangles sharing an edge
+  // robust: no ray slips between two triangles sharing an edge
+  rtcSetSceneFlags(s.scene,
+                   all_hits ? RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION : RTC_SCENE_FLAG_ROBUST);
   rtcAttachGeometry(s.scene, geometry);
   rtcReleaseGeometry(geometry);
   rtcCommitScene(s.scene);
@@ -59,6 +63,49 @@ bool castEmbreeRay(RTCScene scene, glm::dvec3 p, glm::dvec3 d, float t_near, flo
   t = rh.ray.tfar;
   triangle = rh.hit.primID;
   return true;
+}
+
+namespace {
+
+// The context a traversal hands to the filter: Embree's own first, then where the hits go.
+struct HitCollector {
+  RTCIntersectContext context;
+  std::vector<std::pair<float, unsigned>>* hits;
+};
+
+void collectHit(const RTCFilterFunctionNArguments* args) {
+  auto* collector = reinterpret_cast<HitCollector*>(args->context);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (!args->valid[i]) continue;
+    collector->hits->emplace_back(RTCRayN_tfar(args->ray, args->N, i), RTCHitN_primID(args->hit, args->N, i));
+    args->valid[i] = 0;  // turned down: the traversal goes on to the next triangle
+  }
+}
+
+}  // namespace
+
+void allEmbreeHits(RTCScene scene, glm::dvec3 p, glm::dvec3 d, std::vector<std::pair<float, unsigned>>& hits) {
+  hits.clear();
+  HitCollector collector{};
+  rtcInitIntersectContext(&collector.context);
+  collector.context.filter = collectHit;
+  collector.hits = &hits;
+  RTCRayHit rh{};
+  rh.ray.org_x = float(p.x);
+  rh.ray.org_y = float(p.y);
+  rh.ray.org_z = float(p.z);
+  rh.ray.dir_x = float(d.x);
+  rh.ray.dir_y = float(d.y);
+  rh.ray.dir_z = float(d.z);
+  rh.ray.tnear = 0.0f;
+  rh.ray.tfar = std::numeric_limits<float>::infinity();
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene, &collector.context, &rh);
+  // a triangle in two leaves of the index is met twice
+  std::sort(hits.begin(), hits.end());
+  hits.erase(std::unique(hits.begin(), hits.end()), hits.end());
 }
 
 }  // namespace vox::analysis_detail

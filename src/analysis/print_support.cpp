@@ -60,8 +60,11 @@ Result<PrintSurface> makePrintSurface(const VoxelGrid& grid, const TriangleMesh*
   if (volume6 < 0.0) {
     for (glm::dvec3& nn : impl->normal) nn = -nn;
   }
-  if (Status st = analysis_detail::buildEmbreeScene(*mesh, offset, "printability", impl->scene); !st) {
-    return st.error();
+  // a model without voxels has no surface: no rays, nothing to support
+  if (!mesh->triangles.empty()) {
+    if (Status st = analysis_detail::buildEmbreeScene(*mesh, offset, "printability", impl->scene, true); !st) {
+      return st.error();
+    }
   }
   return PrintSurface(std::move(impl));
 }
@@ -160,7 +163,9 @@ struct RayJob {
 // One ray up through the part at (a, b) of the plate's lattice: the support below each bottom face steep enough to
 // need it, and the overhang area those sides hold per unit of the plate's area. The part is where the winding number of
 // the sides crossed is positive (sides facing down enter it, sides facing up leave it), so overlapping shells count
-// once.
+// once. Sides crossed at one place (within a thousandth of a voxel) count together, +1 if any faces down and -1 if any
+// faces up: a ray through an edge shared by two triangles of one side counts it once, and where two bodies touch,
+// the one's top and the other's bottom cancel.
 struct RayReading {
   double support = 0.0;   // length of support, model units
   double overhang = 0.0;  // overhang area per unit of the plate's area: 1 / |cos| of each overhang side entered
@@ -168,32 +173,33 @@ struct RayReading {
 
 RayReading supportAlong(const RayJob& job, double a, double b, std::vector<std::pair<float, unsigned>>& hits) {
   const glm::dvec3 foot = job.u * a + job.v * b + job.d * (job.plate - job.spacing);
-  hits.clear();
-  float t_near = 0.0f;
+  analysis_detail::allEmbreeHits(job.s.scene.scene, foot, job.d, hits);
   const double eps = std::max(1e-3 * job.layer, 1e-6 * job.extent);
-  for (int guard = 0; guard < 4096; ++guard) {
-    float t = 0.0f;
-    unsigned tri = 0;
-    if (!analysis_detail::castEmbreeRay(job.s.scene.scene, foot, job.d, t_near, t, tri)) break;
-    hits.emplace_back(t, tri);
-    t_near = float(double(t) + eps);
-  }
   RayReading r;
   double top = job.plate;
   int winding = 0;
-  for (const auto& [t, tri] : hits) {
-    double facing = glm::dot(job.s.normal[tri], job.d);
+  for (size_t g = 0; g < hits.size();) {
+    // the sides crossed at this place: the steepest facing down among them, and whether any faces up
+    const float t = hits[g].first;
+    double facing = 0.0;
+    bool up = false;
+    for (; g < hits.size() && double(hits[g].first) - double(t) <= eps; ++g) {
+      const double f = glm::dot(job.s.normal[hits[g].second], job.d);
+      facing = std::min(facing, f);
+      up = up || f > 0.0;
+    }
     const double height = job.plate - job.spacing + double(t);
     const int before = winding;
-    winding += facing < 0.0 ? 1 : (facing > 0.0 ? -1 : 0);
+    winding += (facing < 0.0 ? 1 : 0) - (up ? 1 : 0);
     if (before <= 0 && winding > 0) {
       glm::ivec3 above;
       if (job.s.voxels && voxelAt(job.grid, foot + job.d * (double(t) + 0.5 * job.layer), above)) {
-        // the voxels' own surface: its slope from the ball about the voxel entered, not the face's
+        // the voxels' own surface: its slope from the ball about the voxel entered, not the face's (a step of a
+        // near-vertical wall faces down, the wall does not)
         const glm::dvec3 n = undersideNormal(*job.s.voxels, above, job.down);
-        if (glm::dot(n, job.d) < 0.0) facing = glm::dot(n, job.d);
+        if (n != glm::dvec3(0.0)) facing = std::min(glm::dot(n, job.d), 0.0);
       }
-      const bool needs = height - job.plate >= job.layer && -facing > job.sin_angle;
+      const bool needs = height - job.plate >= job.layer && facing < 0.0 && -facing > job.sin_angle;
       if (needs) {
         r.support += height - top;
         r.overhang += 1.0 / -facing;

@@ -58,15 +58,15 @@ int64_t drillFrom(const VoxelGrid& grid, const VoxelGrid& cavities, glm::ivec3 p
   }
 }
 
-// The shortest straight drain from any wall voxel of the cavity (its runs) along a lattice direction.
+// The shortest straight drain from any wall voxel of the cavity (its runs, indices into parts.runs) along a lattice
+// direction.
 std::optional<DrainHole> shortestDrain(const VoxelGrid& grid, const VoxelGrid& cavities, const Components& parts,
-                                       uint32_t component) {
+                                       const std::vector<size_t>& runs) {
   static const std::vector<glm::ivec3> steps = latticeSteps();
   double best = 1e300;
   std::optional<DrainHole> drain;
   const double h = grid.voxelSize();
-  for (size_t r = 0; r < parts.runs.size(); ++r) {
-    if (parts.run_component[r] != component) continue;
+  for (const size_t r : runs) {
     const Components::Run& run = parts.runs[r];
     for (int32_t x = run.x0; x < run.x1; ++x) {
       const glm::ivec3 p(x, run.y, run.z);
@@ -106,9 +106,11 @@ Result<std::vector<TrappedCavity>> findTrappedCavities(const VoxelGrid& grid, co
   std::vector<int32_t> slot(parts.components.size(), -1);
   for (size_t i = 0; i < trapped.size(); ++i) slot[trapped[i]] = int32_t(i);
   std::vector<glm::dvec3> sum(trapped.size(), glm::dvec3(0.0));
+  std::vector<std::vector<size_t>> runs_of(trapped.size());  // each cavity's runs, listed once for its drain
   for (size_t r = 0; r < parts.runs.size(); ++r) {
     const int32_t i = slot[parts.run_component[r]];
     if (i < 0) continue;
+    runs_of[size_t(i)].push_back(r);
     const Components::Run& run = parts.runs[r];
     cavities.fillRun(run.y, run.z, run.x0, run.x1);
     const double n = double(run.x1 - run.x0);
@@ -126,7 +128,7 @@ Result<std::vector<TrappedCavity>> findTrappedCavities(const VoxelGrid& grid, co
     cav.box_max = c.box_max;
     cav.bbox.min = origin + glm::dvec3(c.box_min) * h;
     cav.bbox.max = origin + glm::dvec3(c.box_max + glm::ivec3(1)) * h;
-    cav.drain = shortestDrain(grid, cavities, parts, trapped[i]);
+    cav.drain = shortestDrain(grid, cavities, parts, runs_of[i]);
     out.push_back(cav);
     if (progress && !progress(0.5 + 0.5 * double(i + 1) / double(trapped.size()))) {
       return makeError(ErrorCode::kCancelled, "trapped cavities cancelled");

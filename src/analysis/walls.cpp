@@ -219,11 +219,13 @@ void collectRegions(const WallRidge& ridge, const uint32_t* filled, const ThinSt
 
 // Sets the mask bit of every voxel centre strictly inside the ball of a stop, ball by ball: cheap while the balls
 // are small.
-void paintBalls(const WallRidge& ridge, size_t stops, std::vector<uint64_t>& mask) {
+void paintBalls(const WallRidge& ridge, size_t stops, std::vector<uint64_t>& mask,
+                analysis_detail::ProgressGate& gate) {
   const int64_t nx = ridge.box_dims.nx, plane = nx * int64_t(ridge.box_dims.ny);
   std::vector<int64_t> ball;
   uint32_t ball_a = 0;
   for (size_t k = 0; k < stops; ++k) {
+    if (k % 4096 == 0 && !gate.report(0.7 * double(k) / double(stops))) return;  // cancelled: stops at once
     const WallRidge::Stop& s = ridge.stops[k];
     if (s.squared != ball_a) ball = ballSteps(ball_a = s.squared, nx, plane);
     for (int64_t step : ball) {
@@ -266,23 +268,27 @@ void lowerEnvelope(float* f, int64_t n, int64_t stride, std::vector<int64_t>& v,
 // The same union of balls for any number and size of them, in time linear in the box: F(p) = min over the stops c
 // of |p - c|^2 - r(c)^2, a distance transform of the stops' -r^2 (exact in floats: integers under 2^24); p is in a
 // ball where F(p) < 0.
-void paintEnvelope(const WallRidge& ridge, size_t stops, std::vector<uint64_t>& mask) {
+void paintEnvelope(const WallRidge& ridge, size_t stops, std::vector<uint64_t>& mask,
+                   analysis_detail::ProgressGate& gate) {
   const Dims d = ridge.box_dims;
   const int64_t nx = d.nx, ny = d.ny, nz = d.nz, plane = nx * ny;
   std::vector<float> f(size_t(d.count()), INFINITY);
   for (size_t k = 0; k < stops; ++k) f[size_t(ridge.stops[k].index)] = -float(ridge.stops[k].squared);
   const int threads = threadsFor(d.count() / 8);
+  int done_passes = 0;
   const auto pass = [&](int64_t lines, int64_t n, int64_t stride, auto first) {
     parallelChunks(0, lines, 64, threads, [&](int, int64_t b, int64_t e) {
+      if (gate.cancelled()) return;
       std::vector<int64_t> v(static_cast<size_t>(n));
       std::vector<double> z(static_cast<size_t>(n) + 1);
       std::vector<float> line;
       for (int64_t l = b; l < e; ++l) lowerEnvelope(f.data() + first(l), n, stride, v, z, line);
     });
+    return gate.report(0.7 * double(++done_passes) / 3.0);
   };
-  pass(ny * nz, nx, 1, [&](int64_t l) { return l * nx; });
-  pass(nx * nz, ny, nx, [&](int64_t l) { return (l % nx) + plane * (l / nx); });
-  pass(nx * ny, nz, plane, [&](int64_t l) { return l; });
+  if (!pass(ny * nz, nx, 1, [&](int64_t l) { return l * nx; })) return;
+  if (!pass(nx * nz, ny, nx, [&](int64_t l) { return (l % nx) + plane * (l / nx); })) return;
+  if (!pass(nx * ny, nz, plane, [&](int64_t l) { return l; })) return;
   for (int64_t i = 0; i < d.count(); ++i)
     if (f[size_t(i)] < 0.0f) mask[size_t(i >> 6)] |= uint64_t(1) << (i & 63);
 }
@@ -327,9 +333,9 @@ static Result<Walls> findWallsIn(const WallRidge& ridge, const DistanceField& fi
   const bool balls = params.paint == WallParams::Paint::kAuto ? ball_volume < 4.0 * double(d.count())
                                                               : params.paint == WallParams::Paint::kBalls;
   if (balls) {
-    paintBalls(ridge, k, out.mask);
+    paintBalls(ridge, k, out.mask, gate);
   } else {
-    paintEnvelope(ridge, k, out.mask);
+    paintEnvelope(ridge, k, out.mask, gate);
   }
   if (!gate.report(0.7)) return makeError(ErrorCode::kCancelled, "walls cancelled");
   collectRegions(ridge, filled.data(), thin, out);

@@ -282,6 +282,9 @@ Result<size_t> listRow(const ActionArgs& a, size_t count, const char* what, cons
 }  // namespace
 
 Status thinRegionAt(AppState& s, const ActionArgs& a) {
+  if (currentThickness(s) && !currentThinWalls(s)) {
+    return badValues("thin-region: the walls under the minimum wall are still being found");
+  }
   const Walls* thin = currentThinWalls(s);
   const auto i = listRow(a, thin ? thin->regions.size() : 0, "thin-region", "a region's",
                          "no wall is thinner than the minimum wall");

@@ -250,8 +250,9 @@ struct WallsKey {
 };
 struct ThicknessUi {
   double min_wall = -1.0;
-  double min_area = -1.0;  // walls with less exposed area are specks, counted not listed (model units^2; < 0: W^2)
-  bool ray = false;        // the views show the ray thickness (vox/analysis/ray_thickness.h), not local thickness
+  double min_area = -1.0;   // walls with less exposed area are specks, counted not listed (model units^2; < 0: W^2)
+  float wall_drag = -1.0f;  // the slider's value while it is dragged (< 0: not dragged); applied when let go
+  bool ray = false;         // the views show the ray thickness (vox/analysis/ray_thickness.h), not local thickness
   uint64_t cancelled_version = 0;  // the model version whose computation the user cancelled (not asked again)
   WallsKey walls_shown;            // the walls the selected region is a region of
   SectionKey image_key;            // what the section texture shows, with the minimum wall it paints red

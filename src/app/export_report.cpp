@@ -19,6 +19,10 @@ bool startReportExport(AppState& state, const std::filesystem::path& path) {
     reportError(state, "there is no model to report on", path);
     return false;
   }
+  if (state.volume_export_job.active()) {
+    reportError(state, "an export is being written: wait for it, or cancel it (Esc), then export the report", path);
+    return false;
+  }
   if (path.extension() != ".html") {
     reportError(state, "the report is an HTML page: give a name ending in .html", path);
     return false;

@@ -1,6 +1,8 @@
 #include "app/print.h"
 
 #include <algorithm>
+#include <bit>
+#include <climits>
 #include <cmath>
 #include <memory>
 #include <utility>
@@ -11,6 +13,61 @@
 #include "app/thickness.h"  // rayMesh
 
 namespace vox::app {
+namespace {
+
+// The box of a grid's filled voxels, or false when it has none.
+bool filledBox(const VoxelGrid& g, glm::ivec3& lo, glm::ivec3& hi) {
+  lo = glm::ivec3(INT32_MAX);
+  hi = glm::ivec3(-1);
+  for (int32_t z = 0; z < g.nz(); ++z) {
+    if (!g.layerAllocated(z)) continue;
+    for (int32_t y = 0; y < g.ny(); ++y) {
+      const uint64_t* row = g.rowWords(y, z);
+      for (int64_t w = 0; w < g.wordsPerRow(); ++w) {
+        if (!row[w]) continue;
+        const auto x0 = int32_t(w * 64 + std::countr_zero(row[w])) - 1;
+        const auto x1 = int32_t(w * 64 + 63 - std::countl_zero(row[w])) - 1;
+        lo = glm::min(lo, glm::ivec3(x0, y, z));
+        hi = glm::max(hi, glm::ivec3(x1, y, z));
+      }
+    }
+  }
+  return hi.x >= 0;
+}
+
+// The overhangs as bytes over their box, for the 3D view's red (at most 512 M voxels of box: a byte each).
+void overhangVolume(PrintResult& r) {
+  if (!r.check.support.overhang) return;
+  const VoxelGrid& overhang = *r.check.support.overhang;
+  glm::ivec3 lo, hi;
+  if (!filledBox(overhang, lo, hi)) return;
+  const glm::ivec3 size = hi - lo + 1;
+  const Dims dims{size.x, size.y, size.z};
+  if (dims.count() > (int64_t(1) << 29)) {
+    r.overhang_problem = "The overhangs are not shown in red: their box is too large to colour.";
+    return;
+  }
+  r.overhang_min = lo;
+  r.overhang_dims = dims;
+  r.overhang_values.assign(size_t(dims.count()), 0);
+  size_t i = 0;
+  for (int32_t z = lo.z; z <= hi.z; ++z)
+    for (int32_t y = lo.y; y <= hi.y; ++y)
+      for (int32_t x = lo.x; x <= hi.x; ++x, ++i)
+        if (overhang.get(x, y, z)) r.overhang_values[i] = 1;
+}
+
+// The build directions searched for this model and angle before, whatever the direction then: applying one of them
+// does not search again.
+std::vector<PrintSupport> knownOrientations(const AppState& state, const PrintKey& key) {
+  const auto* held = state.print.held();
+  if (!key.orient || !held || !*held) return {};
+  const PrintKey& k = (*held)->key;
+  if (k.model_version != key.model_version || k.overhang_angle != key.overhang_angle) return {};
+  return (*held)->check.orientations;
+}
+
+}  // namespace
 
 PrintKey wantedPrintKey(const AppState& state) {
   return PrintKey{state.model_version, state.print_ui.up, state.print_ui.overhang_angle, state.print_ui.orient};
@@ -25,7 +82,8 @@ void requestPrint(AppState& state) {
   VoxelGrid grid = state.model;
   const uint64_t id = takeId(state);
   const std::shared_ptr<const MeshSource> mesh = rayMesh(state);
-  state.print.request(key, "Checking printability", [grid, id, mesh, key](const ProgressFn& progress) {
+  std::vector<PrintSupport> known = knownOrientations(state, key);
+  state.print.request(key, "Checking printability", [grid, id, mesh, key, known](const ProgressFn& progress) {
     using R = Result<std::shared_ptr<const PrintResult>>;
     // The bar's share of each stage: the surface 0..10%, support 10..50%, cavities 50..60% and directions 60..100%
     // when searched (else support 10..80%, cavities 80..100%).
@@ -39,7 +97,7 @@ void requestPrint(AppState& state) {
     options.params.up = key.up;
     options.params.overhang_angle_deg = key.overhang_angle;
     options.params.fields = true;
-    options.orient_directions = key.orient ? 100 : 0;
+    options.orient_directions = key.orient && known.empty() ? 100 : 0;
     if (mesh) options.mesh = &mesh->mesh;
     auto check = workflow::runPrintCheck(grid, options, bar);
     if (!check) return R(check.error());
@@ -47,6 +105,8 @@ void requestPrint(AppState& state) {
     out->id = id;
     out->key = key;
     out->check = std::move(check).value();
+    if (key.orient && !known.empty()) out->check.orientations = known;
+    overhangVolume(*out);
     out->seconds = out->check.surface_s + out->check.support_s + out->check.cavities_s + out->check.orient_s;
     return R(std::shared_ptr<const PrintResult>(std::move(out)));
   });

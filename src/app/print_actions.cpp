@@ -64,7 +64,7 @@ Status printOrientationAt(AppState& s, const ActionArgs& a) {
   const auto i = printRow(a, r ? r->check.orientations.size() : 0, "print-orientation",
                           "no build directions were searched (Find the best way up)");
   if (!i) return i.error();
-  // the same search then holds for the direction applied: its result stays when asked again
+  // the list found stays for the direction applied (print.cpp, knownOrientations): it is not searched again
   s.print_ui.up = r->check.orientations[*i].direction;
   showPrint(s);
   return Ok{};

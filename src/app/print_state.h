@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -26,6 +27,12 @@ struct PrintResult {
   PrintKey key;
   workflow::PrintCheck check;
   double seconds = 0.0;
+  // The overhangs as the renderer's scalar volume over their box (1 where a voxel hangs, else 0), made on the worker;
+  // empty, with `overhang_problem` saying why, when the box is too large to show.
+  glm::ivec3 overhang_min{0};
+  Dims overhang_dims{};
+  std::vector<uint8_t> overhang_values;
+  std::string overhang_problem;
 };
 
 struct PrintUi {
@@ -33,6 +40,7 @@ struct PrintUi {
   double overhang_angle = 45.0;  // degrees from the vertical
   bool orient = false;           // search the build directions (asked for with "Find the best way up")
   bool lay_face = false;         // the next click on the 3D view lays the face clicked on the plate
+  float angle_drag = -1.0f;      // the angle slider's value while it is dragged (< 0: not); applied when let go
   PrintKey cancelled;            // the computation the user cancelled (not asked again until "Compute")
   bool was_cancelled = false;
   int32_t selected_cavity = -1;  // in the result selected_result (PrintResult::id)

@@ -21,42 +21,18 @@ constexpr ImU32 kOverhangText = IM_COL32(255, 110, 100, 255);
 constexpr ImU32 kSupportText = IM_COL32(120, 180, 255, 255);
 constexpr ImU32 kCavityColour = IM_COL32(255, 220, 60, 255);
 
-// The box of a grid's filled voxels, or false when it has none.
-bool filledBox(const VoxelGrid& g, glm::ivec3& lo, glm::ivec3& hi) {
-  lo = glm::ivec3(INT32_MAX);
-  hi = glm::ivec3(-1);
-  for (int32_t z = 0; z < g.nz(); ++z) {
-    if (!g.layerAllocated(z)) continue;
-    for (int32_t y = 0; y < g.ny(); ++y) {
-      const uint64_t* row = g.rowWords(y, z);
-      for (int64_t w = 0; w < g.wordsPerRow(); ++w) {
-        if (!row[w]) continue;
-        const int32_t x0 = int32_t(w * 64 + std::countr_zero(row[w])) - 1;
-        const int32_t x1 = int32_t(w * 64 + 63 - std::countl_zero(row[w])) - 1;
-        lo = glm::min(lo, glm::ivec3(x0, y, z));
-        hi = glm::max(hi, glm::ivec3(x1, y, z));
-      }
-    }
-  }
-  return hi.x >= 0;
-}
-
-// The overhangs as the renderer's scalar volume over their box: 1 (under the threshold: red) where a voxel hangs.
-void uploadOverhangs(AppState& state, const VoxelGrid& overhang) {
-  glm::ivec3 lo, hi;
-  if (!filledBox(overhang, lo, hi)) {
+// The overhangs (made on the worker, print.cpp) as the renderer's scalar volume: under the threshold, red.
+void uploadOverhangs(AppState& state, const PrintResult& r) {
+  if (!r.overhang_problem.empty()) {
+    state.print_ui.volume_problem = r.overhang_problem;
     state.viewport.renderer->clearScalarVolume();
     return;
   }
-  const glm::ivec3 size = hi - lo + 1;
-  const Dims dims{size.x, size.y, size.z};
-  std::vector<uint8_t> values(size_t(dims.count()), 0);
-  size_t i = 0;
-  for (int32_t z = lo.z; z <= hi.z; ++z)
-    for (int32_t y = lo.y; y <= hi.y; ++y)
-      for (int32_t x = lo.x; x <= hi.x; ++x, ++i)
-        if (overhang.get(x, y, z)) values[i] = 1;
-  if (Status s = state.viewport.renderer->setScalarVolume(lo, dims, values); !s) {
+  if (r.overhang_values.empty()) {
+    state.viewport.renderer->clearScalarVolume();
+    return;
+  }
+  if (Status s = state.viewport.renderer->setScalarVolume(r.overhang_min, r.overhang_dims, r.overhang_values); !s) {
     state.print_ui.volume_problem = "The overhangs are not shown in red: " + s.error().message + ".";
   }
 }
@@ -77,8 +53,8 @@ void syncPrintView(AppState& state) {
     ui.volume_key = key;
     ui.volume_problem.clear();
     vp.dirty = true;
-    if (r && r->check.support.overhang) {
-      uploadOverhangs(state, *r->check.support.overhang);
+    if (r) {
+      uploadOverhangs(state, *r);
     } else if (!shownThickness(state)) {
       vp.renderer->clearScalarVolume();  // the Thickness panel's own colouring is not this panel's to clear
     }

@@ -29,11 +29,11 @@ std::string num(double v, int digits = 4) {
 class Page {
  public:
   explicit Page(std::string units) : units_(std::move(units)) {}
-  std::string length(double v) const { return num(v) + " " + unitsLabel(units_); }
+  std::string length(double v) const { return num(v) + " " + io::escapeHtml(unitsLabel(units_)); }
   std::string area(double v) const { return length(v) + "&sup2;"; }
   std::string volume(double v) const { return length(v) + "&sup3;"; }
   std::string point(glm::dvec3 p) const {
-    return "(" + num(p.x, 5) + ", " + num(p.y, 5) + ", " + num(p.z, 5) + ") " + unitsLabel(units_);
+    return "(" + num(p.x, 5) + ", " + num(p.y, 5) + ", " + num(p.z, 5) + ") " + io::escapeHtml(unitsLabel(units_));
   }
 
   void heading(const std::string& title) { html_ += "<h2>" + io::escapeHtml(title) + "</h2>\n"; }
@@ -169,18 +169,40 @@ Result<std::string> buildReport(const VoxelGrid& grid, const ReportOptions& opti
   if (mass.filled == 0) return makeError(ErrorCode::kInvalidArgument, "report: the model has no voxels");
   ThicknessRunOptions run_options;
   run_options.walls = WallRidgeParams{};
-  const ProgressFn thickness_share = share(0.0, 0.7);
-  auto run = runThickness(grid, run_options, [&](ThicknessStage, double f) { return thickness_share(f); });
+  // the stages' shares of the bar, in the order they run: distance, hot spots, wall ridge, local thickness
+  const auto stage_share = [&share](ThicknessStage stage) {
+    switch (stage) {
+      case ThicknessStage::kDistance:
+        return share(0.0, 0.1);
+      case ThicknessStage::kHotSpots:
+        return share(0.1, 0.2);
+      case ThicknessStage::kWalls:
+        return share(0.2, 0.3);
+      default:
+        return share(0.3, 0.7);
+    }
+  };
+  auto run = runThickness(grid, run_options, [&](ThicknessStage stage, double f) { return stage_share(stage)(f); });
   if (!run) return run.error();
   const double h = grid.voxelSize();
   auto walls = findWalls(*run->ridge, run->thickness.radius, WallParams{options.min_wall > 0.0 ? options.min_wall : h});
   if (!walls) return walls.error();
   PrintCheckOptions print_options;
   print_options.mesh = options.mesh;
-  const ProgressFn print_share = share(0.7, 0.95);
-  auto print = runPrintCheck(grid, print_options, [&](PrintStage, double f) { return print_share(f); });
+  const auto print_share = [&share](PrintStage stage) {
+    switch (stage) {
+      case PrintStage::kSurface:
+        return share(0.7, 0.75);
+      case PrintStage::kSupport:
+        return share(0.75, 0.85);
+      default:
+        return share(0.85, 0.95);
+    }
+  };
+  auto print = runPrintCheck(grid, print_options, [&](PrintStage stage, double f) { return print_share(stage)(f); });
   if (!print) return print.error();
-  // the section through the middle of the part, coloured by thickness, about 480 pixels wide
+  // the section through the middle of the part, coloured by thickness: a whole number of pixels per voxel, at least
+  // 480 pixels wide for a small part, one pixel per voxel for a large one
   SectionParams section;
   section.axis = Axis::kZ;
   section.index = (mass.bbox_min_ijk.z + mass.bbox_max_ijk.z) / 2;

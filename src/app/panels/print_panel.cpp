@@ -45,10 +45,18 @@ void directionChoice(AppState& state) {
   helpMarker("Click the face the part should stand on: the build direction becomes the opposite of its normal.");
 
   heading("Overhang angle");
-  float angle = float(state.print_ui.overhang_angle);
+  // applied when the slider is let go: each angle on the way would check the part again
+  PrintUi& ui = state.print_ui;
+  float angle = ui.angle_drag >= 0.0f ? ui.angle_drag : float(ui.overhang_angle);
   ImGui::SetNextItemWidth(-1.0f);
   if (widget::SliderFloat("##overhang_angle", &angle, 0.0f, 89.0f, "%.0f deg from the vertical")) {
+    ui.angle_drag = angle;
+  }
+  if (ImGui::IsItemDeactivatedAfterEdit()) {
     dispatchValues(state, ActionId::kOverhangAngle, {std::to_string(angle)});
+    ui.angle_drag = -1.0f;
+  } else if (!ImGui::IsItemActive()) {
+    ui.angle_drag = -1.0f;
   }
   markWidget("overhang_angle_slider");
 }

@@ -98,11 +98,17 @@ void drawThicknessPanel(AppState& state) {
   methodChoice(state, *r);
 
   heading("Minimum wall");
-  float v = float(wall);
+  // applied when the slider is let go: each value on the way would find the walls again
+  ThicknessUi& ui = state.thickness_ui;
+  float v = ui.wall_drag >= 0.0f ? ui.wall_drag : float(wall);
   ImGui::SetNextItemWidth(-1.0f);
   const std::string fmt = "%.4g " + unitsLabel(units);
-  if (widget::SliderFloat("##min_wall", &v, 0.0f, float(st.max), fmt.c_str())) {
+  if (widget::SliderFloat("##min_wall", &v, 0.0f, float(st.max), fmt.c_str())) ui.wall_drag = v;
+  if (ImGui::IsItemDeactivatedAfterEdit()) {
     dispatchValues(state, ActionId::kMinWall, {std::to_string(v)});
+    ui.wall_drag = -1.0f;
+  } else if (!ImGui::IsItemActive()) {
+    ui.wall_drag = -1.0f;
   }
   markWidget("min_wall_slider");
   if (walls) {
