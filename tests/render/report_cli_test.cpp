@@ -1,5 +1,6 @@
 // voxmod report (SPEC 12) as a user runs it: one self-contained HTML page with its pictures in it and the numbers of
-// the part with their units; bad names, missing units and unwritable places refused with nothing written.
+// the part with their units; bad names, missing units and unwritable places refused with nothing written. Among the
+// render tests: the page carries a view rendered headless (EGL), whose Mesa keeps allocations to the end.
 #include <gtest/gtest.h>
 
 #include <filesystem>
