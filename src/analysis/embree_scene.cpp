@@ -6,6 +6,27 @@
 
 namespace vox::analysis_detail {
 
+namespace {
+
+// A ray from p along d beyond t_near, without a hit yet.
+RTCRayHit rayFrom(glm::dvec3 p, glm::dvec3 d, float t_near) {
+  RTCRayHit rh{};
+  rh.ray.org_x = float(p.x);
+  rh.ray.org_y = float(p.y);
+  rh.ray.org_z = float(p.z);
+  rh.ray.dir_x = float(d.x);
+  rh.ray.dir_y = float(d.y);
+  rh.ray.dir_z = float(d.z);
+  rh.ray.tnear = t_near;
+  rh.ray.tfar = std::numeric_limits<float>::infinity();
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  return rh;
+}
+
+}  // namespace
+
 Status buildEmbreeScene(const TriangleMesh& mesh, glm::dvec3 offset, const std::string& what, EmbreeScene& s,
                         bool all_hits) {
   s.offset = offset;
@@ -46,18 +67,7 @@ Status buildEmbreeScene(const TriangleMesh& mesh, glm::dvec3 offset, const std::
 bool castEmbreeRay(RTCScene scene, glm::dvec3 p, glm::dvec3 d, float t_near, float& t, unsigned& triangle) {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRayHit rh{};
-  rh.ray.org_x = float(p.x);
-  rh.ray.org_y = float(p.y);
-  rh.ray.org_z = float(p.z);
-  rh.ray.dir_x = float(d.x);
-  rh.ray.dir_y = float(d.y);
-  rh.ray.dir_z = float(d.z);
-  rh.ray.tnear = t_near;
-  rh.ray.tfar = std::numeric_limits<float>::infinity();
-  rh.ray.mask = 0xFFFFFFFFu;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  RTCRayHit rh = rayFrom(p, d, t_near);
   rtcIntersect1(scene, &context, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
   t = rh.ray.tfar;
@@ -90,18 +100,7 @@ void allEmbreeHits(RTCScene scene, glm::dvec3 p, glm::dvec3 d, std::vector<std::
   rtcInitIntersectContext(&collector.context);
   collector.context.filter = collectHit;
   collector.hits = &hits;
-  RTCRayHit rh{};
-  rh.ray.org_x = float(p.x);
-  rh.ray.org_y = float(p.y);
-  rh.ray.org_z = float(p.z);
-  rh.ray.dir_x = float(d.x);
-  rh.ray.dir_y = float(d.y);
-  rh.ray.dir_z = float(d.z);
-  rh.ray.tnear = 0.0f;
-  rh.ray.tfar = std::numeric_limits<float>::infinity();
-  rh.ray.mask = 0xFFFFFFFFu;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  RTCRayHit rh = rayFrom(p, d, 0.0f);
   rtcIntersect1(scene, &collector.context, &rh);
   // a triangle in two leaves of the index is met twice
   std::sort(hits.begin(), hits.end());

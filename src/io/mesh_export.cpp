@@ -2,6 +2,8 @@
 // with minizip (docs/dependencies.md).
 #include "vox/io/mesh_export.h"
 
+#include "vox/io/html.h"
+
 #include <charconv>
 #include <filesystem>
 #include <memory>
@@ -71,27 +73,6 @@ void appendNumber(std::string& out, double v) {
   out.append(buf, r.ptr);
 }
 
-void appendEscaped(std::string& out, const std::string& text) {
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-}
-
 std::vector<uint8_t> bytesOf(const std::string& text) { return std::vector<uint8_t>(text.begin(), text.end()); }
 
 // The 3MF core model: one object, one build item. assimp's 3MF exporter prints 6 significant digits (which moves
@@ -104,7 +85,7 @@ std::string threeMfModel(const IndexedMesh& mesh, const std::string& units) {
   out += threeMfUnit(units);
   out += "\" xml:lang=\"en-US\" xmlns=\"http://schemas.microsoft.com/3dmanufacturing/core/2015/02\">\n";
   out += " <resources>\n  <object id=\"1\" type=\"model\" name=\"";
-  appendEscaped(out, mesh.name.empty() ? std::string("surface") : mesh.name);
+  out += escapeHtml(mesh.name.empty() ? std::string("surface") : mesh.name);  // XML's entities too
   out += "\">\n   <mesh>\n    <vertices>\n";
   for (const glm::dvec3& v : mesh.vertices) {
     out += "     <vertex x=\"";

@@ -17,8 +17,7 @@ using test::runVoxmod;
 
 // The cantilever of tests/unit/analysis/printability_test.cpp: 300 mm^2 hanging 15 mm over the plate.
 std::string cantileverStl(const test::TempDir& dir) {
-  const TriangleMesh m =
-      test::combined(test::boxMesh({0, 0, 0}, {10, 10, 20}), test::boxMesh({10, 0, 15}, {40, 10, 20}));
+  const TriangleMesh m = test::cantileverMesh();
   const std::string stl = (dir / "cantilever.stl").string();
   EXPECT_TRUE(io::saveStlBinary(m, stl).ok());
   return stl;

@@ -33,8 +33,7 @@ size_t count(const std::string& text, const std::string& what) {
 
 // The cantilever of the printability tests: a 10 x 10 x 20 mm column with a 30 x 10 x 5 mm arm at its top.
 std::string cantileverStl(const test::TempDir& dir) {
-  const TriangleMesh m =
-      test::combined(test::boxMesh({0, 0, 0}, {10, 10, 20}), test::boxMesh({10, 0, 15}, {40, 10, 20}));
+  const TriangleMesh m = test::cantileverMesh();
   const std::string stl = (dir / "cantilever.stl").string();
   EXPECT_TRUE(io::saveStlBinary(m, stl).ok());
   return stl;

@@ -123,6 +123,8 @@ TriangleMesh tetrahedron(glm::dvec3 corner, double size) {
   return m;
 }
 
+TriangleMesh cantileverMesh() { return combined(boxMesh({0, 0, 0}, {10, 10, 20}), boxMesh({10, 0, 15}, {40, 10, 20})); }
+
 double windingNumber(const TriangleMesh& mesh, const glm::dvec3& p) {
   double sum = 0.0;
   for (const Triangle& t : mesh.triangles) {

@@ -33,6 +33,10 @@ glm::dmat3 rotation(glm::dvec3 axis, double degrees);
 // The two meshes' triangles in one soup.
 TriangleMesh combined(const TriangleMesh& a, const TriangleMesh& b);
 
+// A cantilever, mm: a 10 x 10 x 20 column on the plate and a 30 x 10 x 5 arm sticking out from its top along +x
+// (two boxes touching). Printed along +z, the arm's underside (300 mm^2) hangs 15 mm over the plate: 4500 mm^3.
+TriangleMesh cantileverMesh();
+
 // Generalized winding number of the mesh at p (sum of signed solid angles / 4 pi, A. Jacobson et al. 2013): an
 // independent inside test for points not within rounding distance of the surface.
 double windingNumber(const TriangleMesh& mesh, const glm::dvec3& p);

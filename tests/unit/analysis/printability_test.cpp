@@ -14,11 +14,7 @@
 namespace vox {
 namespace {
 
-// A cantilever, mm: a column 10 x 10 x 20 on the plate and an arm 30 x 10 x 5 sticking out from its top along +x.
-// Printed along +z, the arm's underside (30 x 10 = 300 mm^2) hangs 15 mm over the plate: 4500 mm^3 of support.
-TriangleMesh cantilever() {
-  return test::combined(test::boxMesh({0, 0, 0}, {10, 10, 20}), test::boxMesh({10, 0, 15}, {40, 10, 20}));
-}
+TriangleMesh cantilever() { return test::cantileverMesh(); }
 
 VoxelGrid voxelize(const TriangleMesh& mesh, double h) {
   VoxelizeParams p;
