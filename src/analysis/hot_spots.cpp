@@ -156,8 +156,10 @@ void greatestAbout(const Dims& d, int64_t zb, int64_t ze, Key&& key, Up&& up, Mo
 // progress and the results each step hands to the next.
 class HotSpotSearch {
  public:
-  HotSpotSearch(const DistanceField& distance, const HotSpotParams& params, const ProgressFn& progress)
-      : distance_(distance),
+  HotSpotSearch(const DistanceField& distance, const HotSpotParams& params, const ProgressFn& progress,
+                bool keep_labels = false)
+      : keep_labels_(keep_labels),
+        distance_(distance),
         params_(params),
         d_(distance.boxDims()),
         nx_(d_.nx),
@@ -267,8 +269,9 @@ class HotSpotSearch {
       if (gate_.cancelled()) return cancelled();
       code_.reset();
       basins(wide.get());
+      if (keep_labels_) wide_ = std::move(wide);
     }
-    code_.reset();
+    if (!keep_labels_) code_.reset();
     if (gate_.cancelled()) return cancelled();
     return Ok{};
   }
@@ -454,10 +457,12 @@ class HotSpotSearch {
     std::vector<int64_t> count(spot_comp.size(), 0);
     regions(spot_of, depth, count);
     std::vector<HotSpot> out;
+    spot_modulus_.assign(spot_comp.size(), 0.0);
     for (size_t spot = 0; spot < spot_comp.size(); ++spot) {
       out.push_back(spotOf(comps_[spot_comp[spot]], voxels.data() + start[spot], start[spot + 1] - start[spot]));
       out.back().modulus = regionModulus(std::sqrt(double(comps_[spot_comp[spot]].peak)), depth[spot], count[spot]) *
                            distance_.voxelSize();
+      spot_modulus_[spot] = out.back().modulus;
     }
     std::stable_sort(out.begin(), out.end(), [](const HotSpot& a, const HotSpot& b) { return a.radius > b.radius; });
     return out;
@@ -487,6 +492,7 @@ class HotSpotSearch {
       }
       for (uint32_t p : path) owner[p] = found;
     }
+    if (keep_labels_) owner_ = owner;
     for (size_t t = 0; t < basin_depth_.size(); ++t) {
       for (size_t k = 0; k < comps_.size(); ++k) {
         if (owner[k] < 0) continue;
@@ -535,6 +541,7 @@ class HotSpotSearch {
     return hs;
   }
 
+  const bool keep_labels_;  // keep each voxel's summit (for the modulus field)
   const DistanceField& distance_;
   const HotSpotParams& params_;
   const Dims d_;
@@ -553,6 +560,27 @@ class HotSpotSearch {
   std::vector<std::vector<double>> basin_depth_;    // per thread, per summit: the summed distance of its basin
   std::vector<std::vector<int64_t>> basin_voxels_;  // ... and its voxels
   std::vector<uint32_t> plateau_;
+  std::unique_ptr<uint32_t[], decltype(&std::free)> wide_{nullptr, &std::free};  // kept 32-bit labels
+  std::vector<int64_t> owner_;        // with keep_labels_: each summit's reported spot
+  std::vector<double> spot_modulus_;  // each reported spot's modulus, model units
+
+ public:
+  // After run() with keep_labels: each filled voxel of the box gets the modulus of the spot whose region holds it, at
+  // most half its local thickness (`radius`: squared voxels over the same box, or null), written to `out` (the box's
+  // layout, model units).
+  void paintModulus(const DistanceField* radius, float* out) const {
+    const double h = distance_.voxelSize();
+    parallelChunks(0, nz_, grain_, threads_, [&](int, int64_t zb, int64_t ze) {
+      for (int64_t i = layer_ * zb; i < layer_ * ze; ++i) {
+        if (!data_[i]) continue;
+        const uint32_t summit = wide_ ? wide_[size_t(i)] : uint32_t(code_[size_t(i)]);
+        const int64_t spot = summit < owner_.size() ? owner_[summit] : -1;
+        double m = spot >= 0 ? spot_modulus_[size_t(spot)] : 0.0;
+        if (radius) m = std::min(m, std::sqrt(double(radius->data()[i])) * h);
+        out[i] = float(m);
+      }
+    });
+  }
 };
 
 }  // namespace
@@ -576,6 +604,37 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
     return findHotSpots(dense, params, progress);
   }
   return HotSpotSearch(distance, params, progress).run();
+}
+
+}  // namespace vox
+
+namespace vox {
+
+Result<ScalarField> computeModulusField(const DistanceField& distance, const DistanceField* radius,
+                                        const HotSpotParams& params, const ProgressFn& progress) {
+  if (distance.outside() != 0) {
+    return makeError(ErrorCode::kInvalidArgument, "the modulus needs a distance field, not a clearance field");
+  }
+  if (radius &&
+      (radius->boxDims() != distance.boxDims() || radius->boxMin() != distance.boxMin() || !radius->isDense())) {
+    return makeError(ErrorCode::kInvalidArgument, "the modulus: the thickness is not over the distance's box");
+  }
+  const Dims d = distance.boxDims();
+  ScalarField out(distance.gridDims(), distance.frame());
+  if (d.count() == 0) return out;
+  if (d.count() >= int64_t(UINT32_MAX)) {
+    return makeError(ErrorCode::kLimit, "the modulus: the model's bounding box has more than 2^32 voxels");
+  }
+  if (!distance.isDense()) return computeModulusField(distance.denseCopy(), radius, params, progress);
+  HotSpotSearch search(distance, params, progress, true);
+  if (auto spots = search.run(); !spots) return spots.error();
+  std::vector<float> box(size_t(d.count()), 0.0f);
+  search.paintModulus(radius, box.data());
+  const glm::ivec3 lo = distance.boxMin();
+  for (int64_t z = 0; z < d.nz; ++z)
+    for (int64_t y = 0; y < d.ny; ++y)
+      std::copy_n(box.data() + d.nx * (y + d.ny * z), d.nx, &out.at(lo.x, lo.y + y, lo.z + z));
+  return out;
 }
 
 }  // namespace vox

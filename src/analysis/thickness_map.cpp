@@ -49,6 +49,12 @@ Result<Image2D<int32_t>> fieldSection(const ScalarField& field, const SectionPar
   });
 }
 
+Result<Image2D<int32_t>> scaledSection(const ScalarField& field, const SectionParams& params, double scale) {
+  return tenthsSection(field.dims, params, [&](int32_t x, int32_t y, int32_t z) {
+    return double(field.at(x, y, z)) * scale / kThicknessTenths;
+  });
+}
+
 ScalarMapLegend rayThicknessLegend(const ScalarField& field, const SectionParams& params, const std::string& units,
                                    double min, double max, double mean) {
   ScalarMapLegend l;

@@ -21,4 +21,5 @@ void addInterfereCommand(CLI::App& sub, CommandContext& ctx);
 void addClearanceCommand(CLI::App& sub, CommandContext& ctx);
 void addPrintCheckCommand(CLI::App& sub, CommandContext& ctx);
 void addReportCommand(CLI::App& sub, CommandContext& ctx);
+void addCastingCommand(CLI::App& sub, CommandContext& ctx);
 }  // namespace vox::cli

@@ -32,6 +32,9 @@ const std::vector<Command>& commands() {
       {"clearance", "The smallest gap between two parts that do not touch", addClearanceCommand},
       {"printcheck", "3D printing: overhangs, support volume, trapped cavities, the best build direction",
        addPrintCheckCommand},
+      {"casting",
+       "Casting solidification: when each voxel freezes, hot spots, feeders and whether the casting is sound",
+       addCastingCommand},
       {"report", "One HTML page of what voxmod computes of a part: model, walls, hot spots, printing, pictures",
        addReportCommand},
   };

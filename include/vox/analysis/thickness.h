@@ -16,6 +16,7 @@
 #include "vox/core/mesh.h"
 #include "vox/core/progress.h"
 #include "vox/core/result.h"
+#include "vox/core/scalar_field.h"
 #include "vox/core/voxel_grid.h"
 
 namespace vox {
@@ -108,5 +109,15 @@ struct HotSpot {
 // or more 4, and 6 while the labels widen), and a dense copy of a packed field (pass a dense one where there is).
 Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const HotSpotParams& params = {},
                                           const ProgressFn& progress = {});
+
+// ---- The geometric (Chvorinov) modulus ----
+// Every filled voxel's modulus V/A (model units; 0 in empty voxels) over the grid: the modulus of the hot spot whose
+// region holds it (the region its distance ridge climbs to, as findHotSpots reports), at most half its local
+// thickness where `radius` is given (Thickness::radius): a thin fin on a thick boss reads as the fin it is, not as the
+// boss. Plates read half their thickness, bars a quarter of their side, cubes and spheres a sixth of their side or
+// diameter (docs/accuracy.md, "Hot spots"). Memory: findHotSpots' labels kept to the end (2 or 4 bytes per voxel of
+// the box) and the field, 4 bytes per voxel of the grid.
+Result<ScalarField> computeModulusField(const DistanceField& distance, const DistanceField* radius,
+                                        const HotSpotParams& params = {}, const ProgressFn& progress = {});
 
 }  // namespace vox

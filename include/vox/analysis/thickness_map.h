@@ -27,6 +27,10 @@ Result<Image2D<int32_t>> fieldSection(const ScalarField& field, const SectionPar
 ScalarMapLegend rayThicknessLegend(const ScalarField& field, const SectionParams& params, const std::string& units,
                                    double min, double max, double mean);
 
+// A section through any scalar field (0: no value) in the same axes, each value times `scale`, rounded (at least 1
+// where the value is positive): the casting's times in tenths of a second with scale 10.
+Result<Image2D<int32_t>> scaledSection(const ScalarField& field, const SectionParams& params, double scale);
+
 // The whole grid's local thickness in model units (0 in empty voxels).
 ScalarField thicknessField(const Thickness& thickness);
 // The whole grid's distance in model units (0 in empty voxels). With `clearance` (computeClearance of the same
