@@ -34,7 +34,8 @@ int64_t findRoot(std::vector<int64_t>& parent, int64_t i) {
 }  // namespace
 
 std::vector<TimeSpot> findTimeSpots(const Dims& d, const std::vector<uint8_t>& kind, const std::vector<float>& time,
-                                    const GridFrame& frame, double tolerance, int64_t min_voxels) {
+                                    const GridFrame& frame, double abs_tolerance, double rel_tolerance,
+                                    int64_t min_voxels) {
   std::vector<int64_t> order;
   for (int64_t i = 0; i < d.count(); ++i)
     if (kind[size_t(i)] & kMetal) order.push_back(i);
@@ -55,7 +56,7 @@ std::vector<TimeSpot> findTimeSpots(const Dims& d, const std::vector<uint8_t>& k
     t.spot.in_feeder = (kind[size_t(s.peak)] & kFeeder) != 0;
     if (!isolated) {
       t.spot.saddle = centre(saddle);
-      t.spot.fed_by = int32_t(fed_by_root);  // a root cell for now, resolved below
+      t.fed_by_root = fed_by_root;  // resolved to a spot below
     }
     s.spot = int32_t(out.size());
     out.push_back(t);
@@ -81,8 +82,9 @@ std::vector<TimeSpot> findTimeSpots(const Dims& d, const std::vector<uint8_t>& k
       Set& loser = a_wins ? b : a;
       Set& winner = a_wins ? a : b;
       const int64_t winner_root = a_wins ? root : r, loser_root = a_wins ? r : root;
-      const double dip = double(time[size_t(loser.peak)]) - double(time[size_t(i)]);
-      if (dip >= tolerance) {
+      const double peak = time[size_t(loser.peak)];
+      const double dip = peak - double(time[size_t(i)]);
+      if (dip >= std::max(abs_tolerance, rel_tolerance * peak)) {
         listSpot(loser, true, i, -1);
       } else if (loser.voxels >= min_voxels) {
         listSpot(loser, false, i, winner_root);
@@ -106,7 +108,7 @@ std::vector<TimeSpot> findTimeSpots(const Dims& d, const std::vector<uint8_t>& k
   // A fed spot's feeder: the listed isolated spot its surviving set ended in.
   for (TimeSpot& t : out) {
     if (t.spot.isolated) continue;
-    int64_t r = t.spot.fed_by;
+    int64_t r = t.fed_by_root;
     for (;;) {
       const Set& s = sets[size_t(set_of[size_t(r)])];
       if (s.spot >= 0 && out[size_t(s.spot)].spot.isolated) {

@@ -83,15 +83,24 @@ Result<Feeder> parseFeeder(std::string_view text) {
   return Feeder{glm::dvec3(v[0], v[1], v[2]), v[3], v[4]};
 }
 
-void feederBox(const Feeder& f, const GridFrame& frame, glm::ivec3& lo, glm::ivec3& hi) {
+bool feederBox(const Feeder& f, const GridFrame& frame, glm::ivec3& lo, glm::ivec3& hi) {
   const double h = frame.voxel_size, r = 0.5 * f.diameter;
+  constexpr double kFar = double(1 << 28);  // voxel indices this far out hold no grid voxmod makes
+  bool held = true;
   // voxel i's centre: origin + (i + 0.5) h
-  const auto first = [&](double v, double o) { return int32_t(std::ceil((v - o) / h - 0.5)); };
-  const auto last = [&](double v, double o) { return int32_t(std::floor((v - o) / h - 0.5)); };
-  lo = glm::ivec3(first(f.base.x - r, frame.origin.x), first(f.base.y - r, frame.origin.y),
-                  first(f.base.z, frame.origin.z));
-  hi = glm::ivec3(last(f.base.x + r, frame.origin.x), last(f.base.y + r, frame.origin.y),
-                  last(f.base.z + f.height, frame.origin.z));
+  const auto index = [&](double v, double o, bool first) {
+    const double i = first ? std::ceil((v - o) / h - 0.5) : std::floor((v - o) / h - 0.5);
+    if (!(std::abs(i) < kFar)) {
+      held = false;
+      return int32_t(0);
+    }
+    return int32_t(i);
+  };
+  lo = glm::ivec3(index(f.base.x - r, frame.origin.x, true), index(f.base.y - r, frame.origin.y, true),
+                  index(f.base.z, frame.origin.z, true));
+  hi = glm::ivec3(index(f.base.x + r, frame.origin.x, false), index(f.base.y + r, frame.origin.y, false),
+                  index(f.base.z + f.height, frame.origin.z, false));
+  return held;
 }
 
 bool inFeeder(const Feeder& f, const GridFrame& frame, glm::ivec3 v) {

@@ -625,7 +625,14 @@ Result<ScalarField> computeModulusField(const DistanceField& distance, const Dis
   if (d.count() >= int64_t(UINT32_MAX)) {
     return makeError(ErrorCode::kLimit, "the modulus: the model's bounding box has more than 2^32 voxels");
   }
-  if (!distance.isDense()) return computeModulusField(distance.denseCopy(), radius, params, progress);
+  if (!distance.isDense()) {
+    const DistanceField dense = distance.denseCopy();
+    if (!dense.data()) {
+      return makeError(ErrorCode::kLimit,
+                       "the modulus: cannot allocate " + std::to_string(d.count() >> 18) + " MiB for the field");
+    }
+    return computeModulusField(dense, radius, params, progress);
+  }
   HotSpotSearch search(distance, params, progress, true);
   if (auto spots = search.run(); !spots) return spots.error();
   std::vector<float> box(size_t(d.count()), 0.0f);

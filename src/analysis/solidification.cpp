@@ -136,11 +136,20 @@ class Solidifier {
 
   // The box, the envelope and the step (no allocation): also what estimateCastingBytes reads.
   Status layout();
+  Status checkParams() const;
+  // Floats of scratch each thread's two arrays hold: the largest plane of lines a sweep solves at once.
+  int64_t scratchFloats() const { return std::max({nx_ * 16, nx_ * ny_, nx_ * nz_}); }
   int64_t cells() const { return box_.count(); }
+  int64_t scratchBytes() const {
+    const int64_t nx = box_.nx, ny = box_.ny, nz = box_.nz;
+    return 2 * threadsFor(box_.count()) * std::max({nx * 16, nx * ny, nx * nz}) * int64_t(sizeof(float));
+  }
 
  private:
   Status build();
   Status simulate();
+  Status markFeeders(glm::ivec3 off);
+  bool partNear(glm::ivec3 v) const;
   void capacities(double dt);
   void solveLines(int64_t base, int64_t stride, int64_t n, int64_t width, float* cp, float* dp);
   void sweeps();
@@ -181,7 +190,7 @@ class Solidifier {
   Conductance conductance_;
 };
 
-Status Solidifier::layout() {
+Status Solidifier::checkParams() const {
   const Alloy& a = p_.alloy;
   const MouldMaterial& m = p_.mould;
   for (const double v : {a.density_kg_m3, a.latent_heat_j_kg, a.conductivity_w_mk, a.specific_heat_j_kgk,
@@ -190,24 +199,53 @@ Status Solidifier::layout() {
       return makeError(ErrorCode::kInvalidArgument, "casting: material properties must be positive");
     }
   }
-  if (a.liquidus_c < a.solidus_c || m.temperature_c >= a.solidus_c || !(p_.superheat_k >= 0.0)) {
+  if (!std::isfinite(a.liquidus_c) || !std::isfinite(a.solidus_c) || a.liquidus_c < a.solidus_c ||
+      !(m.temperature_c > -273.15) || m.temperature_c >= a.solidus_c || !(p_.superheat_k >= 0.0) ||
+      !std::isfinite(p_.superheat_k)) {
     return makeError(ErrorCode::kInvalidArgument,
-                     "casting: the mould must start below the solidus, the liquidus not below it, and the "
-                     "superheat must not be negative");
+                     "casting: the mould must start between -273.15 C and the solidus, the liquidus not below the "
+                     "solidus, and the superheat must be a number of kelvin, not negative");
   }
-  if (!(p_.metres_per_unit > 0.0)) {
+  if (!(p_.metres_per_unit > 0.0) || !std::isfinite(p_.metres_per_unit)) {
     return makeError(ErrorCode::kInvalidArgument, "casting needs the part's length units");
   }
   if (part_.empty() || part_.filledCount() == 0) {
     return makeError(ErrorCode::kInvalidArgument, "casting: the part has no voxels");
   }
+  if (p_.modulus && (p_.modulus->dims != part_.dims())) {
+    return makeError(ErrorCode::kInvalidArgument, "casting: the modulus field is not over the part's grid");
+  }
+  return Ok{};
+}
+
+// V/A of the whole part from its voxels and their exposed faces (when no modulus field is given): the time estimate
+// and the envelope then follow the part's bulk.
+double facesModulus(const VoxelGrid& g) {
+  int64_t voxels = 0, faces = 0;
+  for (int32_t z = 0; z < g.nz(); ++z)
+    for (int32_t y = 0; y < g.ny(); ++y)
+      for (int32_t x = 0; x < g.nx(); ++x) {
+        if (!g.get(x, y, z)) continue;
+        ++voxels;
+        faces += !g.get(x - 1, y, z) + !g.get(x + 1, y, z) + !g.get(x, y - 1, z) + !g.get(x, y + 1, z) +
+                 !g.get(x, y, z - 1) + !g.get(x, y, z + 1);
+      }
+  // a staircase's faces are about 1.5 times the smooth surface they stand for
+  return faces > 0 ? 1.5 * double(voxels) / double(faces) * g.voxelSize() : g.voxelSize();
+}
+
+Status Solidifier::layout() {
+  if (Status s = checkParams(); !s) return s;
+  const MouldMaterial& m = p_.mould;
   // The result box: the part's grid grown to hold the feeders.
   const GridFrame& frame = part_.frame();
   glm::ivec3 lo(0), hi(part_.nx() - 1, part_.ny() - 1, part_.nz() - 1);
   double modulus = 0.0;
   for (const Feeder& f : p_.feeders) {
     glm::ivec3 flo, fhi;
-    feederBox(f, frame, flo, fhi);
+    if (!feederBox(f, frame, flo, fhi)) {
+      return makeError(ErrorCode::kInvalidArgument, "casting: a feeder lies too far from the part to hold");
+    }
     if (glm::any(glm::greaterThan(flo, fhi))) {
       return makeError(ErrorCode::kInvalidArgument, "casting: a feeder holds no voxel (smaller than a voxel)");
     }
@@ -217,10 +255,15 @@ Status Solidifier::layout() {
   }
   if (p_.modulus) {
     for (const float v : p_.modulus->values) modulus = std::max(modulus, double(v));
+  } else {
+    modulus = std::max(modulus, facesModulus(part_));
   }
   modulus = std::max(modulus, part_.voxelSize());
   h_m_ = part_.voxelSize() * p_.metres_per_unit;
   out_.estimate_s = chvorinovSeconds(p_, modulus * p_.metres_per_unit);
+  if (!(out_.estimate_s > 0.0) || !std::isfinite(out_.estimate_s)) {
+    return makeError(ErrorCode::kInvalidArgument, "casting: these materials and temperatures give no freezing time");
+  }
   out_.time_step_s = out_.estimate_s / std::max(p_.steps_per_estimate, 8);
   const double alpha = m.conductivity_w_mk / (m.density_kg_m3 * m.specific_heat_j_kgk);
   const double envelope =
@@ -260,37 +303,25 @@ Status Solidifier::build() {
     for (auto* v : {&t_, &h_, &c_, &d_}) v->assign(n, 0.0f);
     time_.assign(n, 0.0f);
     niyama_.assign(n, 0.0f);
+    threads_ = threadsFor(box_.count());
+    scratch_.assign(size_t(2 * threads_), std::vector<float>(size_t(scratchFloats())));
+    xblocks_.resize(size_t(threads_));
+    for (XBlock& b : xblocks_) {
+      for (auto* v : {&b.t, &b.d, &b.c}) v->resize(size_t(nx_ * 16));
+      b.kind.resize(size_t(nx_ * 16));
+    }
   } catch (const std::bad_alloc&) {
     return makeError(ErrorCode::kLimit, "casting: cannot allocate " +
                                             std::to_string(estimateCastingBytes(part_, p_) >> 20) +
                                             " MiB for the simulation");
   }
-  threads_ = threadsFor(box_.count());
-  scratch_.resize(size_t(2 * threads_));
-  xblocks_.resize(size_t(threads_));
   const glm::ivec3 off = result_lo_ + out_.part_offset;  // the part's voxel (0, 0, 0) in the box
   for (int32_t z = 0; z < part_.nz(); ++z)
     for (int32_t y = 0; y < part_.ny(); ++y)
       for (int32_t x = 0; x < part_.nx(); ++x)
         if (part_.get(x, y, z)) kind_[size_t((x + off.x) + nx_ * ((y + off.y) + ny_ * (z + off.z)))] = kMetal;
   out_.feeders.clear();
-  const double h3 = std::pow(part_.voxelSize(), 3);
-  for (const Feeder& f : p_.feeders) {
-    glm::ivec3 lo, hi;
-    feederBox(f, part_.frame(), lo, hi);
-    int64_t added = 0;
-    for (int32_t z = lo.z; z <= hi.z; ++z)
-      for (int32_t y = lo.y; y <= hi.y; ++y)
-        for (int32_t x = lo.x; x <= hi.x; ++x) {
-          if (!inFeeder(f, part_.frame(), glm::ivec3(x, y, z))) continue;
-          uint8_t& k = kind_[size_t((x + off.x) + nx_ * ((y + off.y) + ny_ * (z + off.z)))];
-          if (k == kMould) {
-            k = kMetal | kFeeder;
-            ++added;
-          }
-        }
-    out_.feeders.push_back(FeederResult{f, feederModulus(f), double(added) * h3});
-  }
+  if (Status st = markFeeders(off); !st) return st;
   const double pour = p_.alloy.liquidus_c + p_.superheat_k, h_pour = metal_.enthalpy(pour);
   mould_rc_ = p_.mould.density_kg_m3 * p_.mould.specific_heat_j_kgk;
   for (size_t i = 0; i < n; ++i) {
@@ -308,6 +339,45 @@ Status Solidifier::build() {
     for (int b = 0; b < 2; ++b) g_[a][b] = 2.0 * k[a] * k[b] / (k[a] + k[b]) / (h_m_ * h_m_);
   conductance_ = Conductance{float(g_[0][0]), float(g_[1][0] - g_[0][0]), float(g_[0][1] - g_[0][0]),
                              float(g_[1][1] - g_[1][0] - g_[0][1] + g_[0][0])};
+  return Ok{};
+}
+
+// Whether voxel v (any index) or one of its face neighbours is the part's.
+bool Solidifier::partNear(glm::ivec3 v) const {
+  const auto filled = [&](glm::ivec3 q) { return part_.inBounds(q.x, q.y, q.z) && part_.get(q.x, q.y, q.z); };
+  return filled(v) || filled(v + glm::ivec3(1, 0, 0)) || filled(v - glm::ivec3(1, 0, 0)) ||
+         filled(v + glm::ivec3(0, 1, 0)) || filled(v - glm::ivec3(0, 1, 0)) || filled(v + glm::ivec3(0, 0, 1)) ||
+         filled(v - glm::ivec3(0, 0, 1));
+}
+
+// The feeders' voxels outside the part (kMetal | kFeeder); each must touch the part (a voxel of it, or one beside it).
+Status Solidifier::markFeeders(glm::ivec3 off) {
+  const double h3 = std::pow(part_.voxelSize(), 3);
+  for (size_t n = 0; n < p_.feeders.size(); ++n) {
+    const Feeder& f = p_.feeders[n];
+    glm::ivec3 lo, hi;
+    feederBox(f, part_.frame(), lo, hi);
+    int64_t added = 0;
+    bool touches = false;
+    for (int32_t z = lo.z; z <= hi.z; ++z)
+      for (int32_t y = lo.y; y <= hi.y; ++y)
+        for (int32_t x = lo.x; x <= hi.x; ++x) {
+          if (!inFeeder(f, part_.frame(), glm::ivec3(x, y, z))) continue;
+          touches = touches || partNear(glm::ivec3(x, y, z));
+          uint8_t& k = kind_[size_t((x + off.x) + nx_ * ((y + off.y) + ny_ * (z + off.z)))];
+          if (k == kMould) {
+            k = kMetal | kFeeder;
+            ++added;
+          }
+        }
+    if (!touches) {
+      char where[96];
+      std::snprintf(where, sizeof where, "(%.4g, %.4g, %.4g)", f.base.x, f.base.y, f.base.z);
+      return makeError(ErrorCode::kInvalidArgument, "casting: feeder " + std::to_string(n + 1) + " at " + where +
+                                                        " does not touch the part, so it cannot feed it");
+    }
+    out_.feeders.push_back(FeederResult{f, feederModulus(f), double(added) * h3});
+  }
   return Ok{};
 }
 
@@ -552,15 +622,16 @@ void Solidifier::collect() {
   for (auto* v : {&t_, &h_, &c_, &d_, &niyama_}) *v = {};
   GridFrame box_frame = out_.frame;
   box_frame.origin -= glm::dvec3(result_lo_) * box_frame.voxel_size;
-  const double tolerance = std::max(3.0 * out_.time_step_s, 0.02 * out_.last_metal_s);
-  auto spots = casting_detail::findTimeSpots(box_, kind_, time_, box_frame, tolerance,
+  auto spots = casting_detail::findTimeSpots(box_, kind_, time_, box_frame, 3.0 * out_.time_step_s, 0.02,
                                              std::max<int64_t>(27, metal_cells_ / 500));
   const glm::ivec3 part_lo = result_lo_ + out_.part_offset;
-  for (auto& [spot, cell] : spots) {
+  for (casting_detail::TimeSpot& found : spots) {
+    CastingHotSpot& spot = found.spot;
+    const int64_t cell = found.cell;
     const glm::ivec3 v(int32_t(cell % nx_), int32_t(cell / nx_ % ny_), int32_t(cell / layer_));
     if (spot.in_feeder) {
       for (const FeederResult& f : out_.feeders)
-        if (inFeeder(f.feeder, box_frame, v)) {
+        if (inFeeder(f.feeder, part_.frame(), v - part_lo)) {
           spot.modulus = f.modulus;
           break;
         }
@@ -601,10 +672,16 @@ void Solidifier::verdict() {
 }  // namespace
 
 int64_t estimateCastingBytes(const VoxelGrid& part, const CastingParams& params) {
-  Solidifier s(part, params, {});
+  const ProgressFn none;
+  Solidifier s(part, params, none);
   if (!s.layout()) return 0;
-  // kind 1, T H C D time niyama 4 each, then the hot spots' order, parents and sets (8 each)
-  return s.cells() * (1 + 6 * 4 + 24);
+  // kind 1, T H C D time niyama 4 each, then the hot spots' order, parents and sets (8 each); the sweeps' scratch
+  return s.cells() * (1 + 6 * 4 + 24) + s.scratchBytes();
+}
+
+Status checkCasting(const VoxelGrid& part, const CastingParams& params) {
+  const ProgressFn none;
+  return Solidifier(part, params, none).layout();
 }
 
 Result<CastingResult> simulateCasting(const VoxelGrid& part, const CastingParams& params, const ProgressFn& progress) {

@@ -162,6 +162,28 @@ Status clearanceAt(AppState& s, const ActionArgs& a);    // A B: part numbers fr
 bool interferenceRunning(const AppState& s);
 void cancelInterferenceNow(AppState& s);
 
+// ---- Casting (casting_actions.cpp) ----
+void panelCasting(AppState& s);
+bool onCasting(const AppState& s);
+bool hasCasting(const AppState& s);  // a run for the model shown (perhaps with other settings)
+bool canSimulateCasting(const AppState& s);
+bool castingComputingNow(const AppState& s);
+bool isCastingPlaying(const AppState& s);
+Status castingAlloyAt(AppState& s, const ActionArgs& a);             // aluminium, a356, grey-iron, carbon-steel
+Status castingMouldAt(AppState& s, const ActionArgs& a);             // silica-sand, steel
+Status castingSuperheatAt(AppState& s, const ActionArgs& a);         // K above the liquidus, 0..1000
+Status castingMouldTemperatureAt(AppState& s, const ActionArgs& a);  // C, or "default" (the mould's own)
+Status castingFeederAt(AppState& s, const ActionArgs& a);            // X Y Z D H, model units
+void castingPlaceFeederMode(AppState& s);                            // the next click on the 3D view places one
+Status castingPlaceFeederAt(AppState& s, const ActionArgs& a);       // I J K: a surface voxel of the part
+Status castingDeleteFeederAt(AppState& s, const ActionArgs& a);      // N: the feeders list's row from 1
+void simulateCastingNow(AppState& s);
+void cancelCastingNow(AppState& s);
+Status castingFieldChoice(AppState& s, const ActionArgs& a);  // time, niyama or modulus
+Status castingTimeAt(AppState& s, const ActionArgs& a);       // seconds from pouring, or "end"
+void castingPlay(AppState& s);
+Status castingHotSpotAt(AppState& s, const ActionArgs& a);  // N: the hot spots list's row from 1
+
 // ---- Print (print_actions.cpp) ----
 void panelPrint(AppState& s);
 bool onPrint(const AppState& s);

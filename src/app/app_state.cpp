@@ -20,6 +20,8 @@ const char* panelName(Panel p) {
       return "parts";
     case Panel::kPrint:
       return "print";
+    case Panel::kCasting:
+      return "casting";
   }
   return "model";
 }

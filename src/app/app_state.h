@@ -15,6 +15,7 @@
 #include "app/autosave_state.h"
 #include "app/job.h"
 #include "app/parts_state.h"
+#include "app/casting_state.h"
 #include "app/print_state.h"
 #include "app/viewport_state.h"
 #include "app/settings.h"
@@ -112,8 +113,8 @@ struct Document {
 
 // ---- Params the widgets edit ----
 
-enum class Panel { kModel, kSection, kSkin, kXray, kMass, kThickness, kParts, kPrint };
-inline constexpr int kPanelCount = 8;
+enum class Panel { kModel, kSection, kSkin, kXray, kMass, kThickness, kParts, kPrint, kCasting };
+inline constexpr int kPanelCount = 9;
 const char* panelName(Panel p);  // "model", "section", ...
 
 struct ViewParams {
@@ -320,6 +321,7 @@ struct AppState {
   MeasureUi measure;
   PartsUi parts_ui;
   PrintUi print_ui;
+  CastingUi casting_ui;
   VoxelizeDialog voxelize;
   FileBrowser browser;
 
@@ -346,6 +348,7 @@ struct AppState {
   AsyncValue<uint64_t, std::shared_ptr<const ThicknessResult>> thickness;  // keyed by model_version
   AsyncValue<WallsKey, std::shared_ptr<const Walls>> thin_walls;           // walls, not edges (walls.h)
   AsyncValue<PrintKey, std::shared_ptr<const PrintResult>> print;          // the Print panel's (print.h)
+  AsyncValue<CastingKey, std::shared_ptr<const CastingOutcome>> casting;   // the Casting panel's (casting.h)
   Job<std::filesystem::path> volume_export_job;  // File > Export volume: the file being written (export_volume.h)
   // What the status line adds to "Wrote FILE" when that export is done, e.g. " (the half the cut-away keeps)".
   std::string volume_export_note;

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "app/casting_view.h"  // shownCasting
 #include "app/print.h"
 #include "app/thickness_view.h"  // shownThickness
 #include "app/ui.h"
@@ -55,8 +56,8 @@ void syncPrintView(AppState& state) {
     vp.dirty = true;
     if (r) {
       uploadOverhangs(state, *r);
-    } else if (!shownThickness(state)) {
-      vp.renderer->clearScalarVolume();  // the Thickness panel's own colouring is not this panel's to clear
+    } else if (!shownThickness(state) && !shownCasting(state)) {
+      vp.renderer->clearScalarVolume();  // the other panels' colours are not this panel's to clear
     }
   }
   if (key != ui.support_key) {

@@ -1,3 +1,4 @@
+#include "app/casting.h"
 #include "app/print.h"
 #include "app/script_runner.h"
 #include "app/script_step.h"
@@ -241,7 +242,7 @@ bool checkExpectedError(Harness& h, const Context& c, Step step) {
 
 bool settled(const AppState& s) {
   return !modelBusy(s) && !s.depth.busy() && !s.surface_stats.busy() && !s.mass.busy() && !s.xray_result.busy() &&
-         !s.thickness.busy() && !s.thin_walls.busy() && !s.print.busy() && !s.skin.pending_peel &&
+         !s.thickness.busy() && !s.thin_walls.busy() && !s.print.busy() && !s.casting.busy() && !s.skin.pending_peel &&
          !s.volume_export_job.active() && !s.parts_job.active() && !s.interference_job.active() &&
          !s.clearance_job.active() && !autosaveBusy(s);
 }
@@ -307,6 +308,14 @@ std::string describeState(const AppState& s, const Harness& h) {
       const glm::ivec3 v = t->hot_spots[0].voxel;
       out << "hot_spot_1 = " << v.x << " " << v.y << " " << v.z << "\n";
     }
+  }
+  out << "casting_feeders = " << s.casting_ui.chosen.feeders.size() << "\n";
+  out << "casting_placing_feeder = " << s.casting_ui.placing_feeder << "\n";
+  if (const CastingOutcome* c = currentCasting(s)) {
+    out << "casting_solidification_s = " << c->run.result.solidification_s << "\n";
+    out << "casting_sound = " << c->run.result.sound << "\n";
+    out << "casting_hot_spots = " << c->run.result.hot_spots.size() << "\n";
+    out << "casting_run_feeders = " << c->run.result.feeders.size() << "\n";
   }
   out << "print_direction = " << printDirectionName(s.print_ui.up) << "\n";
   out << "print_lay_face = " << s.print_ui.lay_face << "\n";

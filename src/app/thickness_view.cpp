@@ -9,6 +9,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
 
+#include "app/casting_view.h"  // shownCasting
 #include "app/print_view.h"
 #include "app/thickness.h"
 #include "app/ui.h"
@@ -113,7 +114,8 @@ void syncThicknessVolume(AppState& state) {
   state.viewport.dirty = true;
   ui.volume_problem.clear();
   if (!r) {
-    if (!shownPrint(state)) state.viewport.renderer->clearScalarVolume();  // the Print panel's overhangs are its own
+    // the Print panel's overhangs and the Casting panel's colours are theirs
+    if (!shownPrint(state) && !shownCasting(state)) state.viewport.renderer->clearScalarVolume();
     return;
   }
   // 0: no value (empty, or thinner than the minimum wall but in no wall: an edge, in the model's colour);

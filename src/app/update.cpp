@@ -13,6 +13,7 @@
 #include "app/messages.h"
 #include "app/model_jobs.h"
 #include "app/skin.h"
+#include "app/casting.h"
 #include "app/print.h"
 #include "app/thickness.h"
 
@@ -85,6 +86,8 @@ void updateDocument(AppState& state) {
   requestThickness(state);
   if (state.panel == Panel::kThickness) currentThinWalls(state);  // the walls under the minimum wall, asked for
   requestPrint(state);
+  requestCasting(state);
+  advanceCastingPlay(state, state.frame_time_s);
   pollVolumeExport(state);
   pollFullSection(state);
   if (!state.doc.model) return;

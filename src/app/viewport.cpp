@@ -13,6 +13,7 @@
 #include "app/operations.h"
 #include "app/parts.h"
 #include "app/parts_view.h"
+#include "app/casting_view.h"
 #include "app/print.h"
 #include "app/print_view.h"
 #include "app/ui.h"
@@ -93,6 +94,7 @@ render::DrawParams drawParams(const AppState& state, bool coarse) {
   }
   thicknessDrawParams(state, p);
   printDrawParams(state, p);
+  castingDrawParams(state, p);
   return p;
 }
 
@@ -137,6 +139,9 @@ std::vector<double> signature(const AppState& state, int w, int h, bool coarse) 
           double(state.thickness_ui.volume_key),
           double(state.print_ui.volume_key),
           double(state.print_ui.support_key),
+          double(state.casting_ui.volume_key),
+          state.casting_ui.volume_sig.empty() ? 0.0 : state.casting_ui.volume_sig[0],
+          state.casting_ui.volume_sig.empty() ? 0.0 : state.casting_ui.volume_sig[1],
           double(p.scalar_colour),
           double(p.scalar_threshold)};
 }
@@ -250,6 +255,12 @@ bool handleMouse(AppState& state, ImVec2 pos, int w, int h, double aspect) {
     const bool click = ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f;
     if (click && io.KeyCtrl) {
       if (const auto v = voxelUnderMouse(state, pos, w, h, aspect)) addMeasurePick(state, *v);
+    } else if (click && state.panel == Panel::kCasting && state.casting_ui.placing_feeder) {
+      // the Casting panel's "Place a feeder": on the part's top above the voxel clicked
+      if (const auto v = voxelUnderMouse(state, pos, w, h, aspect)) {
+        dispatchValues(state, ActionId::kCastingPlaceFeeder,
+                       {std::to_string(v->x), std::to_string(v->y), std::to_string(v->z)});
+      }
     } else if (click && state.panel == Panel::kPrint && state.print_ui.lay_face) {
       // the Print panel's "Lay a face on the plate": the face clicked goes down
       if (const auto v = voxelUnderMouse(state, pos, w, h, aspect)) {
@@ -303,6 +314,7 @@ void syncRenderers(AppState& state) {
   }
   syncThicknessVolume(state);
   syncPrintView(state);
+  syncCastingView(state);
 }
 
 Status initViewport(AppState& state) {
@@ -390,7 +402,8 @@ void drawViewport(AppState& state) {
     dl->AddText(ImVec2(pos.x + 8.0f, pos.y + float(h) - ImGui::GetFontSize() - 6.0f), IM_COL32(200, 200, 200, 255),
                 info);
     const float legend_bottom =
-        std::max(drawThicknessOverlay(state, dl, pos, w, h, aspect), drawPrintOverlay(state, dl, pos, w, h, aspect));
+        std::max({drawThicknessOverlay(state, dl, pos, w, h, aspect), drawPrintOverlay(state, dl, pos, w, h, aspect),
+                  drawCastingOverlay(state, dl, pos, w, h, aspect)});
     drawMeasureOverlay(state, dl, pos, w, h, aspect, legend_bottom + 4.0f);
     drawClearanceOverlay(state, dl, pos, w, h, aspect);
     drawAxisTriad(state.view.camera, ImVec2(pos.x + 40.0f, pos.y + float(h) - 60.0f), 28.0f);

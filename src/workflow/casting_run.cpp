@@ -26,14 +26,20 @@ Result<CastingRun> runCasting(const VoxelGrid& part, CastingParams params, const
                          "are in (--units mm|cm|m|in)");
   }
   params.modulus = nullptr;
+  if (Status s = checkCasting(part, params); !s) return s.error();
   const uint64_t limit = memory_limit_bytes ? memory_limit_bytes : defaultMemoryLimitBytes();
-  // The simulation's arrays, and the modulus's distance, thickness and labels (about 16 bytes a voxel of the part).
-  const uint64_t need = uint64_t(estimateCastingBytes(part, params)) + uint64_t(part.dims().count()) * 16;
-  if (limit && need > limit) {
-    return makeError(ErrorCode::kLimit, name + ": the casting simulation needs about " + formatBytes(need) +
-                                            ", more than the " + formatBytes(limit) +
-                                            " this machine allows; use fewer voxels (--res)");
-  }
+  // The simulation's arrays, and the modulus's distance, thickness and labels (about 16 bytes a voxel of the part):
+  // estimated from the part's V/A first, and again from its real modulus before the simulation starts.
+  const auto fits = [&](const CastingParams& p) -> Status {
+    const uint64_t need = uint64_t(estimateCastingBytes(part, p)) + uint64_t(part.dims().count()) * 16;
+    if (limit && need > limit) {
+      return makeError(ErrorCode::kLimit, name + ": the casting simulation needs about " + formatBytes(need) +
+                                              ", more than the " + formatBytes(limit) +
+                                              " this machine allows; use fewer voxels (--res)");
+    }
+    return Ok{};
+  };
+  if (Status s = fits(params); !s) return s.error();
   const auto stage = [&progress](CastingStage s) {
     if (!progress) return ProgressFn();
     return ProgressFn([&progress, s](double f) { return progress(s, f); });
@@ -57,6 +63,7 @@ Result<CastingRun> runCasting(const VoxelGrid& part, CastingParams params, const
   for (const float v : run.modulus.values) run.modulus_max = std::max(run.modulus_max, double(v));
   run.modulus_s = nowSeconds() - t0;
   params.modulus = &run.modulus;
+  if (Status s = fits(params); !s) return s.error();
   auto result = simulateCasting(part, params, stage(CastingStage::kSimulate));
   if (!result) return result.error();
   run.result = std::move(result).value();

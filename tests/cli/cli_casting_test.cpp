@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -85,14 +87,27 @@ TEST(CliCasting, refusesAPartWithoutUnitsAndBadOptions) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("no length units"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("cube.stl"), std::string::npos) << r.err;
-  r = runVoxmod({"casting", stl, "--units", "mm", "--alloy", "bronze"});
+  const auto casting = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"casting", stl, "--units", "mm", "--res", "20"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return runVoxmod(args);
+  };
+  r = casting({"--alloy", "bronze"});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("a356"), std::string::npos) << r.err;
-  EXPECT_EQ(runVoxmod({"casting", stl, "--units", "mm", "--mould", "clay"}).exit_code, 1);
-  EXPECT_EQ(runVoxmod({"casting", stl, "--units", "mm", "--feeder", "cylinder:1,2,3"}).exit_code, 1);
-  EXPECT_EQ(runVoxmod({"casting", stl, "--units", "mm", "--feeder", "cylinder:20,20,40,0.01,0.01"}).exit_code, 1);
-  EXPECT_EQ(runVoxmod({"casting", stl, "--units", "mm", "-o", (dir / "t.stl").string()}).exit_code, 1);
-  EXPECT_EQ(runVoxmod({"casting", stl, "--units", "mm", "--mould-temperature", "900"}).exit_code, 1);
+  EXPECT_EQ(casting({"--mould", "clay"}).exit_code, 1);
+  EXPECT_EQ(casting({"--feeder", "cylinder:1,2,3"}).exit_code, 1);
+  EXPECT_EQ(casting({"--feeder", "cylinder:20,20,40,0.01,0.01"}).exit_code, 1);  // smaller than a voxel
+  EXPECT_EQ(casting({"--feeder", "cylinder:1e10,0,0,10,10"}).exit_code, 1);      // far off
+  r = casting({"--feeder", "cylinder:20,20,60,10,10"});                          // floating above the cube
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("does not touch the part"), std::string::npos) << r.err;
+  EXPECT_EQ(casting({"-o", (dir / "t.stl").string()}).exit_code, 1);
+  EXPECT_EQ(casting({"--mould-temperature", "900"}).exit_code, 1);
+  EXPECT_EQ(casting({"--mould-temperature", "-500"}).exit_code, 1);
+  r = casting({"--memory-limit", "1"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("needs about"), std::string::npos) << r.err;
 }
 
 }  // namespace

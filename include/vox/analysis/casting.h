@@ -51,14 +51,16 @@ std::string mouldNames();
 struct Feeder {
   glm::dvec3 base{0.0};
   double diameter = 0.0, height = 0.0;
+  bool operator==(const Feeder&) const = default;
 };
 // The feeder's Chvorinov modulus V/A, its foot (where it stands on the part) not counted as cooling surface:
 // D H / (4 H + D).
 double feederModulus(const Feeder& feeder);
 // "cylinder:X,Y,Z,D,H" (model units), D and H positive.
 Result<Feeder> parseFeeder(std::string_view text);
-// The cylinder's voxels on the lattice of `frame` (any index, inside the grid or not), inclusive index box.
-void feederBox(const Feeder& feeder, const GridFrame& frame, glm::ivec3& lo, glm::ivec3& hi);
+// The cylinder's voxels on the lattice of `frame` (any index, inside the grid or not), inclusive index box; false
+// when it lies too far out (2^28 voxels) for indices to hold.
+bool feederBox(const Feeder& feeder, const GridFrame& frame, glm::ivec3& lo, glm::ivec3& hi);
 bool inFeeder(const Feeder& feeder, const GridFrame& frame, glm::ivec3 voxel);
 
 // ---- The simulation ----
@@ -75,7 +77,7 @@ struct CastingParams {
   // the estimated time (at least two voxels).
   double envelope = 0.0;
   // The geometric modulus of the part (computeModulusField), over the part's grid, or null: then the hot spots'
-  // moduli are 0 and the time estimate uses feeders and the part's inscribed size.
+  // moduli are 0 and the time estimate uses the feeders and the part's V/A from its voxels' faces.
   const ScalarField* modulus = nullptr;
   // Planes of symmetry: on these axes the box ends at the metal's own extent, with no mould beyond, its faces
   // insulated: a part cut along a plane of symmetry simulates as the whole (and a slab with x and y set is a plate
@@ -130,8 +132,11 @@ struct CastingResult {
 // Bytes the simulation of `part` with `params` would hold at its peak (checked against available memory by callers).
 int64_t estimateCastingBytes(const VoxelGrid& part, const CastingParams& params);
 
-// Fails with kInvalidArgument for an empty part, bad materials or feeders, kLimit for a box over max_cells, and
-// kCancelled when progress returns false (nothing is kept).
+// The checks simulateCasting makes before any work (materials, temperatures, units, feeders, the box's size).
+Status checkCasting(const VoxelGrid& part, const CastingParams& params);
+
+// Fails with kInvalidArgument for an empty part, bad materials or feeders (one that touches no voxel of the part
+// included), kLimit for a box over max_cells, and kCancelled when progress returns false (nothing is kept).
 Result<CastingResult> simulateCasting(const VoxelGrid& part, const CastingParams& params,
                                       const ProgressFn& progress = {});
 

@@ -116,7 +116,7 @@ Result<std::vector<HotSpot>> findHotSpots(const DistanceField& distance, const H
 // thickness where `radius` is given (Thickness::radius): a thin fin on a thick boss reads as the fin it is, not as the
 // boss. Plates read half their thickness, bars a quarter of their side, cubes and spheres a sixth of their side or
 // diameter (docs/accuracy.md, "Hot spots"). Memory: findHotSpots' labels kept to the end (2 or 4 bytes per voxel of
-// the box) and the field, 4 bytes per voxel of the grid.
+// the box), the field over the box and then over the grid (4 bytes per voxel of each).
 Result<ScalarField> computeModulusField(const DistanceField& distance, const DistanceField* radius,
                                         const HotSpotParams& params = {}, const ProgressFn& progress = {});
 

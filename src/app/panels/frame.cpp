@@ -21,10 +21,11 @@ struct PanelEntry {
   void (*draw)(AppState&);
 };
 constexpr PanelEntry kPanels[] = {
-    {Panel::kModel, "Model", drawModelPanel}, {Panel::kSection, "Section", drawSectionPanel},
-    {Panel::kSkin, "Skin", drawSkinPanel},    {Panel::kXray, "X-ray", drawXrayPanel},
-    {Panel::kMass, "Mass", drawMassPanel},    {Panel::kThickness, "Thickness", drawThicknessPanel},
-    {Panel::kParts, "Parts", drawPartsPanel}, {Panel::kPrint, "Print", drawPrintPanel},
+    {Panel::kModel, "Model", drawModelPanel},       {Panel::kSection, "Section", drawSectionPanel},
+    {Panel::kSkin, "Skin", drawSkinPanel},          {Panel::kXray, "X-ray", drawXrayPanel},
+    {Panel::kMass, "Mass", drawMassPanel},          {Panel::kThickness, "Thickness", drawThicknessPanel},
+    {Panel::kParts, "Parts", drawPartsPanel},       {Panel::kPrint, "Print", drawPrintPanel},
+    {Panel::kCasting, "Casting", drawCastingPanel},
 };
 
 void drawSidebar(AppState& state, ImVec2 pos, ImVec2 size) {
@@ -83,6 +84,8 @@ void drawFrame(AppState& state) {
       drawSectionImage(state);
     } else if (state.panel == Panel::kThickness) {
       drawThicknessImage(state);
+    } else if (state.panel == Panel::kCasting) {
+      drawCastingImage(state);
     } else {
       drawXrayImage(state);
     }

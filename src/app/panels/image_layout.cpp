@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "app/casting.h"
 #include "app/print.h"
 #include "app/operations.h"
 #include "app/panels/panels.h"
@@ -29,8 +30,10 @@ ImageLayout layoutImage(AppState& state, float w, float h) {
   const bool parts = state.panel == Panel::kParts && state.parts_ui.pair >= 0;
   // The Print panel shows the section through the trapped cavity clicked in its list.
   const bool print = state.panel == Panel::kPrint && selectedCavity(state) != nullptr;
+  // The Casting panel shows the section coloured by the field it shows, once it has a run.
+  const bool casting = state.panel == Panel::kCasting && currentCasting(state) != nullptr;
   if (state.model.empty() ||
-      (state.panel != Panel::kSection && state.panel != Panel::kXray && !thickness && !parts && !print)) {
+      (state.panel != Panel::kSection && state.panel != Panel::kXray && !thickness && !parts && !print && !casting)) {
     return l;
   }
   const float text = 3.0f * ImGui::GetTextLineHeightWithSpacing();  // title and read-out lines around the image

@@ -28,13 +28,15 @@ void drawSkinPanel(AppState& state);
 void drawXrayPanel(AppState& state);
 void drawMassPanel(AppState& state);
 void drawThicknessPanel(AppState& state);
-void drawPartsPanel(AppState& state);  // parts of a scene, Booleans, interference (parts_panel.cpp)
-void drawPrintPanel(AppState& state);  // overhangs, support, trapped cavities, the best way up (print_panel.cpp)
+void drawPartsPanel(AppState& state);    // parts of a scene, Booleans, interference (parts_panel.cpp)
+void drawPrintPanel(AppState& state);    // overhangs, support, trapped cavities, the best way up (print_panel.cpp)
+void drawCastingPanel(AppState& state);  // alloy, mould, feeders, the run, hot spots, verdict (casting_panel.cpp)
 
 // The 2D images beside the 3D view (Section and X-ray panels).
 void drawSectionImage(AppState& state);
 void drawXrayImage(AppState& state);
 void drawThicknessImage(AppState& state);  // the section coloured by thickness (Thickness panel)
+void drawCastingImage(AppState& state);  // the section coloured by freezing time, Niyama or modulus (casting_image.cpp)
 // Room the X-ray image needs besides its map (title, colour bar and labels, read-out), in screen pixels.
 ImVec2 xrayLegendSize();
 

@@ -1,0 +1,228 @@
+#include "app/casting.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <utility>
+
+#include <glm/geometric.hpp>
+
+#include "app/document.h"
+
+namespace vox::app {
+
+CastingKey wantedCastingKey(const AppState& state) {
+  CastingKey key = state.casting_ui.chosen;
+  key.model_version = state.model_version;
+  return key;
+}
+
+void requestCasting(AppState& state) {
+  state.casting.poll();
+  CastingUi& ui = state.casting_ui;
+  if (!ui.asked || state.model.empty() || ui.asked_key.model_version != state.model_version) return;
+  const CastingKey key = ui.asked_key;
+  if (!state.casting.wants(key)) return;
+  ui.asked = false;  // once: a failure or a cancel is not run again until asked
+  CastingParams params;
+  const Alloy* alloy = findAlloy(key.alloy);
+  const MouldMaterial* mould = findMould(key.mould);
+  if (!alloy || !mould) return;
+  params.alloy = *alloy;
+  params.mould = *mould;
+  if (key.mould_temperature_c > -273.0) params.mould.temperature_c = key.mould_temperature_c;
+  params.superheat_k = key.superheat_k;
+  params.feeders = key.feeders;
+  VoxelGrid grid = state.model;
+  const uint64_t id = takeId(state);
+  state.casting.request(key, "Simulating the casting", [grid, id, key, params](const ProgressFn& progress) {
+    using R = Result<std::shared_ptr<const CastingOutcome>>;
+    // the modulus 0..10% of the bar, the simulation the rest
+    const workflow::CastingProgress bar = [&progress](workflow::CastingStage stage, double f) {
+      return !progress || progress(stage == workflow::CastingStage::kModulus ? 0.1 * f : 0.1 + 0.9 * f);
+    };
+    auto run = workflow::runCasting(grid, params, bar);
+    if (!run) return R(run.error());
+    auto out = std::make_shared<CastingOutcome>();
+    out->id = id;
+    out->key = key;
+    out->run = std::move(run).value();
+    out->seconds = out->run.modulus_s + out->run.result.simulate_s;
+    out->niyama_scale = niyamaScale(out->run.result.niyama);
+    return R(std::shared_ptr<const CastingOutcome>(std::move(out)));
+  });
+}
+
+const CastingOutcome* currentCasting(const AppState& state) {
+  const auto* held = state.casting.held();
+  if (!held || !*held || (*held)->key.model_version != state.model_version) return nullptr;
+  return held->get();
+}
+
+bool castingStale(const AppState& state) {
+  const CastingOutcome* r = currentCasting(state);
+  return r && !(r->key == wantedCastingKey(state));
+}
+
+bool castingComputing(const AppState& state) { return state.casting.busy(); }
+
+const Error* castingError(const AppState& state) { return state.casting.error(state.casting_ui.asked_key); }
+
+void simulateCasting(AppState& state) {
+  CastingUi& ui = state.casting_ui;
+  ui.asked_key = wantedCastingKey(state);
+  ui.asked = true;
+  if (const CastingOutcome* r = currentCasting(state); r && r->key == ui.asked_key) ui.asked = false;
+}
+
+void cancelCasting(AppState& state) {
+  if (!state.casting.busy()) return;
+  // the last result stays shown (the run under way is abandoned): the cancelled run leaves nothing
+  const auto* held = state.casting.held();
+  if (held && *held) {
+    state.casting.rekey((*held)->key);
+  } else {
+    state.casting.clear();
+  }
+  state.casting_ui.asked = false;
+}
+
+Status setCastingAlloy(AppState& state, const std::string& name) {
+  if (!findAlloy(name))
+    return makeError(ErrorCode::kInvalidArgument, "unknown alloy '" + name + "'; known: " + alloyNames());
+  state.casting_ui.chosen.alloy = name;
+  return Ok{};
+}
+
+Status setCastingMould(AppState& state, const std::string& name) {
+  if (!findMould(name))
+    return makeError(ErrorCode::kInvalidArgument, "unknown mould '" + name + "'; known: " + mouldNames());
+  state.casting_ui.chosen.mould = name;
+  return Ok{};
+}
+
+Status placeFeederAt(AppState& state, glm::ivec3 voxel) {
+  const VoxelGrid& g = state.model;
+  if (!g.inBounds(voxel.x, voxel.y, voxel.z) || !g.get(voxel.x, voxel.y, voxel.z)) {
+    return makeError(ErrorCode::kInvalidArgument, "place-feeder: no part at that voxel");
+  }
+  const CastingOutcome* r = currentCasting(state);
+  if (!r) {
+    return makeError(ErrorCode::kInvalidArgument,
+                     "place-feeder: simulate first, so that the feeder can be sized for the hot spot it should feed");
+  }
+  const glm::dvec3 at = g.frame().voxelCentre(voxel.x, voxel.y, voxel.z);
+  const CastingHotSpot* nearest = nullptr;
+  double best = std::numeric_limits<double>::infinity();
+  for (const CastingHotSpot& s : r->run.result.hot_spots) {
+    if (s.in_feeder || !s.isolated || s.modulus <= 0.0) continue;
+    const double d = glm::distance(s.centre, at);
+    if (d < best) {
+      best = d;
+      nearest = &s;
+    }
+  }
+  const double m = nearest ? nearest->modulus : r->run.modulus_max;
+  if (!(m > 0.0)) return makeError(ErrorCode::kInvalidArgument, "place-feeder: the part has no modulus to feed");
+  Feeder f;
+  f.diameter = 5.6 * m;
+  f.height = 1.5 * f.diameter;
+  // standing on the top of the column of part above the voxel clicked
+  int32_t top = voxel.z;
+  while (top + 1 < g.nz() && g.get(voxel.x, voxel.y, top + 1)) ++top;
+  f.base = glm::dvec3(at.x, at.y, g.frame().origin.z + double(top + 1) * g.voxelSize());
+  state.casting_ui.chosen.feeders.push_back(f);
+  state.casting_ui.placing_feeder = false;
+  return Ok{};
+}
+
+const CastingHotSpot* selectedCastingSpot(const AppState& state) {
+  const CastingOutcome* r = currentCasting(state);
+  const CastingUi& ui = state.casting_ui;
+  if (!r || ui.selected_result != r->id || ui.selected_spot < 0 ||
+      size_t(ui.selected_spot) >= r->run.result.hot_spots.size())
+    return nullptr;
+  return &r->run.result.hot_spots[size_t(ui.selected_spot)];
+}
+
+float castingFieldAt(const CastingOutcome& r, CastingField field, glm::ivec3 v) {
+  const CastingResult& c = r.run.result;
+  if (field == CastingField::kModulus) {
+    const ScalarField& m = r.run.modulus;
+    if (v.x < 0 || v.y < 0 || v.z < 0 || v.x >= m.dims.nx || v.y >= m.dims.ny || v.z >= m.dims.nz) return 0.0f;
+    return m.at(v.x, v.y, v.z);
+  }
+  const glm::ivec3 q = v + c.part_offset;
+  if (q.x < 0 || q.y < 0 || q.z < 0 || q.x >= c.dims.nx || q.y >= c.dims.ny || q.z >= c.dims.nz) return 0.0f;
+  return field == CastingField::kTime ? c.time.at(q.x, q.y, q.z) : c.niyama.at(q.x, q.y, q.z);
+}
+
+double castingFieldMax(const CastingOutcome& r, CastingField field) {
+  if (field == CastingField::kTime) return r.run.result.last_metal_s;
+  if (field == CastingField::kModulus) return r.run.modulus_max;
+  return r.niyama_scale;
+}
+
+double niyamaScale(const ScalarField& niyama) {
+  std::vector<float> v;
+  for (const float x : niyama.values)
+    if (x > 0.0f) v.push_back(x);
+  if (v.empty()) return 1.0;
+  const size_t k = v.size() * 95 / 100;
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
+  return std::max(double(v[k]), 1e-6);
+}
+
+double castingTimeShown(const AppState& state, const CastingOutcome& r) {
+  const double end = r.run.result.last_metal_s;
+  return state.casting_ui.time_shown < 0.0 ? end : std::min(state.casting_ui.time_shown, end);
+}
+
+uint8_t castingColourValue(const CastingOutcome& r, CastingField field, double front_s, glm::ivec3 voxel) {
+  const double max = castingFieldMax(r, field);
+  const float t = castingFieldAt(r, CastingField::kTime, voxel);
+  if (t <= 0.0f) return 0;
+  if (field == CastingField::kTime && t > front_s) return 1;  // still liquid at the front
+  const double v = field == CastingField::kTime ? t : castingFieldAt(r, field, voxel);
+  return uint8_t(2 + std::lround(253.0 * std::clamp(v / std::max(max, 1e-30), 0.0, 1.0)));
+}
+
+const char* castingFieldName(CastingField field) {
+  switch (field) {
+    case CastingField::kNiyama:
+      return "Niyama criterion";
+    case CastingField::kModulus:
+      return "geometric modulus";
+    case CastingField::kTime:
+      break;
+  }
+  return "solidification time";
+}
+
+std::string castingFieldUnit(CastingField field, const std::string& units) {
+  if (field == CastingField::kTime) return "s";
+  if (field == CastingField::kNiyama) return "(K s)^0.5/mm";
+  return units.empty() || units == "model" ? "model units" : units;
+}
+
+void advanceCastingPlay(AppState& state, double frame_s) {
+  CastingUi& ui = state.casting_ui;
+  const CastingOutcome* r = currentCasting(state);
+  if (!ui.playing || !r) {
+    ui.playing = false;
+    return;
+  }
+  const double end = r->run.result.last_metal_s;
+  const double now = ui.time_shown < 0.0 || ui.time_shown >= end ? 0.0 : ui.time_shown;
+  const double next = now + end * std::clamp(frame_s, 0.0, 0.2) / 8.0;
+  if (next >= end) {
+    ui.time_shown = -1.0;
+    ui.playing = false;
+  } else {
+    ui.time_shown = next;
+  }
+  state.redraw_frames = std::max(state.redraw_frames, 2);
+}
+
+}  // namespace vox::app
