@@ -554,11 +554,20 @@ int64_t Solidifier::update(double t, double dt) {
           if (old_h >= 0.0 && new_h < 0.0) time_[size_t(i)] = float(t + dt * old_h / (old_h - new_h));
           if (old_h >= metal_.h_crit && new_h < metal_.h_crit) {
             const auto at = [&](int64_t q) { return double(t_[size_t(q)]); };
-            const double gx = (x + 1 < nx_ ? at(i + 1) : at(i)) - (x > 0 ? at(i - 1) : at(i));
-            const double gy = (y + 1 < ny_ ? at(i + nx_) : at(i)) - (y > 0 ? at(i - nx_) : at(i));
-            const double gz = (z + 1 < nz_ ? at(i + layer_) : at(i)) - (z > 0 ? at(i - layer_) : at(i));
-            const double gradient = std::sqrt(gx * gx + gy * gy + gz * gz) / (2.0 * h_m) / 1000.0;  // K / mm
-            const double rate = std::max((at(i) - new_t) / dt, 1e-6);                               // K / s
+            // the gradient within the metal: central where both neighbours along an axis are metal, one-sided
+            // where one is (the mould's temperature jumps at the wall), none where neither is
+            const auto axis = [&](bool has_lo, bool has_hi, int64_t step) {
+              const bool lo = has_lo && (kind_[size_t(i - step)] & kMetal),
+                         hi = has_hi && (kind_[size_t(i + step)] & kMetal);
+              if (lo && hi) return (at(i + step) - at(i - step)) / 2.0;
+              if (hi) return at(i + step) - at(i);
+              if (lo) return at(i) - at(i - step);
+              return 0.0;
+            };
+            const double gx = axis(x > 0, x + 1 < nx_, 1), gy = axis(y > 0, y + 1 < ny_, nx_),
+                         gz = axis(z > 0, z + 1 < nz_, layer_);
+            const double gradient = std::sqrt(gx * gx + gy * gy + gz * gz) / h_m / 1000.0;  // K / mm
+            const double rate = std::max((at(i) - new_t) / dt, 1e-6);                       // K / s
             niyama_[size_t(i)] = float(gradient / std::sqrt(rate));
           }
         }

@@ -50,6 +50,10 @@ void requestCasting(AppState& state) {
     out->run = std::move(run).value();
     out->seconds = out->run.modulus_s + out->run.result.simulate_s;
     out->niyama_scale = niyamaScale(out->run.result.niyama);
+    float first = 0.0f;
+    for (const float t : out->run.result.time.values)
+      if (t > 0.0f && (first == 0.0f || t < first)) first = t;
+    out->first_solid_s = first;
     return R(std::shared_ptr<const CastingOutcome>(std::move(out)));
   });
 }
@@ -184,8 +188,10 @@ uint8_t castingColourValue(const CastingOutcome& r, CastingField field, double f
   const float t = castingFieldAt(r, CastingField::kTime, voxel);
   if (t <= 0.0f) return 0;
   if (field == CastingField::kTime && t > front_s) return 1;  // still liquid at the front
+  // times from the first voxel solid to the last; the other fields from 0
+  const double from = field == CastingField::kTime ? r.first_solid_s : 0.0;
   const double v = field == CastingField::kTime ? t : castingFieldAt(r, field, voxel);
-  return uint8_t(2 + std::lround(253.0 * std::clamp(v / std::max(max, 1e-30), 0.0, 1.0)));
+  return uint8_t(2 + std::lround(253.0 * std::clamp((v - from) / std::max(max - from, 1e-30), 0.0, 1.0)));
 }
 
 const char* castingFieldName(CastingField field) {
@@ -213,9 +219,9 @@ void advanceCastingPlay(AppState& state, double frame_s) {
     ui.playing = false;
     return;
   }
-  const double end = r->run.result.last_metal_s;
-  const double now = ui.time_shown < 0.0 || ui.time_shown >= end ? 0.0 : ui.time_shown;
-  const double next = now + end * std::clamp(frame_s, 0.0, 0.2) / 8.0;
+  const double end = r->run.result.last_metal_s, start = r->first_solid_s;
+  const double now = ui.time_shown < 0.0 || ui.time_shown >= end ? start : std::max(ui.time_shown, start);
+  const double next = now + (end - start) * std::clamp(frame_s, 0.0, 0.2) / 8.0;
   if (next >= end) {
     ui.time_shown = -1.0;
     ui.playing = false;

@@ -27,7 +27,8 @@ struct CastingOutcome {
   CastingKey key;
   workflow::CastingRun run;
   double seconds = 0.0;
-  double niyama_scale = 1.0;  // the Niyama colours' top: the 95th percentile of the metal's (a pure metal's runs high)
+  double first_solid_s = 0.0;  // the earliest a metal voxel is solid: where the time colours and the slider start
+  double niyama_scale = 1.0;   // the Niyama colours' top: the 95th percentile of the metal's (a pure metal's runs high)
 };
 
 // What the views colour the metal by.

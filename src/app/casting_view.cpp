@@ -125,9 +125,10 @@ float drawCastingOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, int
   const CastingField field = state.casting_ui.field;
   const std::string units = state.model.frame().units;
   if (field == CastingField::kTime) {
-    line(kLegendColour, "Solidification time: dark early, yellow last (" + seconds(c.last_metal_s) + ")");
+    line(kLegendColour,
+         "Solidification time: dark " + seconds(r->first_solid_s) + ", yellow " + seconds(c.last_metal_s) + " (last)");
     const double front = castingTimeShown(state, *r);
-    if (front < c.last_metal_s) line(kIsolatedColour, "red: still liquid at " + seconds(front));
+    if (front < c.last_metal_s) line(kIsolatedColour, "red: not yet solid at " + seconds(front));
   } else {
     char text[160];
     std::snprintf(text, sizeof text, "%s: dark 0, yellow %.3g %s", castingFieldName(field), castingFieldMax(*r, field),

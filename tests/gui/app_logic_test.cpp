@@ -17,6 +17,7 @@
 #include "app/job.h"
 #include "app/measure.h"
 #include "app/operations.h"
+#include "app/casting.h"
 #include "app/print.h"
 #include "app/script.h"
 #include "app/script_runner.h"
@@ -1156,6 +1157,73 @@ TEST(AppScriptRun, thePrintPanelFindsTheVoidAndLaysAFaceOnThePlate) {
   EXPECT_TRUE(runScript(state, hx, "expect-error HTML page\nexport-report " + (dir / "r.txt").string() + "\n"))
       << hx.last_error;
   EXPECT_FALSE(std::filesystem::exists(dir / "r.txt"));
+}
+
+// The Casting panel's actions on the same block: refused without units (the document unchanged); once in mm,
+// simulated, not sound without a feeder; a feeder placed on its top, simulated again with it; bad settings refused,
+// leaving the ones chosen; a cancelled run leaves the last result shown.
+TEST(AppScriptRun, theCastingPanelSimulatesAndPlacesAFeeder) {
+  AppState state;
+  startOpen(state, test::sourceDir() / "tests/data/mesh/sealed_void.stl");
+  ASSERT_TRUE(pump(state, [&] { return state.doc.mesh != nullptr; }));
+  startVoxelize(state, VoxelizeParams{.resolution = 40});
+  ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
+  const uint64_t version = state.model_version;
+  Harness h;
+  ASSERT_TRUE(runScript(state, h, "panel-casting\nsimulate-casting\n")) << h.last_error;
+  ASSERT_TRUE(pump(state, [&] {
+    requestCasting(state);
+    return !state.casting.busy() && castingError(state) != nullptr;
+  }));
+  EXPECT_NE(castingError(state)->message.find("no length units"), std::string::npos);
+  EXPECT_EQ(state.model_version, version);
+
+  setModelUnits(state, "mm");
+  Harness hs;
+  ASSERT_TRUE(runScript(state, hs, "casting-alloy aluminium\nsimulate-casting\n")) << hs.last_error;
+  ASSERT_TRUE(pump(state, [&] {
+    requestCasting(state);
+    return currentCasting(state) != nullptr && !state.casting.busy();
+  }));
+  const CastingOutcome* r = currentCasting(state);
+  EXPECT_FALSE(r->run.result.sound);
+  ASSERT_FALSE(r->run.result.hot_spots.empty());
+  EXPECT_EQ(r->key.alloy, "aluminium");
+
+  Harness hf;
+  ASSERT_TRUE(runScript(state, hf, "casting-place-feeder 20 20 23\ncasting-hot-spot 1\n")) << hf.last_error;
+  ASSERT_EQ(state.casting_ui.chosen.feeders.size(), 1u);
+  const Feeder& f = state.casting_ui.chosen.feeders[0];
+  EXPECT_NEAR(f.base.z, 12.0, 1e-9);  // on the block's top
+  EXPECT_NEAR(feederModulus(f), 1.2 * r->run.result.hot_spots[0].modulus, 1e-6);
+  EXPECT_TRUE(castingStale(state));
+  ASSERT_NE(selectedCastingSpot(state), nullptr);
+
+  Harness hb;
+  EXPECT_TRUE(runScript(state, hb,
+                        "expect-error unknown alloy\ncasting-alloy bronze\nexpect-error 0 to 1000\n"
+                        "casting-superheat -5\nexpect-error time, niyama or modulus\ncasting-field heat\n"))
+      << hb.last_error;
+  EXPECT_EQ(state.casting_ui.chosen.alloy, "aluminium");
+  EXPECT_EQ(state.casting_ui.chosen.superheat_k, 50.0);
+
+  simulateCasting(state);
+  requestCasting(state);
+  ASSERT_TRUE(state.casting.busy());
+  cancelCasting(state);
+  EXPECT_FALSE(state.casting.busy());
+  EXPECT_EQ(currentCasting(state), r);  // the last result stays
+  Harness hr;
+  ASSERT_TRUE(runScript(state, hr, "simulate-casting\n")) << hr.last_error;
+  ASSERT_TRUE(pump(state, [&] {
+    requestCasting(state);
+    return currentCasting(state) != nullptr && !castingStale(state) && !state.casting.busy();
+  }));
+  EXPECT_EQ(currentCasting(state)->run.result.feeders.size(), 1u);
+  EXPECT_GT(currentCasting(state)->run.result.yield, 0.5);
+  Harness hd;
+  ASSERT_TRUE(runScript(state, hd, "casting-delete-feeder 1\ncasting-time 1\ncasting-field niyama\n")) << hd.last_error;
+  EXPECT_TRUE(state.casting_ui.chosen.feeders.empty());
 }
 
 }  // namespace

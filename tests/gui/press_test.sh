@@ -8,6 +8,7 @@
 #   - a move no grid could hold is refused with a message and changes nothing;
 #   - the Print panel finds a sealed void, turns the build direction, searches the directions and waits for a face
 #     to be clicked when its buttons are pressed;
+#   - the Casting panel asks for units, simulates, places a feeder on the part's top and simulates with it;
 #   - every button, field, toggle, list row and combo of every panel is pressed and the window goes on.
 #
 #   press_test.sh VOXMOD SOURCE_DIR OUT_DIR
@@ -79,9 +80,19 @@ python3 -c "import sys; sys.exit(0 if abs($up - 256) < 5 and abs($down - 256) < 
 checks=$((checks + 1))
 echo "ok $checks - support $up mm^3 up, $down mm^3 down"
 
-# Every panel pressed, with the assembly and with one model: 17 rounds, each with more than the 3D view's buttons.
+# The Casting panel: the block without units says so and is simulated once they are chosen; "Place a feeder" waits for
+# a click; the feeder placed on the top is simulated with the block.
+grep -q "^rect_Model units = " "$out/casting_units.txt" || fail "the Casting panel offers no units for a unitless part"
+expect casting.txt casting_run_feeders 0
+expect casting.txt casting_sound 0
+expect casting_placing.txt casting_placing_feeder 1
+expect casting_feeder.txt casting_feeders 1
+expect casting_feeder.txt casting_run_feeders 1
+[[ -n "$(get casting.txt casting_solidification_s)" ]] || fail "the casting was not simulated"
+
+# Every panel pressed, with the assembly and with one model: 18 rounds, each with more than the 3D view's buttons.
 rounds=$(grep -c "^press-all: pressed" "$out/voxmod.log")
-((rounds == 17)) || fail "expected 17 press-all rounds, found $rounds"
+((rounds == 18)) || fail "expected 18 press-all rounds, found $rounds"
 while read -r n; do
   ((n > 8)) || fail "a press-all round pressed only $n widgets"
 done < <(sed -n 's/^press-all: pressed \([0-9]*\) widgets.*/\1/p' "$out/voxmod.log")

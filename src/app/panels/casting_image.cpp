@@ -47,7 +47,7 @@ void uploadSection(AppState& state, const CastingOutcome& r, int32_t iw, int32_t
   ui.image_sig = sig;
 }
 
-void colourBar(ImDrawList* dl, ImVec2 at, float height, double max, const std::string& unit) {
+void colourBar(ImDrawList* dl, ImVec2 at, float height, double min, double max, const std::string& unit) {
   constexpr int kBands = 48;
   const float w = 18.0f;
   for (int i = 0; i < kBands; ++i) {
@@ -59,7 +59,7 @@ void colourBar(ImDrawList* dl, ImVec2 at, float height, double max, const std::s
   char text[64];
   std::snprintf(text, sizeof text, "%.4g %s", max, unit.c_str());
   dl->AddText(ImVec2(at.x + w + 6.0f, at.y), IM_COL32(230, 230, 230, 255), text);
-  std::snprintf(text, sizeof text, "0 %s", unit.c_str());
+  std::snprintf(text, sizeof text, "%.4g %s", min, unit.c_str());
   dl->AddText(ImVec2(at.x + w + 6.0f, at.y + height - ImGui::GetFontSize()), IM_COL32(230, 230, 230, 255), text);
 }
 
@@ -95,7 +95,8 @@ void drawCastingImage(AppState& state) {
   markWidget("casting_image");
   const bool hovered = ImGui::IsItemHovered();
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  colourBar(dl, ImVec2(origin.x + size.x + 14.0f, origin.y), std::max(size.y, 5.0f * line), castingFieldMax(*r, field),
+  colourBar(dl, ImVec2(origin.x + size.x + 14.0f, origin.y), std::max(size.y, 5.0f * line),
+            field == CastingField::kTime ? r->first_solid_s : 0.0, castingFieldMax(*r, field),
             castingFieldUnit(field, units));
   ImGui::Dummy(ImVec2(0.0f, line));
   // the hot spots within two voxels of the section, ringed

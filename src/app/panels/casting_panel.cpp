@@ -178,7 +178,7 @@ void viewChoice(AppState& state, const CastingOutcome& r) {
   const double end = r.run.result.last_metal_s;
   float t = float(castingTimeShown(state, r));
   ImGui::SetNextItemWidth(-70.0f);
-  if (widget::SliderFloat("##casting_time", &t, 0.0f, float(end), "front at %.4g s")) {
+  if (widget::SliderFloat("##casting_time", &t, float(r.first_solid_s), float(end), "front at %.4g s")) {
     dispatchValues(state, ActionId::kCastingTime, {t >= float(end) ? std::string("end") : std::to_string(t)});
   }
   markWidget("casting_time_slider");
