@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/casting.h"
@@ -138,6 +139,19 @@ float drawCastingOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, int
   line(c.sound ? IM_COL32(120, 230, 120, 255) : kIsolatedColour, c.sound ? "Sound" : "Not sound");
   if (!state.casting_ui.volume_problem.empty()) line(IM_COL32(255, 200, 80, 255), state.casting_ui.volume_problem);
   const CastingHotSpot* chosen = selectedCastingSpot(state);
+  // feeding paths: from each fed spot through its saddle to the spot it feeds from
+  for (const CastingHotSpot& s : c.hot_spots) {
+    if (s.fed_by < 0 || size_t(s.fed_by) >= c.hot_spots.size()) continue;
+    ImVec2 a, b, e;
+    if (projectToView(vp, (s.centre - frame.origin) / frame.voxel_size, pos, w, h, a) &&
+        projectToView(vp, (s.saddle - frame.origin) / frame.voxel_size, pos, w, h, b) &&
+        projectToView(vp, (c.hot_spots[size_t(s.fed_by)].centre - frame.origin) / frame.voxel_size, pos, w, h, e)) {
+      for (const auto& [p, q] : {std::pair(a, b), std::pair(b, e)}) {
+        dl->AddLine(p, q, IM_COL32(0, 0, 0, 255), 4.0f);
+        dl->AddLine(p, q, kFedColour, 2.0f);
+      }
+    }
+  }
   for (size_t i = 0; i < c.hot_spots.size() && i < 20; ++i) {
     const CastingHotSpot& s = c.hot_spots[i];
     ImVec2 p;

@@ -1,7 +1,8 @@
 #pragma once
 // The 3D view while the Casting panel is open: the part coloured by the field chosen (solidification time with the
 // freezing front, the still-liquid metal red; Niyama; the modulus) through the renderer's scalar volume, the hot
-// spots as rings (isolated red, fed white, in a feeder blue), the feeders as outlined cylinders, and a legend.
+// spots as rings (isolated red, fed white, in a feeder blue) with the feeding paths of the fed ones (through the
+// saddle to the spot they feed from), the feeders as outlined cylinders, and a legend.
 #include <imgui.h>
 
 #include "app/app_state.h"
