@@ -11,6 +11,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "analysis/casting_detail.h"
 #include "grids.h"
 #include "vox/analysis/casting.h"
 #include "vox/analysis/distance.h"
@@ -229,6 +230,34 @@ TEST(Casting, refusesWhatItCannotSimulate) {
   EXPECT_EQ(simulateCasting(cube, p, [](double) { return false; }).error().code, ErrorCode::kCancelled);
   p.mould.temperature_c = 700.0;  // above the solidus
   EXPECT_EQ(simulateCasting(cube, p).error().code, ErrorCode::kInvalidArgument);
+}
+
+// The freezing order's regions on a bar of metal (a row of cells) whose times are given: two peaks parted by a deep
+// dip are both isolated; a peak whose dip is shallow is fed by the later one, through its saddle.
+TEST(Casting, hotSpotsByFreezingOrderAreIsolatedOrFed) {
+  const Dims d{40, 1, 1};
+  std::vector<uint8_t> kind(40, casting_detail::kMetal);
+  kind[39] = casting_detail::kMould;
+  std::vector<float> time(40, 0.0f);
+  for (int x = 0; x < 39; ++x) {
+    // peaks at x = 5 (100 s) and x = 20 (80 s) parted by a dip to about 61 s near x = 10.5; a bump at x = 32
+    // (78 s) parted from the x = 20 peak by a dip to 77 s at x = 22
+    const double a = 100.0 - 7.0 * std::abs(x - 5), b = 80.0 - 2.0 * std::abs(x - 20);
+    const double c = 78.0 - 0.1 * std::abs(x - 32);
+    time[size_t(x)] = float(std::max({a, b, x >= 21 ? c : 0.0, 50.0}));
+  }
+  GridFrame frame;
+  const auto spots = casting_detail::findTimeSpots(d, kind, time, frame, 0.5, 0.02, 3);
+  ASSERT_EQ(spots.size(), 3u);
+  EXPECT_EQ(spots[0].cell, 5);
+  EXPECT_TRUE(spots[0].spot.isolated);  // the last of the bar
+  EXPECT_EQ(spots[1].cell, 20);
+  EXPECT_TRUE(spots[1].spot.isolated);  // 30 s above the dip at x = 12
+  EXPECT_EQ(spots[2].cell, 32);
+  EXPECT_FALSE(spots[2].spot.isolated);  // 1 s above its dip: fed
+  EXPECT_EQ(spots[2].spot.fed_by, 1);
+  EXPECT_NEAR(spots[2].spot.saddle.x, 22.5, 1e-9);
+  EXPECT_FALSE(spots[0].spot.in_feeder);
 }
 
 TEST(Casting, feedersParseAndMaterialsAreKnown) {
