@@ -104,7 +104,7 @@ const Action kActions[] = {
   {ActionId::kCastingSuperheat, "casting-superheat", nullptr, "Superheat (K)",                    kNone,                       1, 1,  nullptr,       castingSuperheatAt, hasModel,   nullptr},
   {ActionId::kCastingMouldTemperature, "casting-mould-temperature", nullptr, "Mould temperature (C)", kNone,                  1, 1,  nullptr,       castingMouldTemperatureAt, hasModel, nullptr},
   {ActionId::kCastingFeeder,  "casting-feeder",  nullptr,   "Add a feeder (X Y Z D H)",           kNone,                       5, 5,  nullptr,       castingFeederAt,   hasModel,    nullptr},
-  {ActionId::kCastingPlaceFeeder, "casting-place-feeder", nullptr, "Place a feeder by clicking",  kNone,                       3, 3,  castingPlaceFeederMode, castingPlaceFeederAt, hasCasting, nullptr},
+  {ActionId::kCastingPlaceFeeder, "casting-place-feeder", nullptr, "Place a feeder by clicking",  kNone,                       3, 3,  castingPlaceFeederMode, castingPlaceFeederAt, hasModel, nullptr},
   {ActionId::kCastingDeleteFeeder, "casting-delete-feeder", nullptr, "Delete a feeder",           kNone,                       1, 1,  nullptr,       castingDeleteFeederAt, hasModel, nullptr},
   {ActionId::kSimulateCasting, "simulate-casting", nullptr,  "Simulate the casting",              kNone,                       0, 0,  simulateCastingNow, nullptr,      canSimulateCasting, nullptr},
   {ActionId::kCancelCasting,  "cancel-casting",  nullptr,   "Cancel the casting simulation",      kNone,                       0, 0,  cancelCastingNow, nullptr,        castingComputingNow, nullptr},

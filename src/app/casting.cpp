@@ -15,12 +15,41 @@ namespace vox::app {
 CastingKey wantedCastingKey(const AppState& state) {
   CastingKey key = state.casting_ui.chosen;
   key.model_version = state.model_version;
+  key.units = state.model.frame().units;
   return key;
 }
+
+namespace {
+
+// The solidification times as bytes over the model's grid (CastingOutcome::time_bytes).
+void timeBytes(CastingOutcome& out, const Dims& dims) {
+  const CastingResult& c = out.run.result;
+  float first = 0.0f;
+  for (const float t : c.time.values)
+    if (t > 0.0f && (first == 0.0f || t < first)) first = t;
+  out.first_solid_s = first;
+  const double span = std::max(c.last_metal_s - double(first), 1e-30);
+  out.time_bytes.assign(size_t(dims.count()), 0);
+  size_t i = 0;
+  for (int32_t z = 0; z < dims.nz; ++z)
+    for (int32_t y = 0; y < dims.ny; ++y)
+      for (int32_t x = 0; x < dims.nx; ++x, ++i) {
+        const glm::ivec3 q = glm::ivec3(x, y, z) + c.part_offset;
+        const float t = c.time.at(q.x, q.y, q.z);
+        if (t > 0.0f) out.time_bytes[i] = uint8_t(2 + std::lround(253.0 * std::clamp((t - first) / span, 0.0, 1.0)));
+      }
+}
+
+}  // namespace
 
 void requestCasting(AppState& state) {
   state.casting.poll();
   CastingUi& ui = state.casting_ui;
+  if (const CastingOutcome* r = currentCasting(state); r && r->id != ui.seen_result) {
+    ui.seen_result = r->id;  // a new run: its front starts at its end
+    ui.time_shown = -1.0;
+    ui.playing = false;
+  }
   if (!ui.asked || state.model.empty() || ui.asked_key.model_version != state.model_version) return;
   const CastingKey key = ui.asked_key;
   if (!state.casting.wants(key)) return;
@@ -50,10 +79,7 @@ void requestCasting(AppState& state) {
     out->run = std::move(run).value();
     out->seconds = out->run.modulus_s + out->run.result.simulate_s;
     out->niyama_scale = niyamaScale(out->run.result.niyama);
-    float first = 0.0f;
-    for (const float t : out->run.result.time.values)
-      if (t > 0.0f && (first == 0.0f || t < first)) first = t;
-    out->first_solid_s = first;
+    timeBytes(*out, grid.dims());
     return R(std::shared_ptr<const CastingOutcome>(std::move(out)));
   });
 }
@@ -75,6 +101,9 @@ const Error* castingError(const AppState& state) { return state.casting.error(st
 
 void simulateCasting(AppState& state) {
   CastingUi& ui = state.casting_ui;
+  // a run that failed for these settings (no units then, too little memory) is tried again when asked: its error
+  // goes (an error held means no result is)
+  if (!state.casting.busy() && state.casting.error(wantedCastingKey(state))) state.casting.clear();
   ui.asked_key = wantedCastingKey(state);
   ui.asked = true;
   if (const CastingOutcome* r = currentCasting(state); r && r->key == ui.asked_key) ui.asked = false;
@@ -183,6 +212,11 @@ double castingTimeShown(const AppState& state, const CastingOutcome& r) {
   return state.casting_ui.time_shown < 0.0 ? end : std::min(state.casting_ui.time_shown, end);
 }
 
+uint8_t castingFrontByte(const CastingOutcome& r, double front_s) {
+  const double span = std::max(r.run.result.last_metal_s - r.first_solid_s, 1e-30);
+  return uint8_t(2 + std::lround(253.0 * std::clamp((front_s - r.first_solid_s) / span, 0.0, 1.0)));
+}
+
 uint8_t castingColourValue(const CastingOutcome& r, CastingField field, double front_s, glm::ivec3 voxel) {
   const double max = castingFieldMax(r, field);
   const float t = castingFieldAt(r, CastingField::kTime, voxel);
@@ -215,7 +249,7 @@ std::string castingFieldUnit(CastingField field, const std::string& units) {
 void advanceCastingPlay(AppState& state, double frame_s) {
   CastingUi& ui = state.casting_ui;
   const CastingOutcome* r = currentCasting(state);
-  if (!ui.playing || !r) {
+  if (!ui.playing || !r || state.panel != Panel::kCasting || ui.field != CastingField::kTime) {
     ui.playing = false;
     return;
   }

@@ -37,6 +37,8 @@ double castingTimeShown(const AppState& state, const CastingOutcome& r);
 // 1..255 along the colour ramp for a voxel of the metal (0: none); at the front, metal still liquid is 1 (under the
 // renderer's red threshold).
 uint8_t castingColourValue(const CastingOutcome& r, CastingField field, double front_s, glm::ivec3 voxel);
+// The front's time as a byte of CastingOutcome::time_bytes: bytes above it are still liquid.
+uint8_t castingFrontByte(const CastingOutcome& r, double front_s);
 // The field's name and unit for legends: "solidification time", "s".
 const char* castingFieldName(CastingField field);
 std::string castingFieldUnit(CastingField field, const std::string& units);

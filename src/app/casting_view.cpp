@@ -28,11 +28,21 @@ void uploadColours(AppState& state, const CastingOutcome& r) {
   const Dims d = g.dims();
   const double front = castingTimeShown(state, r);
   std::vector<uint8_t> values(size_t(d.count()), 0);
-  size_t i = 0;
-  for (int32_t z = 0; z < d.nz; ++z)
-    for (int32_t y = 0; y < d.ny; ++y)
-      for (int32_t x = 0; x < d.nx; ++x, ++i)
-        values[i] = castingColourValue(r, state.casting_ui.field, front, {x, y, z});
+  if (state.casting_ui.field == CastingField::kTime && r.time_bytes.size() == values.size()) {
+    // from the worker's bytes: what freezes after the front is not yet solid (1, red)
+    const uint8_t at = castingFrontByte(r, front);
+    const bool before_end = front < r.run.result.last_metal_s;
+    for (size_t i = 0; i < values.size(); ++i) {
+      const uint8_t b = r.time_bytes[i];
+      values[i] = before_end && b > at ? 1 : b;
+    }
+  } else {
+    size_t i = 0;
+    for (int32_t z = 0; z < d.nz; ++z)
+      for (int32_t y = 0; y < d.ny; ++y)
+        for (int32_t x = 0; x < d.nx; ++x, ++i)
+          values[i] = castingColourValue(r, state.casting_ui.field, front, {x, y, z});
+  }
   if (Status s = state.viewport.renderer->setScalarVolume(glm::ivec3(0), d, values); !s) {
     state.casting_ui.volume_problem = "The 3D view is not coloured: " + s.error().message + ".";
   }
@@ -86,7 +96,8 @@ void syncCastingView(AppState& state) {
   CastingUi& ui = state.casting_ui;
   const CastingOutcome* r = shownCasting(state);
   const uint64_t key = r ? r->id : 0;
-  const std::vector<double> sig = {double(int(ui.field)), r ? castingTimeShown(state, *r) : 0.0};
+  const bool front = r && ui.field == CastingField::kTime;  // only the time's colours move with the front
+  const std::vector<double> sig = {double(int(ui.field)), front ? castingTimeShown(state, *r) : 0.0};
   if (key == ui.volume_key && (!r || sig == ui.volume_sig)) return;
   ui.volume_key = key;
   ui.volume_sig = sig;

@@ -1178,12 +1178,27 @@ TEST(AppScriptRun, theCastingPanelSimulatesAndPlacesAFeeder) {
   EXPECT_NE(castingError(state)->message.find("no length units"), std::string::npos);
   EXPECT_EQ(state.model_version, version);
 
+  // asked again, the same refusal (the run is tried again, not the old error kept)
+  Harness h2;
+  ASSERT_TRUE(runScript(state, h2, "simulate-casting\n")) << h2.last_error;
+  ASSERT_TRUE(pump(state, [&] {
+    requestCasting(state);
+    return !state.casting.busy() && castingError(state) != nullptr;
+  }));
+  // the units chosen (the Mass panel's or this panel's list): the same settings now run
   setModelUnits(state, "mm");
+  Harness hu;
+  ASSERT_TRUE(runScript(state, hu, "simulate-casting\n")) << hu.last_error;
+  ASSERT_TRUE(pump(state, [&] {
+    requestCasting(state);
+    return currentCasting(state) != nullptr && !state.casting.busy();
+  }));
+  EXPECT_EQ(currentCasting(state)->key.units, "mm");
   Harness hs;
   ASSERT_TRUE(runScript(state, hs, "casting-alloy aluminium\nsimulate-casting\n")) << hs.last_error;
   ASSERT_TRUE(pump(state, [&] {
     requestCasting(state);
-    return currentCasting(state) != nullptr && !state.casting.busy();
+    return currentCasting(state) != nullptr && !castingStale(state) && !state.casting.busy();
   }));
   const CastingOutcome* r = currentCasting(state);
   EXPECT_FALSE(r->run.result.sound);

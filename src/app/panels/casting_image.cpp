@@ -26,7 +26,7 @@ void uploadSection(AppState& state, const CastingOutcome& r, int32_t iw, int32_t
   const double front = castingTimeShown(state, r);
   const std::vector<double> sig = {double(r.id),
                                    double(int(ui.field)),
-                                   front,
+                                   ui.field == CastingField::kTime ? front : 0.0,
                                    double(int(state.section.axis)),
                                    double(state.section.index),
                                    double(state.model_version)};
