@@ -179,7 +179,6 @@ class Solidifier {
   int64_t nx_ = 0, ny_ = 0, nz_ = 0, layer_ = 0;
   glm::ivec3 result_lo_{0};  // the result's box within the simulated one
   double h_m_ = 0.0;         // voxel size, metres
-  double g_[2][2] = {};      // face conductances k / h^2 (W / m^3 K), mould or metal on each side
   double mould_rc_ = 0.0;
   int threads_ = 1;
   std::vector<uint8_t> kind_;
@@ -335,10 +334,11 @@ Status Solidifier::build() {
     }
   }
   const double k[2] = {p_.mould.conductivity_w_mk, p_.alloy.conductivity_w_mk};
+  double g[2][2];  // face conductances k / h^2 (W / m^3 K), mould or metal on each side
   for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b) g_[a][b] = 2.0 * k[a] * k[b] / (k[a] + k[b]) / (h_m_ * h_m_);
-  conductance_ = Conductance{float(g_[0][0]), float(g_[1][0] - g_[0][0]), float(g_[0][1] - g_[0][0]),
-                             float(g_[1][1] - g_[1][0] - g_[0][1] + g_[0][0])};
+    for (int b = 0; b < 2; ++b) g[a][b] = 2.0 * k[a] * k[b] / (k[a] + k[b]) / (h_m_ * h_m_);
+  conductance_ = Conductance{float(g[0][0]), float(g[1][0] - g[0][0]), float(g[0][1] - g[0][0]),
+                             float(g[1][1] - g[1][0] - g[0][1] + g[0][0])};
   return Ok{};
 }
 

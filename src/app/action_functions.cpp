@@ -14,6 +14,16 @@
 namespace vox::app::actions {
 
 Error badValues(std::string message) { return makeError(ErrorCode::kInvalidArgument, std::move(message)); }
+
+Result<size_t> listRow(const ActionArgs& a, size_t count, const std::string& what, const std::string& panel,
+                       const std::string& none) {
+  if (count == 0) return badValues(what + ": " + none);
+  size_t n = 0;
+  if (!parseNumber(a.words[0], n) || n < 1 || n > count) {
+    return badValues(what + " takes a row of the " + panel + " panel's list, 1 to " + std::to_string(count));
+  }
+  return n - 1;
+}
 namespace {
 
 void showPanel(AppState& s, Panel p) {

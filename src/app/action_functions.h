@@ -7,6 +7,10 @@ namespace vox::app::actions {
 
 // A usage error of an action's values, saying what it takes.
 Error badValues(std::string message);
+// Row N (counted from 1, as panels show their lists) of a list of `count` rows, as an index from 0; a usage error
+// naming the action `what` and the panel's list, or `none` when the list is empty.
+Result<size_t> listRow(const ActionArgs& a, size_t count, const std::string& what, const std::string& panel,
+                       const std::string& none);
 
 // ---- Conditions ----
 bool hasModel(const AppState& s);

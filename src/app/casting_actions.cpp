@@ -18,15 +18,6 @@ void showCasting(AppState& s) {
   s.panel_change_requested = true;
 }
 
-Result<size_t> castingRow(const ActionArgs& a, size_t count, const char* what, const char* none) {
-  if (count == 0) return badValues(std::string(what) + ": " + none);
-  size_t n = 0;
-  if (!parseNumber(a.words[0], n) || n < 1 || n > count) {
-    return badValues(std::string(what) + " takes a row of the Casting panel's list, 1 to " + std::to_string(count));
-  }
-  return n - 1;
-}
-
 }  // namespace
 
 void panelCasting(AppState& s) { showCasting(s); }
@@ -97,7 +88,7 @@ Status castingPlaceFeederAt(AppState& s, const ActionArgs& a) {
 
 Status castingDeleteFeederAt(AppState& s, const ActionArgs& a) {
   auto& feeders = s.casting_ui.chosen.feeders;
-  const auto i = castingRow(a, feeders.size(), "casting-delete-feeder", "there is no feeder");
+  const auto i = listRow(a, feeders.size(), "casting-delete-feeder", "Casting", "there is no feeder");
   if (!i) return i.error();
   feeders.erase(feeders.begin() + std::ptrdiff_t(*i));
   showCasting(s);
@@ -148,7 +139,8 @@ void castingPlay(AppState& s) {
 
 Status castingHotSpotAt(AppState& s, const ActionArgs& a) {
   const CastingOutcome* r = currentCasting(s);
-  const auto i = castingRow(a, r ? r->run.result.hot_spots.size() : 0, "casting-hot-spot", "there is no hot spot");
+  const auto i =
+      listRow(a, r ? r->run.result.hot_spots.size() : 0, "casting-hot-spot", "Casting", "there is no hot spot");
   if (!i) return i.error();
   const CastingHotSpot& spot = r->run.result.hot_spots[*i];
   // the section through it along the section's axis, the 3D view about it

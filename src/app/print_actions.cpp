@@ -18,16 +18,6 @@ void showPrint(AppState& s) {
   s.panel_change_requested = true;
 }
 
-// Row N (from 1) of a list of `count` rows.
-Result<size_t> printRow(const ActionArgs& a, size_t count, const char* what, const char* none) {
-  if (count == 0) return badValues(std::string(what) + ": " + none);
-  size_t n = 0;
-  if (!parseNumber(a.words[0], n) || n < 1 || n > count) {
-    return badValues(std::string(what) + " takes a row of the Print panel's list, 1 to " + std::to_string(count));
-  }
-  return n - 1;
-}
-
 }  // namespace
 
 void panelPrint(AppState& s) { showPrint(s); }
@@ -61,8 +51,8 @@ void printOrient(AppState& s) {
 
 Status printOrientationAt(AppState& s, const ActionArgs& a) {
   const PrintResult* r = currentPrint(s);
-  const auto i = printRow(a, r ? r->check.orientations.size() : 0, "print-orientation",
-                          "no build directions were searched (Find the best way up)");
+  const auto i = listRow(a, r ? r->check.orientations.size() : 0, "print-orientation", "Print",
+                         "no build directions were searched (Find the best way up)");
   if (!i) return i.error();
   // the list found stays for the direction applied (print.cpp, knownOrientations): it is not searched again
   s.print_ui.up = r->check.orientations[*i].direction;
@@ -72,7 +62,8 @@ Status printOrientationAt(AppState& s, const ActionArgs& a) {
 
 Status printCavityAt(AppState& s, const ActionArgs& a) {
   const PrintResult* r = currentPrint(s);
-  const auto i = printRow(a, r ? r->check.cavities.size() : 0, "print-cavity", "the part has no trapped cavity");
+  const auto i =
+      listRow(a, r ? r->check.cavities.size() : 0, "print-cavity", "Print", "the part has no trapped cavity");
   if (!i) return i.error();
   const TrappedCavity& c = r->check.cavities[*i];
   // the section through the cavity's middle along the section's axis, the 3D view about it
