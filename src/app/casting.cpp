@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/document.h"
+#include "app/parts.h"
 
 namespace vox::app {
 
@@ -16,6 +17,7 @@ CastingKey wantedCastingKey(const AppState& state) {
   CastingKey key = state.casting_ui.chosen;
   key.model_version = state.model_version;
   key.units = state.model.frame().units;
+  key.feeders = placedFeeders(state);
   return key;
 }
 
@@ -63,25 +65,37 @@ void requestCasting(AppState& state) {
   if (key.mould_temperature_c > -273.0) params.mould.temperature_c = key.mould_temperature_c;
   params.superheat_k = key.superheat_k;
   params.feeders = key.feeders;
-  VoxelGrid grid = state.model;
+  // the metal without its feeders (parts of the scene): the parts that are not feeders, or the selected one
+  VoxelGrid model = state.model;
+  std::shared_ptr<const Assembly> scene = key.feeders.empty() ? nullptr : state.doc.model->parts;
+  const std::vector<size_t>& selected = state.parts_ui.selected;
+  const size_t only = scene && state.parts_ui.scope_selected && !selected.empty() && selected.front() < scene->size() &&
+                              !scene->part(selected.front()).feeder
+                          ? selected.front()
+                          : SIZE_MAX;
   const uint64_t id = takeId(state);
-  state.casting.request(key, "Simulating the casting", [grid, id, key, params](const ProgressFn& progress) {
-    using R = Result<std::shared_ptr<const CastingOutcome>>;
-    // the modulus 0..10% of the bar, the simulation the rest
-    const workflow::CastingProgress bar = [&progress](workflow::CastingStage stage, double f) {
-      return !progress || progress(stage == workflow::CastingStage::kModulus ? 0.1 * f : 0.1 + 0.9 * f);
-    };
-    auto run = workflow::runCasting(grid, params, bar);
-    if (!run) return R(run.error());
-    auto out = std::make_shared<CastingOutcome>();
-    out->id = id;
-    out->key = key;
-    out->run = std::move(run).value();
-    out->seconds = out->run.modulus_s + out->run.result.simulate_s;
-    out->niyama_scale = niyamaScale(out->run.result.niyama);
-    timeBytes(*out, grid.dims());
-    return R(std::shared_ptr<const CastingOutcome>(std::move(out)));
-  });
+  state.casting.request(
+      key, "Simulating the casting", [model, scene, only, id, key, params](const ProgressFn& progress) {
+        using R = Result<std::shared_ptr<const CastingOutcome>>;
+        const VoxelGrid grid = scene ? castPart(*scene, only) : model;
+        if (grid.filledCount() == 0) {
+          return R(makeError(ErrorCode::kInvalidArgument, "there is no metal to cast: every part is a feeder"));
+        }
+        // the modulus 0..10% of the bar, the simulation the rest
+        const workflow::CastingProgress bar = [&progress](workflow::CastingStage stage, double f) {
+          return !progress || progress(stage == workflow::CastingStage::kModulus ? 0.1 * f : 0.1 + 0.9 * f);
+        };
+        auto run = workflow::runCasting(grid, params, bar);
+        if (!run) return R(run.error());
+        auto out = std::make_shared<CastingOutcome>();
+        out->id = id;
+        out->key = key;
+        out->run = std::move(run).value();
+        out->seconds = out->run.modulus_s + out->run.result.simulate_s;
+        out->niyama_scale = niyamaScale(out->run.result.niyama);
+        timeBytes(*out, grid.dims());
+        return R(std::shared_ptr<const CastingOutcome>(std::move(out)));
+      });
 }
 
 const CastingOutcome* currentCasting(const AppState& state) {
@@ -140,7 +154,9 @@ Status placeFeederAt(AppState& state, glm::ivec3 voxel) {
   if (!g.inBounds(voxel.x, voxel.y, voxel.z) || !g.get(voxel.x, voxel.y, voxel.z)) {
     return makeError(ErrorCode::kInvalidArgument, "place-feeder: no part at that voxel");
   }
-  const CastingOutcome* r = currentCasting(state);
+  // sized from the last run, even when the parts have changed since (the hot spots lie where they were)
+  const auto* held = state.casting.held();
+  const CastingOutcome* r = held && *held ? held->get() : nullptr;
   if (!r) {
     return makeError(ErrorCode::kInvalidArgument,
                      "place-feeder: simulate first, so that the feeder can be sized for the hot spot it should feed");
@@ -165,7 +181,7 @@ Status placeFeederAt(AppState& state, glm::ivec3 voxel) {
   int32_t top = voxel.z;
   while (top + 1 < g.nz() && g.get(voxel.x, voxel.y, top + 1)) ++top;
   f.base = glm::dvec3(at.x, at.y, g.frame().origin.z + double(top + 1) * g.voxelSize());
-  state.casting_ui.chosen.feeders.push_back(f);
+  if (Status s = addFeederPart(state, f); !s) return s;
   state.casting_ui.placing_feeder = false;
   return Ok{};
 }

@@ -1,12 +1,14 @@
 // The Casting entries of the action table (actions.cpp): the panel, the alloy, mould and temperatures, the feeders
-// (typed, clicked on the part, deleted), the run and its cancel, the field the views colour by, the freezing front's
-// time and its play, the hot spots' list. Row numbers in scripts count from 1, as the panel shows them.
+// (parts of the scene: typed, clicked on the part, deleted), the run and its cancel, the field the views colour by, the
+// freezing front's time and its play, the hot spots' list. Row numbers in scripts count from 1, as the panel shows
+// them.
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "app/action_functions.h"
 #include "app/casting.h"
+#include "app/parts.h"
 #include "app/update.h"  // centreView, axisLength
 #include "vox/core/text.h"
 
@@ -66,7 +68,7 @@ Status castingFeederAt(AppState& s, const ActionArgs& a) {
   for (size_t k = 0; k < 5; ++k) text += (k ? "," : "") + a.words[k];
   auto f = parseFeeder(text);
   if (!f) return badValues(f.error().message);
-  s.casting_ui.chosen.feeders.push_back(*f);
+  if (Status st = addFeederPart(s, *f); !st) return st;
   showCasting(s);
   return Ok{};
 }
@@ -87,10 +89,10 @@ Status castingPlaceFeederAt(AppState& s, const ActionArgs& a) {
 }
 
 Status castingDeleteFeederAt(AppState& s, const ActionArgs& a) {
-  auto& feeders = s.casting_ui.chosen.feeders;
+  const std::vector<size_t> feeders = feederParts(s);
   const auto i = listRow(a, feeders.size(), "casting-delete-feeder", "Casting", "there is no feeder");
   if (!i) return i.error();
-  feeders.erase(feeders.begin() + std::ptrdiff_t(*i));
+  if (Status st = removePart(s, feeders[*i]); !st) return st;
   showCasting(s);
   return Ok{};
 }

@@ -1,6 +1,6 @@
 #pragma once
-// The Casting panel's state (casting.h): the alloy, mould, temperatures and feeders the user chose, the simulation
-// they key, and what the views show of it (which field, the time of the freezing front).
+// The Casting panel's state (casting.h): the alloy, mould and temperatures the user chose (the feeders are parts), the
+// simulation they key, and what the views show of it (which field, the time of the freezing front).
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -19,7 +19,7 @@ struct CastingKey {
   std::string alloy = "a356", mould = "silica-sand";
   double superheat_k = 50.0;
   double mould_temperature_c = -1000.0;  // below -273: the mould's own
-  std::vector<Feeder> feeders;
+  std::vector<Feeder> feeders;           // the scene's feeder parts, placed (wantedCastingKey fills them in)
   bool operator==(const CastingKey&) const = default;
 };
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -58,33 +57,6 @@ std::string seconds(double s) {
   return text;
 }
 
-// A feeder's cylinder as lines: its foot and top circles and four sides.
-void drawFeeder(ImDrawList* dl, const glm::dmat4& vp, const Feeder& f, const GridFrame& frame, ImVec2 pos, int w,
-                int h) {
-  constexpr int kSteps = 32;
-  const auto at = [&](double angle, double z) {
-    const glm::dvec3 p(f.base.x + 0.5 * f.diameter * std::cos(angle), f.base.y + 0.5 * f.diameter * std::sin(angle),
-                       f.base.z + z);
-    return (p - frame.origin) / frame.voxel_size;
-  };
-  for (const double z : {0.0, f.height}) {
-    for (int k = 0; k < kSteps; ++k) {
-      ImVec2 a, b;
-      const double t0 = 2.0 * std::numbers::pi * k / kSteps, t1 = 2.0 * std::numbers::pi * (k + 1) / kSteps;
-      if (projectToView(vp, at(t0, z), pos, w, h, a) && projectToView(vp, at(t1, z), pos, w, h, b)) {
-        dl->AddLine(a, b, kFeederColour, 2.0f);
-      }
-    }
-  }
-  for (int k = 0; k < 4; ++k) {
-    ImVec2 a, b;
-    const double t = 0.5 * std::numbers::pi * k;
-    if (projectToView(vp, at(t, 0.0), pos, w, h, a) && projectToView(vp, at(t, f.height), pos, w, h, b)) {
-      dl->AddLine(a, b, kFeederColour, 2.0f);
-    }
-  }
-}
-
 }  // namespace
 
 const CastingOutcome* shownCasting(const AppState& state) {
@@ -124,10 +96,9 @@ float drawCastingOverlay(AppState& state, ImDrawList* dl, ImVec2 pos, int w, int
     shadowText(dl, ImVec2(pos.x + 12.0f, y), colour, text.c_str());
     y += lh;
   };
+  if (state.casting_ui.placing_feeder) line(kFeederColour, "Click the part where a feeder should stand");
   const glm::dmat4 vp = state.view.camera.viewProjection(aspect, *state.model_bounds);
   const GridFrame& frame = state.model.frame();
-  for (const Feeder& f : state.casting_ui.chosen.feeders) drawFeeder(dl, vp, f, frame, pos, w, h);
-  if (state.casting_ui.placing_feeder) line(kFeederColour, "Click the part where a feeder should stand");
   const CastingOutcome* r = shownCasting(state);
   if (!r) {
     line(kLegendColour, castingComputing(state) ? "Simulating the casting..." : "Casting: Simulate in the panel");

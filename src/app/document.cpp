@@ -110,9 +110,8 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
   state.print_ui.up = glm::dvec3(0.0, 0.0, 1.0);
   state.print_ui.orient = state.print_ui.lay_face = state.print_ui.was_cancelled = false;
   state.print_ui.selected_cavity = -1;
-  // another part: its feeders are its own; the metal, mould and temperatures stay
+  // another part (its feeders are its parts): the metal, mould and temperatures stay
   state.casting.clear();
-  state.casting_ui.chosen.feeders.clear();
   state.casting_ui.asked = state.casting_ui.placing_feeder = state.casting_ui.playing = false;
   state.casting_ui.time_shown = -1.0;
   state.casting_ui.selected_spot = -1;

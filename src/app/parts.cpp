@@ -9,6 +9,7 @@
 #include <glm/common.hpp>
 
 #include "app/document.h"
+#include "app/parts_detail.h"
 #include "app/messages.h"
 #include "app/model_jobs.h"
 #include "app/thickness.h"
@@ -32,21 +33,6 @@ constexpr size_t kMaxComponentParts = 200;
 
 Error partsError(std::string message) { return makeError(ErrorCode::kInvalidArgument, std::move(message)); }
 
-// A new model state holding `parts`: the union as the model (found here when not given), a new base (the skin layers
-// of the union).
-void commitParts(AppState& state, std::shared_ptr<const Assembly> parts, const std::string& label,
-                 std::optional<VoxelGrid> union_of_parts = std::nullopt) {
-  auto origin = std::make_shared<ModelOrigin>();
-  const ModelOrigin* prev = state.doc.model ? state.doc.model->origin.get() : nullptr;
-  origin->what = std::to_string(parts->size()) + (parts->size() == 1 ? " part" : " parts") + " on one lattice";
-  origin->resolution = prev ? prev->resolution : 0;
-  VoxelGrid grid = union_of_parts ? std::move(*union_of_parts) : partsUnion(*parts);
-  ModelSnapshot snap = newBase(state, std::move(grid), std::move(origin), label);
-  snap.parts = std::move(parts);
-  state.parts_ui.selected.clear();
-  setModel(state, std::move(snap), true);
-}
-
 // The union of `after`'s parts, where only part i was placed differently from `before`, whose union is `before_union`
 // (the model's base): made again only over part i's old and new boxes (redoUnionIn), the rest of the union kept.
 // The whole union when `before_union` is not on `before`'s extent.
@@ -65,28 +51,6 @@ VoxelGrid unionAfterPlacing(const Assembly& before, const Assembly& after, size_
   return std::move(u.grid);
 }
 
-// Refuses, before anything is allocated, a scene whose box would not fit a grid or whose union would take more than
-// half the memory a large piece of work may plan for (the union is made next to the one before it).
-Status checkSceneSize(const Assembly& scene, const std::string& what) {
-  const glm::ivec3 n = scene.extent().size();
-  const std::string box = std::to_string(n.x) + " x " + std::to_string(n.y) + " x " + std::to_string(n.z);
-  if (n.x > VoxelGrid::kMaxDim || n.y > VoxelGrid::kMaxDim || n.z > VoxelGrid::kMaxDim) {
-    return makeError(ErrorCode::kLimit, what + " would make the parts' box " + box + " voxels; a grid holds at most " +
-                                            std::to_string(VoxelGrid::kMaxDim) +
-                                            " along each axis. Nothing was changed");
-  }
-  const uint64_t row_bytes = (uint64_t(n.x) + 2 + 63) / 64 * 8;
-  const uint64_t bytes = row_bytes * (uint64_t(n.y) + 2) * (uint64_t(n.z) + 2);
-  const uint64_t limit = defaultMemoryLimitBytes() / 2;
-  if (bytes > limit) {
-    return makeError(ErrorCode::kLimit, what + " would make the parts' box " + box +
-                                            " voxels, whose grid needs up to " + formatBytes(bytes) +
-                                            ", more than the " + formatBytes(limit) +
-                                            " this machine can give it. Nothing was changed");
-  }
-  return Ok{};
-}
-
 // A change of how the parts are shown (colour, visibility) as an undo step of its own: the state before it goes on the
 // undo stack (a cheap copy: the grids share their layers) and the current state takes the new parts. The model version
 // stays: the voxels are the same, so nothing derived from them (the renderers' points, the interference, the mass) is
@@ -101,17 +65,6 @@ void commitLook(AppState& state, std::shared_ptr<const Assembly> parts, std::str
   doc.model->parts = std::move(parts);
   doc.model->label = std::move(label);
   state.viewport.dirty = true;
-}
-
-// The current model as an assembly of one part (a document that is not a scene yet), or the current parts.
-Assembly sceneOfModel(const AppState& state) {
-  if (const Assembly* a = currentParts(state)) return *a;
-  Assembly scene;
-  if (!state.doc.model) return scene;
-  const VoxelGrid& g = state.doc.model->grid;
-  std::string name = state.doc.path.empty() ? "model" : state.doc.path.filename().string();
-  (void)scene.addGrid(g, name);  // the first grid sets the lattice: cannot fail
-  return scene;
 }
 
 // The bodies of a mesh, each voxelized on the lattice of `model` (the mesh's own grid, as shown): the file's own
@@ -206,6 +159,54 @@ void startPartsJob(AppState& state, const std::string& label, std::string undo_l
 
 }  // namespace
 
+// A new model state holding `parts`: the union as the model (found here when not given), a new base (the skin layers
+// of the union).
+void commitParts(AppState& state, std::shared_ptr<const Assembly> parts, const std::string& label,
+                 std::optional<VoxelGrid> union_of_parts) {
+  auto origin = std::make_shared<ModelOrigin>();
+  const ModelOrigin* prev = state.doc.model ? state.doc.model->origin.get() : nullptr;
+  origin->what = std::to_string(parts->size()) + (parts->size() == 1 ? " part" : " parts") + " on one lattice";
+  origin->resolution = prev ? prev->resolution : 0;
+  VoxelGrid grid = union_of_parts ? std::move(*union_of_parts) : partsUnion(*parts);
+  ModelSnapshot snap = newBase(state, std::move(grid), std::move(origin), label);
+  snap.parts = std::move(parts);
+  state.parts_ui.selected.clear();
+  setModel(state, std::move(snap), true);
+}
+
+// Refuses, before anything is allocated, a scene whose box would not fit a grid or whose union would take more than
+// half the memory a large piece of work may plan for (the union is made next to the one before it).
+Status checkSceneSize(const Assembly& scene, const std::string& what) {
+  const glm::ivec3 n = scene.extent().size();
+  const std::string box = std::to_string(n.x) + " x " + std::to_string(n.y) + " x " + std::to_string(n.z);
+  if (n.x > VoxelGrid::kMaxDim || n.y > VoxelGrid::kMaxDim || n.z > VoxelGrid::kMaxDim) {
+    return makeError(ErrorCode::kLimit, what + " would make the parts' box " + box + " voxels; a grid holds at most " +
+                                            std::to_string(VoxelGrid::kMaxDim) +
+                                            " along each axis. Nothing was changed");
+  }
+  const uint64_t row_bytes = (uint64_t(n.x) + 2 + 63) / 64 * 8;
+  const uint64_t bytes = row_bytes * (uint64_t(n.y) + 2) * (uint64_t(n.z) + 2);
+  const uint64_t limit = defaultMemoryLimitBytes() / 2;
+  if (bytes > limit) {
+    return makeError(ErrorCode::kLimit, what + " would make the parts' box " + box +
+                                            " voxels, whose grid needs up to " + formatBytes(bytes) +
+                                            ", more than the " + formatBytes(limit) +
+                                            " this machine can give it. Nothing was changed");
+  }
+  return Ok{};
+}
+
+// The current model as an assembly of one part (a document that is not a scene yet), or the current parts.
+Assembly sceneOfModel(const AppState& state) {
+  if (const Assembly* a = currentParts(state)) return *a;
+  Assembly scene;
+  if (!state.doc.model) return scene;
+  const VoxelGrid& g = state.doc.model->grid;
+  std::string name = state.doc.path.empty() ? "model" : state.doc.path.filename().string();
+  (void)scene.addGrid(g, name);  // the first grid sets the lattice: cannot fail
+  return scene;
+}
+
 const Assembly* currentParts(const AppState& state) {
   return state.doc.model && state.doc.model->parts ? state.doc.model->parts.get() : nullptr;
 }
@@ -276,6 +277,10 @@ Status placePart(AppState& state, size_t i, const PartPlacement& placement) {
   p.quarter_turns &= 3;  // turns are taken modulo 4: the same placement, one way of writing it
   if (parts->part(i).placement == p) return Ok{};
   const bool turned = p.quarter_turns != parts->part(i).placement.quarter_turns;
+  if (turned && parts->part(i).feeder) {
+    return partsError(parts->part(i).name +
+                      " is a feeder: it stands upright on the part, so it is moved, never turned");
+  }
   auto scene = std::make_shared<Assembly>(*parts);
   scene->setPlacement(i, p);
   const std::string label = (turned ? "turn " : "move ") + scene->part(i).name;

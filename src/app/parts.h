@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/app_state.h"
 #include "vox/core/result.h"
@@ -96,6 +97,20 @@ void updateClearance(AppState& state);  // (updateParts calls it)
 
 // Filled voxels of each part, counted once per model version.
 const std::vector<int64_t>& partVoxelCounts(AppState& state);
+
+// ---- Feeders (parts_feeders.cpp): the Casting panel's feeders are parts of the scene, moved, removed and undone
+// in the Parts panel like any other. ----
+// Adds `feeder` as a part (undoable, "place feeder 2"): its cylinder voxelized on the scene's lattice, named
+// "feeder N"; the document becomes a scene first when it is not one. Fails, saying why and changing nothing, for a
+// feeder holding no voxel or one making the scene too large.
+Status addFeederPart(AppState& state, const Feeder& feeder);
+// The indices of the parts that are feeders, in the parts' order (empty without parts).
+std::vector<size_t> feederParts(const AppState& state);
+// The feeders as placed, in the parts' order.
+std::vector<Feeder> placedFeeders(const AppState& state);
+// The metal of the casting without its feeders, on the frame of the parts' extent (the model's): the union of the
+// parts that are not feeders, or part `only` alone (SIZE_MAX: all).
+VoxelGrid castPart(const Assembly& parts, size_t only);
 
 // The union of all parts (unionOfParts), and part i alone, on the frame of the assembly's extent (what the analyses
 // use).

@@ -309,7 +309,7 @@ std::string describeState(const AppState& s, const Harness& h) {
       out << "hot_spot_1 = " << v.x << " " << v.y << " " << v.z << "\n";
     }
   }
-  out << "casting_feeders = " << s.casting_ui.chosen.feeders.size() << "\n";
+  out << "casting_feeders = " << feederParts(s).size() << "\n";
   out << "casting_placing_feeder = " << s.casting_ui.placing_feeder << "\n";
   if (const CastingOutcome* c = currentCasting(s)) {
     out << "casting_solidification_s = " << c->run.result.solidification_s << "\n";

@@ -120,6 +120,14 @@ glm::ivec3 Assembly::snapTranslation(const glm::dvec3& d) const {
   return glm::ivec3(int32_t(std::lround(v.x)), int32_t(std::lround(v.y)), int32_t(std::lround(v.z)));
 }
 
+std::optional<Feeder> Assembly::placedFeeder(size_t i) const {
+  const Part& p = parts_.at(i);
+  if (!p.feeder) return std::nullopt;
+  Feeder f = *p.feeder;
+  f.base += glm::dvec3(p.placement.translation) * lattice_.voxel_size;
+  return f;
+}
+
 LatticeGrid Assembly::placedVoxels(size_t i) const {
   const Part& p = parts_.at(i);
   LatticeGrid g = turnQuarter(p.voxels, p.placement.quarter_turns, lattice_);

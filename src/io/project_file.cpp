@@ -7,6 +7,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <type_traits>
 #include <utility>
 
@@ -44,13 +45,18 @@ json partsJson(const Assembly& parts) {
   json list = json::array();
   for (size_t i = 0; i < parts.size(); ++i) {
     const Part& p = parts.part(i);
-    list.push_back({{"name", p.name},
-                    {"colour", triple(p.colour)},
-                    {"visible", p.visible},
-                    {"first", triple(p.voxels.first)},
-                    {"translation", triple(p.placement.translation)},
-                    {"quarter_turns", triple(p.placement.quarter_turns)},
-                    {"voxels", partEntry(i)}});
+    json entry = {{"name", p.name},
+                  {"colour", triple(p.colour)},
+                  {"visible", p.visible},
+                  {"first", triple(p.voxels.first)},
+                  {"translation", triple(p.placement.translation)},
+                  {"quarter_turns", triple(p.placement.quarter_turns)},
+                  {"voxels", partEntry(i)}};
+    if (p.feeder) {
+      entry["feeder"] = {
+          {"base", triple(p.feeder->base)}, {"diameter", p.feeder->diameter}, {"height", p.feeder->height}};
+    }
+    list.push_back(std::move(entry));
   }
   return {{"lattice", {{"origin", triple(l.origin)}, {"voxel_size", l.voxel_size}, {"units", l.units}}},
           {"list", std::move(list)}};
@@ -201,6 +207,26 @@ Result<V> real3(const Reader& r, const json& j, const char* key) {
   return out;
 }
 
+// A part's optional "feeder": the cylinder a feeder part was made from (model units, before the placement).
+Result<std::optional<Feeder>> readFeeder(const Reader& r, const json& j) {
+  if (!j.contains("feeder")) return std::optional<Feeder>();
+  const json& fj = j["feeder"];
+  if (!fj.is_object()) return r.bad("a part's 'feeder' is not a JSON object");
+  auto base = real3<glm::dvec3>(r, fj, "base");
+  if (!base) return base.error();
+  Feeder f;
+  f.base = *base;
+  for (const auto& [key, value] : {std::pair("diameter", &f.diameter), std::pair("height", &f.height)}) {
+    auto m = member(r, fj, key);
+    if (!m) return m.error();
+    auto d = real(r, **m, std::string("the feeder's '") + key + "'");
+    if (!d) return d.error();
+    if (!(*d > 0.0)) return r.bad(std::string("a feeder's '") + key + "' is not a positive number");
+    *value = *d;
+  }
+  return std::optional<Feeder>(f);
+}
+
 Result<Part> readPart(Reader& r, const json& j, const Lattice& lattice) {
   Part p;
   if (!j.is_object()) return r.bad("a part in the manifest is not a JSON object");
@@ -216,6 +242,8 @@ Result<Part> readPart(Reader& r, const json& j, const Lattice& lattice) {
   if (!translation) return translation.error();
   auto turns = lattice3(r, j, "quarter_turns");
   if (!turns) return turns.error();
+  auto feeder = readFeeder(r, j);
+  if (!feeder) return feeder.error();
   auto voxels = text(r, j, "voxels");
   if (!voxels) return voxels.error();
   auto grid = r.grid(*voxels);
@@ -230,6 +258,10 @@ Result<Part> readPart(Reader& r, const json& j, const Lattice& lattice) {
   p.voxels.grid.frame() = lattice.frameAt(*first, p.voxels.grid.frame().source);
   p.placement.translation = *translation;
   p.placement.quarter_turns = *turns & 3;
+  p.feeder = *feeder;
+  if (p.feeder && p.placement.quarter_turns != glm::ivec3(0)) {
+    return r.bad("feeder part " + quoteBytes(*name) + " is turned; a feeder stands upright");
+  }
   return p;
 }
 
@@ -279,6 +311,7 @@ Result<Assembly> readParts(Reader& r, const json& j) {
     const size_t k = parts.addPart(std::move(p->voxels), p->name);
     parts.part(k).colour = p->colour;
     parts.part(k).visible = p->visible;
+    parts.part(k).feeder = p->feeder;
     parts.setPlacement(k, p->placement);
   }
   if (Status s = checkExtent(r, parts); !s) return s.error();

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <set>
@@ -18,6 +19,7 @@
 #include "app/measure.h"
 #include "app/operations.h"
 #include "app/casting.h"
+#include "app/parts.h"
 #include "app/print.h"
 #include "app/script.h"
 #include "app/script_runner.h"
@@ -1206,13 +1208,8 @@ TEST(AppScriptRun, theCastingPanelSimulatesAndPlacesAFeeder) {
   ASSERT_FALSE(r->run.result.hot_spots.empty());
   EXPECT_EQ(r->key.alloy, "aluminium");
 
-  Harness hf;
-  ASSERT_TRUE(runScript(state, hf, "casting-place-feeder 10 10 11\ncasting-hot-spot 1\n")) << hf.last_error;
-  ASSERT_EQ(state.casting_ui.chosen.feeders.size(), 1u);
-  const Feeder& f = state.casting_ui.chosen.feeders[0];
-  EXPECT_NEAR(f.base.z, 12.0, 1e-9);  // on the block's top
-  EXPECT_NEAR(feederModulus(f), 1.2 * r->run.result.hot_spots[0].modulus, 1e-6);
-  EXPECT_TRUE(castingStale(state));
+  Harness hsel;
+  ASSERT_TRUE(runScript(state, hsel, "casting-hot-spot 1\n")) << hsel.last_error;
   ASSERT_NE(selectedCastingSpot(state), nullptr);
 
   Harness hb;
@@ -1223,22 +1220,66 @@ TEST(AppScriptRun, theCastingPanelSimulatesAndPlacesAFeeder) {
   EXPECT_EQ(state.casting_ui.chosen.alloy, "aluminium");
   EXPECT_EQ(state.casting_ui.chosen.superheat_k, 50.0);
 
+  // a cancelled run (other settings) leaves the last result shown
+  state.casting_ui.chosen.superheat_k = 60.0;
   simulateCasting(state);
   requestCasting(state);
   ASSERT_TRUE(state.casting.busy());
   cancelCasting(state);
   EXPECT_FALSE(state.casting.busy());
-  EXPECT_EQ(currentCasting(state), r);  // the last result stays
+  EXPECT_EQ(currentCasting(state), r);
+  state.casting_ui.chosen.superheat_k = 50.0;
+
+  // the feeder is a part of the scene: placed (undoable), the model now holds its metal
+  const int64_t block_voxels = state.model.filledCount();
+  const double spot_modulus = r->run.result.hot_spots[0].modulus;
+  Harness hf;
+  ASSERT_TRUE(runScript(state, hf, "casting-place-feeder 10 10 11\n")) << hf.last_error;
+  ASSERT_EQ(feederParts(state).size(), 1u);
+  ASSERT_NE(currentParts(state), nullptr);
+  EXPECT_EQ(currentParts(state)->size(), 2u);
+  EXPECT_GT(state.model.filledCount(), block_voxels);
+  const Feeder f = placedFeeders(state).at(0);
+  EXPECT_NEAR(f.base.z, 12.0, 1e-9);  // on the block's top
+  EXPECT_NEAR(feederModulus(f), 1.2 * spot_modulus, 1e-6);
+  EXPECT_EQ(currentCasting(state), nullptr);  // the parts changed: the last run is not this model's
+  EXPECT_EQ(wantedCastingKey(state).feeders.size(), 1u);
+
   ASSERT_TRUE(dispatch(state, ActionId::kSimulateCasting));
   ASSERT_TRUE(pump(state, [&] {
     requestCasting(state);
     return currentCasting(state) != nullptr && !castingStale(state) && !state.casting.busy();
   }));
-  EXPECT_EQ(currentCasting(state)->run.result.feeders.size(), 1u);
-  EXPECT_GT(currentCasting(state)->run.result.yield, 0.5);
+  const CastingOutcome* fed = currentCasting(state);
+  EXPECT_EQ(fed->run.result.feeders.size(), 1u);
+  EXPECT_GT(fed->run.result.yield, 0.5);
+  EXPECT_NEAR(fed->run.result.casting_volume, double(block_voxels) * std::pow(state.model.voxelSize(), 3), 1e-6);
+  // the feeder's metal, a voxel of the model, has its time (the views colour it)
+  const glm::dvec3 top = (f.base - state.model.frame().origin) / state.model.voxelSize();
+  const glm::ivec3 in_feeder(int(top.x), int(top.y), int(top.z) + 1);
+  ASSERT_TRUE(state.model.get(in_feeder.x, in_feeder.y, in_feeder.z));
+  EXPECT_GT(castingFieldAt(*fed, CastingField::kTime, in_feeder), 0.0f);
+
+  // moved in the Parts panel (the run's feeder moves with it), never turned; undo takes the move back
+  const size_t k = feederParts(state)[0];
+  const std::string n = std::to_string(k + 1);
+  Harness hm;
+  const std::string step = std::to_string(state.model.voxelSize());
+  ASSERT_TRUE(
+      runScript(state, hm, "place-part " + n + " " + step + " 0 0\nexpect-error never turned\nturn-part " + n + " x\n"))
+      << hm.last_error;
+  EXPECT_NEAR(placedFeeders(state).at(0).base.x, f.base.x + state.model.voxelSize(), 1e-9);
+  EXPECT_TRUE(castingStale(state) || currentCasting(state) == nullptr);
+  ASSERT_TRUE(dispatch(state, ActionId::kUndo));
+  EXPECT_NEAR(placedFeeders(state).at(0).base.x, f.base.x, 1e-9);
+  EXPECT_EQ(currentCasting(state), fed);  // the model the run was for is back
+
   Harness hd;
-  ASSERT_TRUE(runScript(state, hd, "casting-delete-feeder 1\ncasting-time 1\ncasting-field niyama\n")) << hd.last_error;
-  EXPECT_TRUE(state.casting_ui.chosen.feeders.empty());
+  ASSERT_TRUE(runScript(state, hd, "casting-time 1\ncasting-field niyama\ncasting-delete-feeder 1\n")) << hd.last_error;
+  EXPECT_TRUE(feederParts(state).empty());
+  EXPECT_EQ(state.model.filledCount(), block_voxels);
+  ASSERT_TRUE(dispatch(state, ActionId::kUndo));  // the feeder back
+  EXPECT_EQ(feederParts(state).size(), 1u);
 }
 
 }  // namespace

@@ -81,13 +81,15 @@ checks=$((checks + 1))
 echo "ok $checks - support $up mm^3 up, $down mm^3 down"
 
 # The Casting panel: the block without units says so and is simulated once they are chosen; "Place a feeder" waits for
-# a click; the feeder placed on the top is simulated with the block.
+# a click; the feeder placed on the top is a part (undone, done again) and is simulated with the block.
 grep -q "^rect_Model units = " "$out/casting_units.txt" || fail "the Casting panel offers no units for a unitless part"
 expect casting.txt casting_run_feeders 0
 expect casting.txt casting_sound 0
 expect casting_placing.txt casting_placing_feeder 1
 expect casting_feeder.txt casting_feeders 1
 expect casting_feeder.txt casting_run_feeders 1
+expect casting_feeder.txt parts 2
+expect casting_undo.txt casting_feeders 0
 [[ -n "$(get casting.txt casting_solidification_s)" ]] || fail "the casting was not simulated"
 
 # Every panel pressed, with the assembly and with one model: 18 rounds, each with more than the 3D view's buttons.

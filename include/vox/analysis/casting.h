@@ -15,6 +15,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vector_relational.hpp>
 
+#include "vox/core/feeder.h"
 #include "vox/core/progress.h"
 #include "vox/core/result.h"
 #include "vox/core/scalar_field.h"
@@ -45,23 +46,7 @@ const MouldMaterial* findMould(std::string_view name);
 std::string alloyNames();  // "aluminium, a356, ..." for messages
 std::string mouldNames();
 
-// ---- Feeders ----
-// A cylinder of diameter D and height H standing on the point `base` of the part, along +Z (model units): the
-// voxels whose centres lie within D / 2 of the axis and between base.z and base.z + H.
-struct Feeder {
-  glm::dvec3 base{0.0};
-  double diameter = 0.0, height = 0.0;
-  bool operator==(const Feeder&) const = default;
-};
-// The feeder's Chvorinov modulus V/A, its foot (where it stands on the part) not counted as cooling surface:
-// D H / (4 H + D).
-double feederModulus(const Feeder& feeder);
-// "cylinder:X,Y,Z,D,H" (model units), D and H positive.
-Result<Feeder> parseFeeder(std::string_view text);
-// The cylinder's voxels on the lattice of `frame` (any index, inside the grid or not), inclusive index box; false
-// when it lies too far out (2^28 voxels) for indices to hold.
-bool feederBox(const Feeder& feeder, const GridFrame& frame, glm::ivec3& lo, glm::ivec3& hi);
-bool inFeeder(const Feeder& feeder, const GridFrame& frame, glm::ivec3 voxel);
+// ---- Feeders: vox/core/feeder.h ----
 
 // ---- The simulation ----
 struct CastingParams {

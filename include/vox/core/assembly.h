@@ -5,11 +5,13 @@
 // Adding a part never touches the others: the assembly's extent is just the union of the parts' placed boxes.
 // What the window's Parts panel edits; operations between parts are in vox/analysis/assembly.h.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "vox/core/feeder.h"
 #include "vox/core/lattice.h"
 #include "vox/core/result.h"
 #include "vox/core/voxel_grid.h"
@@ -29,6 +31,9 @@ struct Part {
   bool visible = true;
   LatticeGrid voxels;  // as added, before the placement
   PartPlacement placement;
+  // A casting's feeder (the Casting panel places them as parts): the cylinder its voxels were made from, in model
+  // units before the placement. A feeder is moved, never turned (it stands along +Z).
+  std::optional<Feeder> feeder;
 };
 
 // A distinct colour for part `i` (a fixed palette, repeating with a small change of brightness after 12 parts).
@@ -65,6 +70,8 @@ class Assembly {
   glm::ivec3 snapTranslation(const glm::dvec3& model_units) const;
   // The part's voxels with its placement applied (no copy of the voxels when it has no quarter turns).
   LatticeGrid placedVoxels(size_t i) const;
+  // Part i's feeder moved by its placement's translation (model units), or none when the part is not a feeder.
+  std::optional<Feeder> placedFeeder(size_t i) const;
   // Every part placed (the order of parts()).
   std::vector<LatticeGrid> placedParts() const;
   // The union of the parts' placed boxes (empty for no parts).

@@ -10,6 +10,7 @@
 #include "app/actions.h"
 #include "app/casting.h"
 #include "app/document.h"  // setModelUnits
+#include "app/parts.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
 #include "vox/core/units.h"
@@ -76,19 +77,23 @@ void feeders(AppState& state, const std::string& units) {
   helpMarker(
       "Click where the feeder should stand: it stands on the part's top there, sized to 1.2 times the modulus "
       "of the nearest isolated hot spot of the last run (simulate first).");
-  if (ui.chosen.feeders.empty()) {
+  const std::vector<size_t> rows = feederParts(state);
+  if (rows.empty()) {
     ImGui::TextDisabled("None.");
     return;
   }
-  for (size_t i = 0; i < ui.chosen.feeders.size(); ++i) {
-    const Feeder& f = ui.chosen.feeders[i];
+  const Assembly& parts = *currentParts(state);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const Feeder f = *parts.placedFeeder(rows[i]);
     ImGui::PushID(int(i));
-    ImGui::Text("%zu. D %s, H %s at (%.4g, %.4g, %.4g)", i + 1, formatLength(f.diameter, units).c_str(),
-                formatLength(f.height, units).c_str(), f.base.x, f.base.y, f.base.z);
+    ImGui::Text("%s: D %s, H %s at (%.4g, %.4g, %.4g)", parts.part(rows[i]).name.c_str(),
+                formatLength(f.diameter, units).c_str(), formatLength(f.height, units).c_str(), f.base.x, f.base.y,
+                f.base.z);
     ImGui::SameLine();
     if (widget::SmallButton("Delete")) dispatchValues(state, ActionId::kCastingDeleteFeeder, {std::to_string(i + 1)});
     ImGui::PopID();
   }
+  ImGui::TextDisabled("Feeders are parts: the Parts panel moves them; Undo takes a change back.");
 }
 
 // The run: its progress, or the button that starts it; returns the result to show, if any.

@@ -3,13 +3,16 @@
 #include "vox/io/project_file.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "io/zip_package.h"
 #include "support/test_support.h"
+#include "vox/core/feeder.h"
 #include "vox/io/voxel_file.h"
 
 namespace vox::io {
@@ -160,6 +163,42 @@ TEST(ProjectFile, damagedProjectsAreRefusedNamingTheFileAndTheProblem) {
                   }
                 }),
                 ErrorCode::kParse, "parts/001.vxm");
+}
+
+// A casting's feeder is a part that remembers its cylinder: it comes back as a feeder, moved with its placement; a
+// feeder whose size is not positive, or a turned one, is refused.
+TEST(ProjectFile, aFeederPartComesBackAsAFeeder) {
+  ProjectFile p = assemblyProject();
+  const Feeder feeder{{-1.0, 2.0, 2.25}, 2.0, 3.0};
+  auto voxels = feederVoxels(feeder, p.parts->lattice());
+  ASSERT_TRUE(voxels.ok()) << voxels.error().message;
+  const size_t k = p.parts->addPart(std::move(voxels).value(), "feeder 1");
+  p.parts->part(k).feeder = feeder;
+  p.parts->setPlacement(k, PartPlacement{{2, 0, 0}, {0, 0, 0}});
+  auto bytes = encodeProject(p, "f.vxp");
+  ASSERT_TRUE(bytes.ok()) << bytes.error().message;
+  auto back = decodeProject(*bytes, "f.vxp");
+  ASSERT_TRUE(back.ok()) << back.error().message;
+  ASSERT_EQ(back->parts->size(), 3u);
+  EXPECT_FALSE(back->parts->part(0).feeder.has_value());
+  ASSERT_TRUE(back->parts->part(k).feeder.has_value());
+  EXPECT_EQ(*back->parts->part(k).feeder, feeder);
+  const std::optional<Feeder> placed = back->parts->placedFeeder(k);
+  ASSERT_TRUE(placed.has_value());
+  EXPECT_DOUBLE_EQ(placed->base.x, feeder.base.x + 2 * 0.5);
+
+  const auto refused = [&](const std::function<void(nlohmann::json&)>& edit, const std::string& words) {
+    auto entries = readZip(*bytes, "f.vxp", "voxmod project", 1 << 30);
+    nlohmann::json m = nlohmann::json::parse(manifestOf(*entries));
+    edit(m["parts"]["list"][k]);
+    setManifest(*entries, m.dump(2));
+    expectRefused(*writeZip(*entries, "broken.vxp", false), ErrorCode::kParse, words);
+  };
+  refused([](nlohmann::json& f) { f["feeder"]["diameter"] = -2.0; }, "'diameter' is not a positive number");
+  refused([](nlohmann::json& f) { f["feeder"]["height"] = 0.0; }, "'height' is not a positive number");
+  refused([](nlohmann::json& f) { f["feeder"] = 5; }, "'feeder' is not a JSON object");
+  refused([](nlohmann::json& f) { f["feeder"].erase("base"); }, "no 'base'");
+  refused([](nlohmann::json& f) { f["quarter_turns"] = {1, 0, 0}; }, "a feeder stands upright");
 }
 
 // Values a reader must not take on trust: each is refused before any grid is allocated from it.
