@@ -379,15 +379,20 @@ class HotSpotSearch {
     });
   }
 
-  // 4. Kruskal's merge from the highest edge down. The higher summit of two sets survives (the earlier among equals);
-  // the other dies at the edge's level, unless both summits lie at that level: then they are one plateau.
+  // 4. Kruskal's merge from the highest edge down (among equal levels, the lower pair of summits' numbers first). The
+  // higher summit of two sets survives (the earlier among equals); the other dies at the edge's level, unless both
+  // summits lie at that level: then they are one plateau.
   void mergeBasins() {
     std::vector<std::pair<uint32_t, uint64_t>> edges;
     for (const EdgeTable& table : tables_)
       for (const EdgeTable::Edge& e : table.slots())
         if (e.pair != EdgeTable::kEmpty) edges.emplace_back(e.level, e.pair);
     tables_ = {};
-    std::sort(edges.begin(), edges.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    // highest first, and among equal levels by the pair: the threads' tables hold the edges in an order that depends
+    // on which thread met them, and which of two sets a third dies into at one level must not
+    std::sort(edges.begin(), edges.end(), [](const auto& a, const auto& b) {
+      return a.first != b.first ? a.first > b.first : a.second < b.second;
+    });
     std::vector<uint32_t> parent(comps_.size());
     plateau_.resize(comps_.size());
     for (uint32_t k = 0; k < comps_.size(); ++k) parent[k] = plateau_[k] = k;
