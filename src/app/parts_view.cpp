@@ -7,6 +7,8 @@
 
 #include "app/messages.h"
 #include "app/parts.h"
+#include "app/casting_view.h"
+#include "app/print_view.h"
 #include "app/thickness_view.h"
 
 namespace vox::app {
@@ -92,7 +94,8 @@ void syncPartRenderers(AppState& state) {
 bool drawsParts(const AppState& state) {
   const Assembly* parts = currentParts(state);
   return parts && state.viewport.parts.size() == parts->size() && state.viewport.parts_version != 0 &&
-         !shownThickness(state);  // the thickness colours the model's points
+         // the thickness, printability and casting colour the model's points
+         !shownThickness(state) && !shownPrint(state) && !shownCasting(state);
 }
 
 std::optional<render::Box3> partsBounds(const AppState& state) {
