@@ -9,6 +9,8 @@
 
 #include "app/actions.h"
 #include "app/app_state.h"
+#include "app/casting.h"
+#include "app/document.h"
 #include "app/operations.h"
 #include "app/parts.h"
 #include "app/parts_view.h"
@@ -357,6 +359,47 @@ TEST(AppParts, theThicknessPanelDrawsTheModelColouredNotTheParts) {
   EXPECT_FALSE(drawsParts(state));
   EXPECT_EQ(state.viewport.uploaded_version, state.model_version);
   EXPECT_TRUE(state.viewport.renderer->hasScalarVolume());
+  ASSERT_TRUE(run(state, "panel-parts").ok());
+  syncRenderers(state);
+  EXPECT_TRUE(drawsParts(state));
+  shutdownViewport(state);
+}
+
+// So do the Casting panel's colours on a casting with a feeder (a part of the scene): the model's points, the feeder's
+// metal among them, coloured by when they froze.
+TEST(AppParts, theCastingPanelDrawsTheModelColouredNotTheParts) {
+  auto context = llvmpipeContext();
+  VOX_SKIP_WITHOUT_GL(context);
+  test::TempDir dir;
+  ASSERT_TRUE(io::saveStlBinary(threeBodies(), dir / "train.stl").ok());
+  AppState state;
+  ASSERT_TRUE(initViewport(state).ok());
+  openVoxelized(state, dir / "train.stl", 48);
+  setModelUnits(state, "mm");
+  glm::ivec3 top(-1);  // a voxel of the part's top layer: the feeder stands on it
+  for (int32_t z = 0; z < state.model.nz(); ++z)
+    for (int32_t y = 0; y < state.model.ny(); ++y)
+      for (int32_t x = 0; x < state.model.nx(); ++x)
+        if (state.model.get(x, y, z)) top = glm::ivec3(x, y, z);
+  ASSERT_GE(top.z, 0);
+  const glm::dvec3 at = state.model.frame().voxelCentre(top.x, top.y, top.z);
+  const double h = state.model.voxelSize();
+  ASSERT_TRUE(run(state, "casting-feeder " + std::to_string(at.x) + " " + std::to_string(at.y) + " " +
+                             std::to_string(at.z + 0.5 * h) + " " + std::to_string(4 * h) + " " + std::to_string(6 * h))
+                  .ok());
+  ASSERT_NE(currentParts(state), nullptr);
+  syncRenderers(state);
+  ASSERT_TRUE(drawsParts(state));
+  ASSERT_TRUE(dispatch(state, ActionId::kSimulateCasting));
+  ASSERT_TRUE(pump(state, [&] {
+    requestCasting(state);
+    return currentCasting(state) != nullptr && !state.casting.busy();
+  }));
+  syncRenderers(state);
+  EXPECT_FALSE(drawsParts(state));
+  EXPECT_EQ(state.viewport.uploaded_version, state.model_version);
+  EXPECT_TRUE(state.viewport.renderer->hasScalarVolume());
+  EXPECT_EQ(currentCasting(state)->run.result.feeders.size(), 1u);
   ASSERT_TRUE(run(state, "panel-parts").ok());
   syncRenderers(state);
   EXPECT_TRUE(drawsParts(state));
