@@ -1,4 +1,4 @@
-// voxmod casting (SPEC 10; docs/conventions.md, "Casting"): the part poured in an alloy into a mould, with its
+// voxmod casting (docs/conventions.md, "Casting"): the part poured in an alloy into a mould, with its
 // feeders: when each voxel freezes, the hot spots that freeze last and whether a feeder reaches them, the verdict.
 // The solidification time, modulus and Niyama fields as volumes and a section as a PNG; the files asked for are
 // written together or not at all.

@@ -1,4 +1,4 @@
-// voxmod printcheck (SPEC 11; docs/conventions.md, "Printability"): overhangs and support along a build direction,
+// voxmod printcheck (docs/conventions.md, "Printability"): overhangs and support along a build direction,
 // trapped cavities with their drains and, with --orient, the build directions ranked by support. The overhang and
 // support voxels as volumes; the files asked for are written together or not at all.
 #include <algorithm>

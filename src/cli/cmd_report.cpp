@@ -1,4 +1,4 @@
-// voxmod report FILE -o OUT.html (SPEC 12; vox/workflow/report.h): one self-contained HTML page of what voxmod
+// voxmod report FILE -o OUT.html (vox/workflow/report.h): one self-contained HTML page of what voxmod
 // computes of the part, with a rendered view (headless; left out, with a note, where no OpenGL can be had).
 #include <filesystem>
 #include <memory>

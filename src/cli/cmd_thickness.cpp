@@ -28,7 +28,7 @@ namespace {
 struct ThicknessOptions {
   CommonOptions c;
   double min_wall = 0.0;  // model units; 0: no thin-wall report
-  bool edges = false;     // thin regions by local thickness alone, convex edges included (SPEC 6)
+  bool edges = false;     // thin regions by local thickness alone, convex edges included
   double ray_angle = 30.0;
   double min_area = -1.0;         // model units^2; < 0: min_wall^2
   std::string method = "sphere";  // the field -o and --png show: sphere (local thickness) or ray

@@ -1,5 +1,5 @@
 #pragma once
-// Casting solidification (`voxmod casting`, the window's Casting panel; SPEC 10; docs/conventions.md, "Casting"):
+// Casting solidification (`voxmod casting`, the window's Casting panel; docs/conventions.md, "Casting"):
 //  - materials: alloys and moulds with cited properties (casting_materials.cpp);
 //  - feeders: cylinders standing on the part along +Z, voxelized on the part's lattice;
 //  - the simulation: transient conduction with latent heat (an enthalpy formulation) over the metal and an envelope

@@ -1,5 +1,5 @@
 #pragma once
-// Printability for additive manufacturing (`voxmod printcheck`, the Print panel; SPEC 11, docs/conventions.md,
+// Printability for additive manufacturing (`voxmod printcheck`, the Print panel; docs/conventions.md,
 // "Printability"):
 //  - overhangs: surfaces facing down more steeply than the overhang angle (measured from the vertical: a vertical
 //    wall is 0 degrees, a ceiling 90), except those lying on the build plate (the part's lowest voxel layer);

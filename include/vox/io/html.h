@@ -1,5 +1,5 @@
 #pragma once
-// Pieces of self-contained HTML pages (the report, SPEC 12): text escaped for HTML, and PNG bytes as a data URI
+// Pieces of self-contained HTML pages (the report): text escaped for HTML, and PNG bytes as a data URI
 // (base64 by VTK's vtkBase64Utilities), so that a page carries its pictures.
 #include <cstdint>
 #include <string>

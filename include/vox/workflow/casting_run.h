@@ -1,5 +1,5 @@
 #pragma once
-// The casting pipeline both front ends run (vox/analysis/casting.h; SPEC 10): the part's geometric modulus (the
+// The casting pipeline both front ends run (vox/analysis/casting.h): the part's geometric modulus (the
 // distance field, local thickness, the hot spots' regions), then the solidification of the part with its feeders in
 // its mould. `voxmod casting` and the window's Casting panel call this one function.
 #include <functional>

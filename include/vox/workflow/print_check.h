@@ -1,5 +1,5 @@
 #pragma once
-// The printability pipeline both front ends run (vox/analysis/printability.h; SPEC 11): the part's surface made
+// The printability pipeline both front ends run (vox/analysis/printability.h): the part's surface made
 // ready for rays, the overhangs and support along the build direction, the trapped cavities and, when asked, the
 // search over build directions. `voxmod printcheck` and the window's Print panel call this one function.
 #include <functional>

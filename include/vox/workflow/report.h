@@ -1,5 +1,5 @@
 #pragma once
-// The report (`voxmod report`, SPEC 12): one self-contained HTML page of what voxmod computes of a part, numbers with
+// The report (`voxmod report`): one self-contained HTML page of what voxmod computes of a part, numbers with
 // their units and pictures embedded as PNG data: the model (dims, voxel size, volume with its bound, box, centroid,
 // mass for a material), the walls (local thickness, the thinnest wall, the walls under a minimum wall), the hot spots
 // with their moduli, printability upright (overhang, support, trapped cavities) and a section through the middle

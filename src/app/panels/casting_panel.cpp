@@ -1,4 +1,4 @@
-// Casting panel (SPEC 10): the part poured in an alloy into a mould, with feeders placed by clicking the part or
+// Casting panel (docs/conventions.md, "Casting"): the part poured in an alloy into a mould, with feeders placed by clicking the part or
 // typed; the run in the background with its progress and cancel; the verdict, the hot spots (a click takes the section
 // there), the time slider and Play for the freezing front, and which field the views colour by.
 #include <algorithm>
