@@ -17,19 +17,12 @@
 #include "vox/core/grid_placement.h"
 #include "vox/core/text.h"
 #include "vox/core/units.h"
-#include "vox/io/mesh_file.h"
-#include "vox/io/stl.h"
-#include "vox/io/voxel_file.h"
-#include "vox/voxelize/bodies.h"
+#include "vox/workflow/parts_input.h"
 
 namespace vox::app {
 namespace {
 
 using PartsResult = Result<std::shared_ptr<const Assembly>>;
-
-// A voxel model with more components than this keeps the largest ones as parts and gathers the rest (loose islands,
-// stray voxels) into one part, so a noisy scan does not become thousands of parts.
-constexpr size_t kMaxComponentParts = 200;
 
 Error partsError(std::string message) { return makeError(ErrorCode::kInvalidArgument, std::move(message)); }
 
@@ -67,87 +60,9 @@ void commitLook(AppState& state, std::shared_ptr<const Assembly> parts, std::str
   state.viewport.dirty = true;
 }
 
-// The bodies of a mesh, each voxelized on the lattice of `model` (the mesh's own grid, as shown): the file's own
-// bodies, named as the file names them (a CAD file's solids, the objects of a file with several), else its shells.
-PartsResult splitMesh(const MeshSource& source, VoxelizeParams params, const VoxelGrid& model,
-                      const ProgressFn& progress) {
-  params.placement = placeGridOnLattice(model.frame(), glm::ivec3(0), model.dims());
-  params.units = model.frame().units;
-  const auto given = io::fileBodies(source.bodies, source.mesh.triangles.size(), source.cad != nullptr);
-  auto bodies = voxelizeBodies(source.mesh, params, progress, given ? &given->bodies : nullptr);
-  if (!bodies) return bodies.error();
-  auto scene = std::make_shared<Assembly>(bodies->lattice);
-  for (size_t i = 0; i < bodies->bodies.size(); ++i) {
-    BodyVoxels& b = bodies->bodies[i];
-    if (b.filled == 0) continue;  // a body too thin for this lattice has no voxels to show
-    const size_t k = scene->addPart(std::move(b.voxels), given ? given->names[i] : "body " + std::to_string(i));
-    scene->part(k).colour = partColour(k);
-  }
-  if (scene->size() == 0) return partsError("no body of the mesh has a voxel at this resolution");
-  return std::shared_ptr<const Assembly>(std::move(scene));
-}
-
-// The connected components of a voxel model, largest first.
-PartsResult splitComponents(const VoxelGrid& model, Connectivity connectivity) {
-  const Components comps = findComponents(model, connectivity);
-  if (comps.components.empty()) return partsError("the model has no voxels to split");
-  const Lattice lattice = latticeOf(model.frame());
-  auto scene = std::make_shared<Assembly>(lattice);
-  const size_t kept = std::min(comps.components.size(), kMaxComponentParts);
-  LatticeGrid taken{VoxelGrid(model.dims(), model.frame()), glm::ivec3(0)};
-  for (size_t i = 0; i < kept; ++i) {
-    const Component& c = comps.components[i];
-    LatticeGrid whole{componentGrid(model, comps, i), glm::ivec3(0)};
-    if (kept < comps.components.size()) taken = booleanParts(taken, whole, PartOp::kUnion, lattice);
-    LatticeGrid part = reframe(whole, Box3i{c.box_min, c.box_max + 1}, lattice);
-    const size_t k = scene->addPart(std::move(part), "component " + std::to_string(i + 1));
-    scene->part(k).colour = partColour(k);
-  }
-  if (kept < comps.components.size()) {
-    LatticeGrid rest = booleanParts(LatticeGrid{model, glm::ivec3(0)}, taken, PartOp::kDifference, lattice);
-    const Box3i box = filledBox(rest);
-    const size_t k = scene->addPart(reframe(rest, box, lattice),
-                                    std::to_string(comps.components.size() - kept) + " smaller components");
-    scene->part(k).colour = partColour(k);
-  }
-  return std::shared_ptr<const Assembly>(std::move(scene));
-}
-
-// A file added to `scene` as a part: a voxel file on the scene's lattice, a mesh voxelized on it.
-PartsResult addFile(Assembly scene, const std::filesystem::path& path, VoxelizeParams params,
-                    const ProgressFn& progress) {
-  const std::string name = path.filename().string();
-  if (io::isVoxelFile(path)) {
-    auto grid = io::loadVoxelFile(path);
-    if (!grid) return grid.error();
-    auto added = scene.addGrid(std::move(grid).value(), name);
-    if (!added) return added.error();
-    scene.part(*added).colour = partColour(*added);
-    return std::shared_ptr<const Assembly>(std::make_shared<Assembly>(std::move(scene)));
-  }
-  // Any mesh or CAD file (io::loadMeshFile); a CAD file is tessellated for the scene's voxel size.
-  io::MeshFileOptions options;
-  options.resolution = params.resolution;
-  options.voxel_size = scene.hasLattice() ? scene.lattice().voxel_size : params.voxel_size;
-  options.progress = progress;
-  auto stl = io::loadMeshFile(path, options);
-  if (!stl) return stl.error();
-  if (scene.hasLattice()) {
-    auto placement = placeBoundsOnLattice(scene.lattice().frameAt(glm::ivec3(0)), stl->mesh.bounds());
-    if (!placement) return makeError(placement.error().code, name + ": " + placement.error().message);
-    params.placement = *placement;
-    params.units = scene.lattice().units;
-  }
-  auto r = voxelizeSolid(stl->mesh, params, progress);
-  if (!r) return makeError(r.error().code, name + ": " + r.error().message);
-  if (!scene.hasLattice()) {
-    auto added = scene.addGrid(std::move(r->grid), name);
-    if (!added) return added.error();
-  } else {
-    scene.addPart(LatticeGrid{std::move(r->grid), params.placement->first}, name);
-  }
-  scene.part(scene.size() - 1).colour = partColour(scene.size() - 1);
-  return std::shared_ptr<const Assembly>(std::make_shared<Assembly>(std::move(scene)));
+PartsResult shared(Result<Assembly> scene) {
+  if (!scene) return scene.error();
+  return std::shared_ptr<const Assembly>(std::make_shared<Assembly>(std::move(scene).value()));
 }
 
 void startPartsJob(AppState& state, const std::string& label, std::string undo_label,
@@ -220,12 +135,14 @@ void startSplitBodies(AppState& state) {
     auto mesh = state.doc.mesh;
     VoxelizeParams params = state.voxelize_job_params;
     startPartsJob(
-        state, "Splitting into bodies", "split into bodies",
-        [mesh, params, model](const ProgressFn& progress) { return splitMesh(*mesh, params, model, progress); });
+        state, "Splitting into bodies", "split into bodies", [mesh, params, model](const ProgressFn& progress) {
+          return shared(
+              workflow::splitMeshIntoBodies(mesh->mesh, mesh->bodies, mesh->cad != nullptr, params, model, progress));
+        });
   } else {
     const Connectivity c = state.parts_ui.connectivity;
     startPartsJob(state, "Finding connected components", "split into components",
-                  [model, c](const ProgressFn&) { return splitComponents(model, c); });
+                  [model, c](const ProgressFn&) { return shared(workflow::splitIntoComponents(model, c)); });
   }
 }
 
@@ -234,7 +151,7 @@ void startAddPart(AppState& state, const std::filesystem::path& path) {
   VoxelizeParams params = state.voxelize_job_params;
   startPartsJob(state, "Adding " + path.filename().string(), "add part " + path.filename().string(),
                 [scene = std::move(scene), path, params](const ProgressFn& progress) {
-                  return addFile(scene, path, params, progress);
+                  return shared(workflow::addFileAsPart(scene, path, params, progress));
                 });
 }
 

@@ -20,6 +20,7 @@
 #include "app/thickness_view.h"
 #include "app/view_export.h"
 #include "app/view_overlays.h"
+#include "app/viewport_input.h"
 #include "vox/io/image_io.h"
 #include "vox/render/gl.h"
 
@@ -31,8 +32,6 @@ constexpr glm::vec3 kCoreColour{1.0f, 0.2f, 0.85f};
 constexpr float kGhostOpacity = 0.14f;  // the whole part around a peeled one: visible, never in the way
 constexpr glm::vec3 kDisputedColour{1.0f, 0.85f, 0.1f};
 constexpr glm::vec3 kOverlapColour{1.0f, 0.12f, 0.1f};
-constexpr double kOrbitDegreesPerPixel = 0.4;
-constexpr double kZoomPerWheelStep = 1.15;
 // Points a frame may draw: while the camera moves (llvmpipe draws about 8 million a second on 2 cores), and once it
 // rests, when the view refines to full detail if the model's surface has no more points than this (R = 1000 parts
 // have 1 to 5 million), else to the finest level that does.
@@ -196,82 +195,6 @@ void renderView(AppState& state, int w, int h, bool coarse) {
   vp.draw_ms = (nowSeconds() - t0) * 1000.0;
 }
 
-void drawToolbar(AppState& state, ImVec2 pos) {
-  ImGui::SetCursorScreenPos(pos);
-  const ActionId views[] = {ActionId::kViewFit,  ActionId::kViewIso,  ActionId::kViewPosX, ActionId::kViewNegX,
-                            ActionId::kViewPosY, ActionId::kViewNegY, ActionId::kViewPosZ, ActionId::kViewNegZ};
-  const char* short_labels[] = {"Fit", "Iso", "+X", "-X", "+Y", "-Y", "+Z", "-Z"};
-  for (size_t i = 0; i < std::size(views); ++i) {
-    if (i > 0) ImGui::SameLine(0.0f, 2.0f);
-    if (widget::SmallButton(short_labels[i])) dispatch(state, views[i]);
-    if (ImGui::IsItemHovered()) {
-      const Action& a = action(views[i]);
-      const std::string sc = shortcutText(a.shortcut);
-      ImGui::SetTooltip("%s%s%s%s", a.label, sc.empty() ? "" : " (", sc.c_str(), sc.empty() ? "" : ")");
-    }
-  }
-}
-
-// The surface voxel under the mouse in the view at `pos` (w x h pixels), or none.
-std::optional<glm::ivec3> voxelUnderMouse(const AppState& state, ImVec2 pos, int w, int h, double aspect) {
-  if (!state.model_bounds) return std::nullopt;
-  const ImGuiIO& io = ImGui::GetIO();
-  const glm::dmat4 inv = glm::inverse(state.view.camera.viewProjection(aspect, *state.model_bounds));
-  const double nx = 2.0 * double(io.MousePos.x - pos.x) / double(w) - 1.0;
-  const double ny = 1.0 - 2.0 * double(io.MousePos.y - pos.y) / double(h);
-  const auto unproject = [&](double z) {
-    const glm::dvec4 p = inv * glm::dvec4(nx, ny, z, 1.0);
-    return glm::dvec3(p) / p.w;
-  };
-  return pickVoxel(state.model, unproject(-1.0), unproject(1.0));
-}
-
-// Mouse: an invisible button over the whole view takes the drags, so they never reach the panels below it. Drags
-// orbit or pan, the wheel zooms, a double-click fits and Ctrl+click picks a voxel (a click lays a face on the plate
-// while the Print panel waits for one). Returns whether a drag is on.
-bool handleMouse(AppState& state, ImVec2 pos, int w, int h, double aspect) {
-  ImGui::InvisibleButton(
-      "##view", ImVec2(float(w), float(h)),
-      ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
-  const ImGuiIO& io = ImGui::GetIO();
-  bool dragging = false;
-  if (ImGui::IsItemActive()) {
-    const ImVec2 d = io.MouseDelta;
-    const bool pan = ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle) ||
-                     (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift);
-    if (d.x != 0.0f || d.y != 0.0f) {
-      if (pan) {
-        state.view.camera.pan(d.x, d.y, double(h));
-      } else {
-        state.view.camera.orbit(-d.x * kOrbitDegreesPerPixel, d.y * kOrbitDegreesPerPixel);
-      }
-    }
-    dragging = true;
-  }
-  if (ImGui::IsItemHovered()) {
-    if (io.MouseWheel != 0.0f) state.view.camera.zoom(std::pow(kZoomPerWheelStep, double(io.MouseWheel)));
-    if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) state.view.fit_pending = true;
-    // Ctrl+click (a click, not a drag) picks the voxel under the cursor for measuring.
-    const bool click = ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f;
-    if (click && io.KeyCtrl) {
-      if (const auto v = voxelUnderMouse(state, pos, w, h, aspect)) addMeasurePick(state, *v);
-    } else if (click && state.panel == Panel::kCasting && state.casting_ui.placing_feeder) {
-      // the Casting panel's "Place a feeder": on the part's top above the voxel clicked
-      if (const auto v = voxelUnderMouse(state, pos, w, h, aspect)) {
-        dispatchValues(state, ActionId::kCastingPlaceFeeder,
-                       {std::to_string(v->x), std::to_string(v->y), std::to_string(v->z)});
-      }
-    } else if (click && state.panel == Panel::kPrint && state.print_ui.lay_face) {
-      // the Print panel's "Lay a face on the plate": the face clicked goes down
-      if (const auto v = voxelUnderMouse(state, pos, w, h, aspect)) {
-        dispatchValues(state, ActionId::kPrintLayFace,
-                       {std::to_string(v->x), std::to_string(v->y), std::to_string(v->z)});
-      }
-    }
-  }
-  return dragging;
-}
-
 }  // namespace
 
 void syncRenderers(AppState& state) {
@@ -365,7 +288,7 @@ void drawViewport(AppState& state) {
   vp.aspect = aspect;
   fitIfPending(state, w, h);
 
-  const bool dragging = handleMouse(state, pos, w, h, aspect);
+  const bool dragging = handleViewMouse(state, pos, w, h, aspect);
   fitIfPending(state, w, h);
   vp.interacting = vp.interacting || dragging;
   // Coarser points while something moves; at rest the view refines (drawParams: the point budget of each case).
@@ -417,7 +340,7 @@ void drawViewport(AppState& state) {
                   core ? "Core (thickest region) shown through the model" : "Disputed voxels (vote mode)");
     }
   }
-  drawToolbar(state, ImVec2(pos.x + float(w) - 260.0f, pos.y + 6.0f));
+  drawViewToolbar(state, ImVec2(pos.x + float(w) - 260.0f, pos.y + 6.0f));
   ImGui::SetCursorScreenPos(after);
 }
 
