@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "app/measure.h"
 #include "app/operations.h"
@@ -45,12 +48,6 @@ void stepSection(AppState& s, int32_t delta) {
 // Peel actions are relative to the layer shown now.
 int32_t peeled(const AppState& s) { return s.doc.model ? s.doc.model->peeled : 0; }
 
-// A path for the file browser's purpose, as the browser's Save or Open button gives it (errors become dialogs).
-Status acceptPath(AppState& s, BrowserPurpose purpose, const ActionArgs& a) {
-  acceptBrowserPath(s, purpose, a.rest);
-  return Ok{};
-}
-
 }  // namespace
 
 // ---- Conditions ----
@@ -83,55 +80,6 @@ bool canCancel(const AppState& s) {
 bool hasThickness(const AppState& s) { return currentThickness(s) != nullptr; }
 // A depth export needs the skin layers computed (the Skin panel computes them); until then the menu item is off.
 bool hasDepth(const AppState& s) { return currentDepthMap(s) != nullptr; }
-
-// ---- File ----
-void open(AppState& s) { openBrowser(s, BrowserPurpose::kOpen); }
-Status openPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kOpen, a); }
-void save(AppState& s) { saveOrAsk(s); }
-void saveAs(AppState& s) { openBrowser(s, BrowserPurpose::kSaveModel); }
-Status savePath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kSaveModel, a); }
-void exportBinvox(AppState& s) { openBrowser(s, BrowserPurpose::kExportBinvox); }
-Status exportBinvoxPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportBinvox, a); }
-void exportSurface(AppState& s) { openBrowser(s, BrowserPurpose::kExportSurface); }
-Status exportSurfacePath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportSurface, a); }
-void exportSmoothSurface(AppState& s) { openBrowser(s, BrowserPurpose::kExportSmoothSurface); }
-Status exportSmoothSurfacePath(AppState& s, const ActionArgs& a) {
-  return acceptPath(s, BrowserPurpose::kExportSmoothSurface, a);
-}
-void exportView(AppState& s) { openBrowser(s, BrowserPurpose::kExportViewPng); }
-Status exportViewPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportViewPng, a); }
-void exportSection(AppState& s) { openBrowser(s, BrowserPurpose::kExportSectionPng); }
-Status exportSectionPath(AppState& s, const ActionArgs& a) {
-  return acceptPath(s, BrowserPurpose::kExportSectionPng, a);
-}
-void exportXray(AppState& s) { openBrowser(s, BrowserPurpose::kExportXrayPng); }
-Status exportXrayPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportXrayPng, a); }
-void exportCsv(AppState& s) { openBrowser(s, BrowserPurpose::kExportXrayCsv); }
-Status exportCsvPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportXrayCsv, a); }
-void exportReport(AppState& s) { openBrowser(s, BrowserPurpose::kExportReport); }
-Status exportReportPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportReport, a); }
-void exportVolume(AppState& s) { openBrowser(s, BrowserPurpose::kExportVolume); }
-Status exportVolumePath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportVolume, a); }
-void exportThickness(AppState& s) { openBrowser(s, BrowserPurpose::kExportThickness); }
-Status exportThicknessPath(AppState& s, const ActionArgs& a) {
-  return acceptPath(s, BrowserPurpose::kExportThickness, a);
-}
-void exportDepth(AppState& s) { openBrowser(s, BrowserPurpose::kExportDepth); }
-Status exportDepthPath(AppState& s, const ActionArgs& a) { return acceptPath(s, BrowserPurpose::kExportDepth, a); }
-void exportXrayVolume(AppState& s) { openBrowser(s, BrowserPurpose::kExportXrayVolume); }
-Status exportXrayVolumePath(AppState& s, const ActionArgs& a) {
-  return acceptPath(s, BrowserPurpose::kExportXrayVolume, a);
-}
-
-Status exportSize(AppState& s, const ActionArgs& a) {  // W H: the 3D view's export size (0 0: as shown)
-  int32_t w = 0, h = 0;
-  if (!parseNumber(a.words[0], w) || !parseNumber(a.words[1], h) || w < 0 || h < 0 || w > 8192 || h > 8192) {
-    return badValues("export-size takes a width and a height in pixels, 0 to 8192");
-  }
-  s.export_width = w;
-  s.export_height = h;
-  return Ok{};
-}
 
 // ---- Edit ----
 void measureClear(AppState& s) { clearMeasure(s); }
@@ -226,96 +174,6 @@ void panelXray(AppState& s) { showPanel(s, Panel::kXray); }
 bool onXray(const AppState& s) { return s.panel == Panel::kXray; }
 void panelMass(AppState& s) { showPanel(s, Panel::kMass); }
 bool onMass(const AppState& s) { return s.panel == Panel::kMass; }
-void panelThickness(AppState& s) { showPanel(s, Panel::kThickness); }
-bool onThickness(const AppState& s) { return s.panel == Panel::kThickness; }
-Status minWallAt(AppState& s, const ActionArgs& a) {  // VALUE: the Thickness panel's minimum wall, model units
-  double v = 0.0;
-  if (!parseNumber(a.words[0], v) || !(v >= 0.0)) return badValues("min-wall takes a length >= 0 in model units");
-  s.thickness_ui.min_wall = v;
-  showPanel(s, Panel::kThickness);
-  return Ok{};
-}
-Status minAreaAt(AppState& s, const ActionArgs& a) {
-  double v = 0.0;
-  if (!parseNumber(a.words[0], v) || !std::isfinite(v)) {
-    return badValues("min-area takes an area in model units^2 (below 0: the minimum wall squared)");
-  }
-  s.thickness_ui.min_area = v < 0.0 ? -1.0 : v;
-  showPanel(s, Panel::kThickness);
-  return Ok{};
-}
-Status thicknessMethodAt(AppState& s, const ActionArgs& a) {  // VALUE: sphere | ray
-  const std::string& m = a.words[0];
-  if (m != "sphere" && m != "ray") return badValues("thickness-method takes sphere or ray");
-  if (m == "ray" && !rayMesh(s)) {
-    return makeError(ErrorCode::kInvalidArgument,
-                     "the ray thickness follows the mesh the model was voxelized from: this model has none as it is "
-                     "(a voxel file, a peeled model or a scene of parts)");
-  }
-  s.thickness_ui.ray = m == "ray";
-  showPanel(s, Panel::kThickness);
-  return Ok{};
-}
-
-namespace {
-
-// A place in the Thickness panel's lists, voxels lo..hi: the section along its axis through its middle, the 3D view
-// turned about it and brought near enough to see it.
-void showThicknessPlace(AppState& s, glm::ivec3 lo, glm::ivec3 hi) {
-  const int a = int(s.section.axis);
-  s.section.index = std::clamp((lo[a] + hi[a]) / 2, 0, std::max(axisLength(s, s.section.axis) - 1, 0));
-  const glm::ivec3 size = hi - lo + 1;
-  centreView(s, glm::dvec3(lo + hi + 1) * 0.5, double(std::max({size.x, size.y, size.z})));
-  s.section.playing = false;
-  showPanel(s, Panel::kThickness);
-}
-
-// The selection, for `result`: what was selected in another result is dropped.
-ThicknessUi& select(ThicknessUi& ui, uint64_t result) {
-  if (ui.selected_result != result) ui.selected_region = ui.selected_spot = -1;
-  ui.selected_result = result;
-  return ui;
-}
-
-// Row N (from 1) of a list of `count` rows, N the action's word; the messages name the action (`what`), its rows
-// (`row`) and why the list is empty (`none`).
-Result<size_t> listRow(const ActionArgs& a, size_t count, const char* what, const char* row, const char* none) {
-  if (count == 0) return badValues(std::string(what) + ": " + none);
-  size_t n = 0;
-  if (!parseNumber(a.words[0], n) || n < 1 || n > count) {
-    return badValues(std::string(what) + " takes " + row + " number in the Thickness panel's list, 1 to " +
-                     std::to_string(count));
-  }
-  return n - 1;
-}
-
-}  // namespace
-
-Status thinRegionAt(AppState& s, const ActionArgs& a) {
-  if (currentThickness(s) && !currentThinWalls(s)) {
-    return badValues("thin-region: the walls under the minimum wall are still being found");
-  }
-  const Walls* thin = currentThinWalls(s);
-  const auto i = listRow(a, thin ? thin->regions.size() : 0, "thin-region", "a region's",
-                         "no wall is thinner than the minimum wall");
-  if (!i) return i.error();
-  const ThinWallRegion& g = thin->regions[*i];
-  showThicknessPlace(s, g.bbox_min_ijk, g.bbox_max_ijk);
-  select(s.thickness_ui, currentThickness(s)->id).selected_region = int32_t(*i);
-  return Ok{};
-}
-
-Status hotSpotAt(AppState& s, const ActionArgs& a) {
-  const ThicknessResult* r = currentThickness(s);
-  const auto i = listRow(a, r ? r->hot_spots.size() : 0, "hot-spot", "a hot spot's", "the thickness has no hot spot");
-  if (!i) return i.error();
-  const HotSpot& spot = r->hot_spots[*i];
-  const auto reach = int32_t(std::ceil(spot.radius / s.model.voxelSize()));  // its inscribed ball
-  showThicknessPlace(s, spot.voxel - reach, spot.voxel + reach);
-  select(s.thickness_ui, r->id).selected_spot = int32_t(*i);
-  return Ok{};
-}
-
 // ---- Section ----
 void sectionPrev(AppState& s) { stepSection(s, -s.section.step); }
 void sectionNext(AppState& s) { stepSection(s, s.section.step); }

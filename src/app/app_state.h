@@ -175,24 +175,8 @@ struct VoxelizeDialog {
   std::string proposal_note;  // why the dialog proposes another resolution than the last one used
 };
 
-enum class BrowserPurpose {
-  kOpen,
-  kSaveModel,
-  kExportBinvox,
-  kExportSurface,
-  kExportSmoothSurface,
-  kExportViewPng,
-  kExportSectionPng,
-  kExportXrayPng,
-  kExportXrayCsv,
-  kExportVolume,      // the model as .vti, .vdb, .nrrd or .vox (export_volume.h)
-  kExportThickness,   // the thickness volume as .vti, .vdb or .nrrd
-  kExportDepth,       // the Skin panel's skin depth (each voxel's layer) as .vti, .vdb or .nrrd
-  kExportXrayVolume,  // the X-ray panel's image as a one-voxel-thick volume: .vti, .vdb or .nrrd
-  kExportReport,      // one HTML page of what voxmod computes of the model (export_report.h)
-  kAddPart,           // a mesh or voxel file added to the scene as a part (parts.h)
-  kSaveParts,         // each part as a voxel file in a folder (parts.h, saveParts)
-};
+// The actions of the window's table (app/actions.h): the file browser gives its path to one of them.
+enum class ActionId;
 
 struct FileBrowser {
   struct Entry {
@@ -202,7 +186,14 @@ struct FileBrowser {
   };
   bool open_requested = false;
   bool accepted = false;  // the file chosen went through (between frames): the browser closes
-  BrowserPurpose purpose = BrowserPurpose::kOpen;
+  // What it is for: the action its path is given to (one of the table's that takes a path), its title, the extensions
+  // it lists (none: it names a folder), and whether it names a file to write (the first extension added to a name
+  // without one) or one to open.
+  ActionId action{};
+  std::string title;
+  std::vector<std::string> extensions;
+  bool saving = false;
+  bool went_through = false;  // the path last given to a path action was used (usePath): the browser may close
   std::filesystem::path directory;
   std::string file_name;  // typed or clicked
   bool show_all_files = false;

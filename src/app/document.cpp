@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "app/autosave.h"
-#include "app/browser_purposes.h"
+#include "app/file_browsing.h"
 #include "app/full_section.h"
 #include "app/messages.h"
 #include "app/project.h"
@@ -292,7 +292,7 @@ void saveOrAsk(AppState& state) {
   if (!state.doc.save_path.empty()) {
     saveModel(state, state.doc.save_path);
   } else {
-    openBrowser(state, BrowserPurpose::kSaveModel);
+    openBrowser(state, saveModelBrowsing(state));
   }
 }
 
@@ -316,7 +316,7 @@ void saveThen(AppState& state, std::function<void(AppState&)> then) {
     if (saveModel(state, state.doc.save_path) && then) then(state);
     return;
   }
-  openBrowser(state, BrowserPurpose::kSaveModel);
+  openBrowser(state, saveModelBrowsing(state));
   state.browser.then = std::move(then);  // runs only if a save from this browser succeeds
 }
 

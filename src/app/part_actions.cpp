@@ -2,9 +2,13 @@
 // selecting and showing parts, and the interference list. Part numbers in scripts count from 1, as the panel shows.
 #include <algorithm>
 #include <charconv>
+#include <filesystem>
+#include <system_error>
 #include <utility>
 
 #include "app/action_functions.h"
+#include "app/file_browsing.h"
+#include "app/messages.h"
 #include "app/operations.h"
 #include "app/parts.h"
 #include "vox/core/text.h"
@@ -56,9 +60,19 @@ Status splitBodiesWith(AppState& s, const ActionArgs& a) {
   return Ok{};
 }
 
-void addPartDialog(AppState& s) { openBrowser(s, BrowserPurpose::kAddPart); }
+void addPartDialog(AppState& s) {
+  openBrowser(s, {ActionId::kAddPart, "Add a part from a mesh or voxel file (on the scene's lattice)",
+                  openableExtensions(false), "", false});
+}
 Status addPartPath(AppState& s, const ActionArgs& a) {
-  acceptBrowserPath(s, BrowserPurpose::kAddPart, a.rest);
+  usePath(s, a.rest, PathSays::kNothing, [](AppState& st, const std::filesystem::path& path) {
+    if (std::error_code ec; !std::filesystem::is_regular_file(path, ec)) {
+      reportError(st, path.string() + ": no such file");
+      return false;
+    }
+    startAddPart(st, path);
+    return true;
+  });
   showParts(s);
   return Ok{};
 }
@@ -209,8 +223,21 @@ Status partColourAt(AppState& s, const ActionArgs& a) {
 }
 
 bool hasPartsNow(const AppState& s) { return currentParts(s) != nullptr; }
-void savePartsDialog(AppState& s) { openBrowser(s, BrowserPurpose::kSaveParts); }
-Status savePartsPath(AppState& s, const ActionArgs& a) { return saveParts(s, a.rest); }
+void savePartsDialog(AppState& s) {
+  openBrowser(s, {ActionId::kSaveParts,
+                  "Save each part as a .vxm file into a folder (type its name; all files are written or none)",
+                  {},
+                  documentStem(s) + "_parts"});
+}
+Status savePartsPath(AppState& s, const ActionArgs& a) {
+  // saveParts says how many files it wrote where; its failure is this action's (the browser shows it)
+  Status result = Ok{};
+  usePath(s, a.rest, PathSays::kNothing, [&result](AppState& st, const std::filesystem::path& path) {
+    result = saveParts(st, path);
+    return result.ok();
+  });
+  return result;
+}
 
 void clearanceSelected(AppState& s) {
   if (s.parts_ui.selected.size() < 2) {

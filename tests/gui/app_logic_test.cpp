@@ -494,12 +494,12 @@ TEST(AppDocument, aQuitWhoseSaveFailedDoesNotComeBackWithALaterSave) {
   state.after_unsaved_prompt = nullptr;
   saveThen(state, std::move(quit));  // the prompt's "Save": no file yet, so the browser asks where
   ASSERT_TRUE(state.browser.open_requested);
-  EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kSaveModel, dir / "block.vxm" / "sub.vxm"));
+  EXPECT_FALSE(givePath(state, ActionId::kSaveAs, dir / "block.vxm" / "sub.vxm"));
   EXPECT_FALSE(state.quit_requested);
   ASSERT_EQ(state.errors.messages.size(), 1u);
 
   dispatch(state, ActionId::kSaveAs);  // later, the user saves
-  ASSERT_TRUE(acceptBrowserPath(state, BrowserPurpose::kSaveModel, dir / "good.vxm"));
+  ASSERT_TRUE(givePath(state, ActionId::kSaveAs, dir / "good.vxm"));
   EXPECT_FALSE(hasUnsavedChanges(state));
   EXPECT_FALSE(state.quit_requested);  // the window stays open
 }
@@ -513,8 +513,8 @@ TEST(AppDocument, aQuitWhoseSaveSucceedsQuits) {
   requestQuit(state);
   auto quit = std::move(state.after_unsaved_prompt);
   saveThen(state, std::move(quit));
-  EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kSaveModel, dir / "block.vxm" / "sub.vxm"));
-  EXPECT_TRUE(acceptBrowserPath(state, BrowserPurpose::kSaveModel, dir / "good.vxm"));  // same browser, retried
+  EXPECT_FALSE(givePath(state, ActionId::kSaveAs, dir / "block.vxm" / "sub.vxm"));
+  EXPECT_TRUE(givePath(state, ActionId::kSaveAs, dir / "good.vxm"));  // same browser, retried
   EXPECT_TRUE(state.quit_requested);
 }
 
@@ -590,7 +590,7 @@ TEST(AppDocument, aStepPartIsTessellatedForTheGridItIsVoxelizedOn) {
 }
 
 TEST(AppDocument, theOpenBrowserListsEveryInputFormat) {
-  const std::vector<std::string> e = browserExtensions(BrowserPurpose::kOpen);
+  const std::vector<std::string> e = openableExtensions(true);
   for (const char* ext :
        {".stl", ".obj", ".ply", ".3mf", ".gltf", ".glb", ".off", ".step", ".stp", ".iges", ".igs", ".vxm", ".binvox"})
     EXPECT_NE(std::find(e.begin(), e.end(), ext), e.end()) << ext;
@@ -721,7 +721,7 @@ TEST(AppDocument, anExportSaysWhereItWrote) {
   ASSERT_TRUE(pump(state, [&] { return state.doc.model.has_value(); }));
   state.panel = Panel::kSection;
   ASSERT_TRUE(pump(state, [&] { return currentSection(state) != nullptr; }));
-  ASSERT_TRUE(acceptBrowserPath(state, BrowserPurpose::kExportSectionPng, dir / "cut.png"));
+  ASSERT_TRUE(givePath(state, ActionId::kExportSectionPng, dir / "cut.png"));
   EXPECT_EQ(state.status_message, "Wrote " + (dir / "cut.png").string());
   EXPECT_TRUE(std::filesystem::exists(dir / "cut.png"));
 }
@@ -920,7 +920,8 @@ TEST(AppScriptRun, aThinRegionOrHotSpotClickedIsSelectedAndTheViewsGoThere) {
   ASSERT_NE(hot, nullptr);
   const Status s0 = dispatch(state, *hot, ActionArgs{{"0"}, "0"});
   ASSERT_FALSE(s0.ok());
-  EXPECT_NE(s0.error().message.find("hot-spot takes a hot spot's number"), std::string::npos) << s0.error().message;
+  EXPECT_NE(s0.error().message.find("hot-spot takes a row of the Thickness panel's list"), std::string::npos)
+      << s0.error().message;
 }
 
 // A round peel deeper than the part is refused with how deep it goes; another file opened starts from its own

@@ -72,12 +72,12 @@ TEST(AppExportVolume, aWrongExtensionOrAnUnwritablePlaceIsAnErrorNamingTheFile) 
   test::TempDir dir;
   AppState state;
   ASSERT_NO_FATAL_FAILURE(openGrid(state, dir, test::randomGrid(Dims{8, 8, 8}, 0.5, 2)));
-  EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kExportVolume, dir / "m.stl"));
+  EXPECT_FALSE(givePath(state, ActionId::kExportVolume, dir / "m.stl"));
   ASSERT_EQ(state.errors.messages.size(), 1u);
   EXPECT_NE(state.errors.messages[0].find("m.stl"), std::string::npos) << state.errors.messages[0];
   EXPECT_NE(state.errors.messages[0].find(".vox"), std::string::npos) << state.errors.messages[0];
 
-  ASSERT_TRUE(acceptBrowserPath(state, BrowserPurpose::kExportVolume, dir / "missing" / "m.vdb"));
+  ASSERT_TRUE(givePath(state, ActionId::kExportVolume, dir / "missing" / "m.vdb"));
   ASSERT_TRUE(pump(state, [&] { return !volumeExportRunning(state); }));
   ASSERT_EQ(state.errors.messages.size(), 2u);
   EXPECT_NE(state.errors.messages[1].find("m.vdb"), std::string::npos) << state.errors.messages[1];
@@ -99,7 +99,7 @@ TEST(AppExportVolume, theThicknessVolumeNeedsTheThicknessAndHoldsItFieldForField
   state.panel = Panel::kThickness;
   ASSERT_TRUE(pump(state, [&] { return currentThickness(state) != nullptr; }));
   EXPECT_EQ(disabledReason(state, action(ActionId::kExportThickness)), "");
-  EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kExportThickness, dir / "t.vox"));  // voxels only
+  EXPECT_FALSE(givePath(state, ActionId::kExportThickness, dir / "t.vox"));  // voxels only
   for (const char* name : {"t.vti", "t.vdb", "t.nrrd"}) {
     SCOPED_TRACE(name);
     ASSERT_TRUE(dispatch(state, ActionId::kExportThickness, ActionArgs{{name}, (dir / name).string()}).ok());
@@ -147,7 +147,7 @@ TEST(AppExportVolume, theDepthVolumeNeedsTheSkinLayersAndHoldsWhatPeelDepthWrite
   EXPECT_EQ(disabledReason(state, action(ActionId::kExportDepth)),
             "Needs the skin layers: open the Skin removal panel (Ctrl+3) and let it finish");
   EXPECT_FALSE(dispatch(state, ActionId::kExportDepth, ActionArgs{{"d.vti"}, (dir / "d.vti").string()}).ok());
-  EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kExportDepth, dir / "d.vti"));
+  EXPECT_FALSE(givePath(state, ActionId::kExportDepth, dir / "d.vti"));
   ASSERT_EQ(state.errors.messages.size(), 1u);
   EXPECT_NE(state.errors.messages[0].find("d.vti"), std::string::npos) << state.errors.messages[0];
   EXPECT_NE(state.errors.messages[0].find("Skin panel"), std::string::npos) << state.errors.messages[0];
@@ -155,7 +155,7 @@ TEST(AppExportVolume, theDepthVolumeNeedsTheSkinLayersAndHoldsWhatPeelDepthWrite
   state.panel = Panel::kSkin;
   ASSERT_TRUE(pump(state, [&] { return actions::hasDepth(state); }));
   EXPECT_EQ(disabledReason(state, action(ActionId::kExportDepth)), "");
-  EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kExportDepth, dir / "d.vox"));  // voxels only
+  EXPECT_FALSE(givePath(state, ActionId::kExportDepth, dir / "d.vox"));  // voxels only
   ASSERT_EQ(state.errors.messages.size(), 2u);
   EXPECT_NE(state.errors.messages[1].find("d.vox"), std::string::npos) << state.errors.messages[1];
   for (const char* name : {"d.vti", "d.vdb", "d.nrrd"}) {
@@ -220,7 +220,7 @@ TEST(AppExportVolume, theXrayVolumeNeedsTheXrayAndHoldsWhatXrayVolumeWrites) {
   EXPECT_EQ(disabledReason(state, action(ActionId::kExportXrayVolume)),
             "Needs the X-ray: open the X-ray panel (Ctrl+4) and let it finish");
   EXPECT_FALSE(dispatch(state, ActionId::kExportXrayVolume, ActionArgs{{"x.vti"}, (dir / "x.vti").string()}).ok());
-  EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kExportXrayVolume, dir / "x.vti"));
+  EXPECT_FALSE(givePath(state, ActionId::kExportXrayVolume, dir / "x.vti"));
   ASSERT_EQ(state.errors.messages.size(), 1u);
   EXPECT_NE(state.errors.messages[0].find("x.vti"), std::string::npos) << state.errors.messages[0];
   EXPECT_NE(state.errors.messages[0].find("X-ray panel"), std::string::npos) << state.errors.messages[0];
@@ -228,7 +228,7 @@ TEST(AppExportVolume, theXrayVolumeNeedsTheXrayAndHoldsWhatXrayVolumeWrites) {
   ASSERT_TRUE(dispatch(state, ActionId::kXray, ActionArgs{{"y", "max"}, "y max"}).ok());
   ASSERT_TRUE(pump(state, [&] { return actions::hasXray(state); }));
   EXPECT_EQ(disabledReason(state, action(ActionId::kExportXrayVolume)), "");
-  EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kExportXrayVolume, dir / "x.vox"));
+  EXPECT_FALSE(givePath(state, ActionId::kExportXrayVolume, dir / "x.vox"));
   ASSERT_EQ(state.errors.messages.size(), 2u);
   EXPECT_NE(state.errors.messages[1].find("x.vox"), std::string::npos) << state.errors.messages[1];
   for (const char* name : {"x.vti", "x.vdb", "x.nrrd"}) {
@@ -317,7 +317,7 @@ TEST(AppExportVolume, theCutAwayExportsTheHalfTheViewKeeps) {
   // A cut-away that keeps nothing is an error naming the file, and nothing is written.
   state.view.keep_above = false;
   ASSERT_TRUE(dispatch(state, ActionId::kSectionAt, ActionArgs{{"z", "0"}, ""}).ok());
-  EXPECT_FALSE(acceptBrowserPath(state, BrowserPurpose::kExportVolume, dir / "none.nrrd"));
+  EXPECT_FALSE(givePath(state, ActionId::kExportVolume, dir / "none.nrrd"));
   ASSERT_EQ(state.errors.messages.size(), 1u);
   EXPECT_NE(state.errors.messages[0].find("none.nrrd"), std::string::npos) << state.errors.messages[0];
   EXPECT_FALSE(std::filesystem::exists(dir / "none.nrrd"));
@@ -334,7 +334,7 @@ TEST(AppExportVolume, cancelLeavesNoFileAndNoMessage) {
   test::TempDir dir;
   AppState state;
   ASSERT_NO_FATAL_FAILURE(openGrid(state, dir, test::randomGrid(Dims{300, 300, 200}, 0.5, 3)));
-  ASSERT_TRUE(acceptBrowserPath(state, BrowserPurpose::kExportVolume, dir / "big.vox"));
+  ASSERT_TRUE(givePath(state, ActionId::kExportVolume, dir / "big.vox"));
   EXPECT_TRUE(actions::canCancel(state));
   ASSERT_TRUE(dispatch(state, ActionId::kCancelJob));
   ASSERT_TRUE(pump(state, [&] { return !volumeExportRunning(state); }));

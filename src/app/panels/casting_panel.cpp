@@ -1,6 +1,6 @@
-// Casting panel (docs/conventions.md, "Casting"): the part poured in an alloy into a mould, with feeders placed by clicking the part or
-// typed; the run in the background with its progress and cancel; the verdict, the hot spots (a click takes the section
-// there), the time slider and Play for the freezing front, and which field the views colour by.
+// Casting panel (docs/conventions.md, "Casting"): the part poured in an alloy into a mould, with feeders placed by
+// clicking the part or typed; the run in the background with its progress and cancel; the verdict, the hot spots (a
+// click takes the section there), the time slider and Play for the freezing front, and which field the views colour by.
 #include <algorithm>
 #include <cstdio>
 #include <string>

@@ -8,6 +8,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "app/actions.h"
 #include "app/operations.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
@@ -17,20 +18,18 @@ namespace {
 
 constexpr const char* kPopup = "File browser";
 
-bool isSave(BrowserPurpose p) { return p != BrowserPurpose::kOpen && p != BrowserPurpose::kAddPart; }
-
 void accept(AppState& state) {
   FileBrowser& b = state.browser;
   std::filesystem::path name = b.file_name;
-  const std::vector<std::string> extensions = browserExtensions(b.purpose);  // none: a folder's name
-  if (isSave(b.purpose) && !name.empty() && !extensions.empty() && !matchesExtension(name.string(), extensions)) {
+  const std::vector<std::string>& extensions = b.extensions;  // none: a folder's name
+  if (b.saving && !name.empty() && !extensions.empty() && !matchesExtension(name.string(), extensions)) {
     name += extensions.front();  // "part" -> "part.vxm"
   }
   const std::filesystem::path path = name.is_absolute() ? name : b.directory / name;
   // Between frames, as every action: the browser closes on the next frame when it went through, and stays open with
   // the error over it when it did not.
-  runBetweenFrames(state, browserTitle(b.purpose), [purpose = b.purpose, path](AppState& s) {
-    if (acceptBrowserPath(s, purpose, path) && !s.browser.open_requested) s.browser.accepted = true;
+  runBetweenFrames(state, b.title, [action = b.action, path](AppState& s) {
+    if (givePath(s, action, path) && !s.browser.open_requested) s.browser.accepted = true;
   });
 }
 
@@ -59,12 +58,11 @@ void drawFileBrowser(AppState& state) {
   }
   if (b.needs_listing || b.listed_directory != b.directory || b.listed_all_files != b.show_all_files) listDirectory(b);
 
-  ImGui::TextUnformatted(browserTitle(b.purpose));
+  ImGui::TextUnformatted(b.title.c_str());
   drawBrowserNavigation(b);
 
-  const float footer =
-      ImGui::GetFrameHeightWithSpacing() * (b.purpose == BrowserPurpose::kExportViewPng ? 3.0f : 2.0f) +
-      ImGui::GetStyle().ItemSpacing.y;
+  const float footer = ImGui::GetFrameHeightWithSpacing() * (b.action == ActionId::kExportViewPng ? 3.0f : 2.0f) +
+                       ImGui::GetStyle().ItemSpacing.y;
   bool activate = drawBrowserEntries(b, footer);
 
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 260.0f);
@@ -72,7 +70,7 @@ void drawFileBrowser(AppState& state) {
   ImGui::SameLine();
   widget::Checkbox("All files", &b.show_all_files);
   ImGui::SameLine();
-  if (widget::Button(isSave(b.purpose) ? "Save" : "Open", ImVec2(80.0f, 0.0f))) activate = true;
+  if (widget::Button(b.saving ? "Save" : "Open", ImVec2(80.0f, 0.0f))) activate = true;
   ImGui::SameLine();
   // Escape closes the browser, unless it is closing an error shown over it.
   const bool escape = state.errors.messages.empty() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
@@ -82,7 +80,7 @@ void drawFileBrowser(AppState& state) {
   } else if (activate && !b.file_name.empty()) {
     accept(state);
   }
-  if (b.purpose == BrowserPurpose::kExportViewPng) {
+  if (b.action == ActionId::kExportViewPng) {
     // The picture's own size, whatever the window's (e.g. 3840 x 2160 for a slide); 0 x 0 is the view as shown.
     int size[2] = {state.export_width, state.export_height};
     ImGui::SetNextItemWidth(160.0f);
@@ -92,16 +90,16 @@ void drawFileBrowser(AppState& state) {
     }
   }
   std::error_code ec;
-  const bool folder = browserExtensions(b.purpose).empty();  // the name is a folder's (save each part)
+  const bool folder = b.extensions.empty();  // the name is a folder's (save each part)
   if (folder && !b.file_name.empty() && std::filesystem::is_directory(b.directory / b.file_name, ec)) {
     ImGui::TextDisabled("%s exists: files of the same names in it will be replaced.", b.file_name.c_str());
-  } else if (isSave(b.purpose) && !b.file_name.empty() && std::filesystem::exists(b.directory / b.file_name, ec)) {
+  } else if (b.saving && !b.file_name.empty() && std::filesystem::exists(b.directory / b.file_name, ec)) {
     ImGui::TextDisabled("%s exists and will be replaced.", b.file_name.c_str());
   } else if (folder) {
     ImGui::TextDisabled("Showing folders; the folder named above is made when missing");
   } else {
     std::string exts;
-    for (const std::string& e : browserExtensions(b.purpose)) exts += (exts.empty() ? "" : ", ") + e;
+    for (const std::string& e : b.extensions) exts += (exts.empty() ? "" : ", ") + e;
     ImGui::TextDisabled("Showing %s", b.show_all_files ? "all files" : exts.c_str());
   }
   // An error raised here (a file that cannot be written) opens over the browser, inside its popup: opened at the

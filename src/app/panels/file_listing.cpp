@@ -36,7 +36,7 @@ void listDirectory(FileBrowser& b) {
   b.listed_directory = b.directory;
   b.listed_all_files = b.show_all_files;
   b.needs_listing = false;
-  const std::vector<std::string> ext = browserExtensions(b.purpose);
+  const std::vector<std::string>& ext = b.extensions;
   std::error_code ec;
   std::filesystem::directory_iterator it(b.directory, std::filesystem::directory_options::skip_permission_denied, ec);
   if (ec) {

@@ -1,7 +1,8 @@
-// Print panel (docs/conventions.md, "Printability"): whether the part prints along a build direction chosen from a list, from the search over
-// directions or by clicking a face to lay on the plate; the overhangs past the overhang angle (red in 3D), the support
-// under them (translucent blue columns), the trapped cavities (a click takes the section there) and the build
-// directions ranked by support (a click applies one). Computed in the background while the panel is open.
+// Print panel (docs/conventions.md, "Printability"): whether the part prints along a build direction chosen from a
+// list, from the search over directions or by clicking a face to lay on the plate; the overhangs past the overhang
+// angle (red in 3D), the support under them (translucent blue columns), the trapped cavities (a click takes the section
+// there) and the build directions ranked by support (a click applies one). Computed in the background while the panel
+// is open.
 #include <algorithm>
 #include <cstdio>
 #include <string>
