@@ -109,6 +109,8 @@ bool onThickness(const AppState& s);
 Status minWallAt(AppState& s, const ActionArgs& a);
 Status minAreaAt(AppState& s, const ActionArgs& a);  // AREA model units^2: smaller walls are specks; < 0: W^2
 Status thicknessMethodAt(AppState& s, const ActionArgs& a);
+void cancelRaysNow(AppState& s);  // the rays being cast for the Thickness panel
+bool raysComputingNow(const AppState& s);
 // N: the Thickness panel's thin-wall region N or hot spot N (1: the first of its list), selected and shown: the
 // section through it, the 3D view turned about it.
 Status thinRegionAt(AppState& s, const ActionArgs& a);

@@ -88,6 +88,7 @@ const Action kActions[] = {
 
   {ActionId::kComputeThickness, "compute-thickness", nullptr, "Compute thickness",              kNone,                       0, 0,  retryThickness, nullptr,          thicknessCancelled, nullptr},
   {ActionId::kCancelThickness, "cancel-thickness", nullptr,  "Cancel thickness",                 kNone,                       0, 0,  cancelThickness, nullptr,         thicknessComputing, nullptr},
+  {ActionId::kCancelRays,     "cancel-rays",     nullptr,   "Cancel casting the rays",            kNone,                       0, 0,  cancelRaysNow, nullptr,           raysComputingNow, nullptr},
 
   {ActionId::kPrintDirection, "print-direction", nullptr,   "Build direction",                    kNone,                       1, 3,  nullptr,       printDirectionAt,  hasModel,    nullptr},
   {ActionId::kOverhangAngle,  "overhang-angle",  nullptr,   "Overhang angle (degrees)",           kNone,                       1, 1,  nullptr,       overhangAngleAt,   hasModel,    nullptr},

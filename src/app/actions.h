@@ -97,6 +97,7 @@ enum class ActionId {
   kHotSpot,
   kComputeThickness,
   kCancelThickness,
+  kCancelRays,
   kSectionPrev,
   kSectionNext,
   kSectionPlay,

@@ -117,7 +117,7 @@ std::filesystem::path bundledModel() {
 
 bool anyWork(const AppState& s) {
   return modelBusy(s) || s.depth.busy() || s.surface_stats.busy() || s.mass.busy() || s.xray_result.busy() ||
-         s.thickness.busy() || s.thin_walls.busy() || s.print.busy() || s.casting.busy();
+         s.thickness.busy() || s.rays.busy() || s.thin_walls.busy() || s.print.busy() || s.casting.busy();
 }
 
 bool writeScreenshot(AppState& state, GLFWwindow* window, const std::string& path) {

@@ -228,8 +228,8 @@ struct ThicknessResult {
   VoxelGrid grid;   // the voxels it was computed from (sharing their layers)
   Thickness thickness;
   std::vector<HotSpot> hot_spots;
-  WallRidge ridge;                        // the wall stops, from which the walls under any minimum wall are found
-  std::optional<RayThicknessResult> ray;  // when asked for and the model is its mesh's voxelization
+  WallRidge ridge;            // the wall stops, from which the walls under any minimum wall are found
+  double distance_max = 0.0;  // the deepest voxel's distance from the surface, model units (the rays' paint limit)
   double seconds = 0.0;
 };
 
@@ -242,9 +242,10 @@ struct WallsKey {
 };
 struct ThicknessUi {
   double min_wall = -1.0;
-  double min_area = -1.0;   // walls with less exposed area are specks, counted not listed (model units^2; < 0: W^2)
-  float wall_drag = -1.0f;  // the slider's value while it is dragged (< 0: not dragged); applied when let go
-  bool ray = false;         // the views show the ray thickness (vox/analysis/ray_thickness.h), not local thickness
+  double min_area = -1.0;       // walls with less exposed area are specks, counted not listed (model units^2; < 0: W^2)
+  float wall_drag = -1.0f;      // the slider's value while it is dragged (< 0: not dragged); applied when let go
+  bool ray = false;             // the views show the ray thickness (vox/analysis/ray_thickness.h), not local thickness
+  uint64_t rays_cancelled = 0;  // the result (ThicknessResult::id) whose rays were cancelled: not cast until asked
   uint64_t cancelled_version = 0;  // the model version whose computation the user cancelled (not asked again)
   WallsKey walls_shown;            // the walls the selected region is a region of
   SectionKey image_key;            // what the section texture shows, with the minimum wall it paints red
@@ -337,9 +338,11 @@ struct AppState {
   AsyncValue<uint64_t, MassProperties> mass;                    // keyed by model_version
   AsyncValue<XrayKey, std::shared_ptr<const XrayResult>> xray_result;
   AsyncValue<uint64_t, std::shared_ptr<const ThicknessResult>> thickness;  // keyed by model_version
-  AsyncValue<WallsKey, std::shared_ptr<const Walls>> thin_walls;           // walls, not edges (walls.h)
-  AsyncValue<PrintKey, std::shared_ptr<const PrintResult>> print;          // the Print panel's (print.h)
-  AsyncValue<CastingKey, std::shared_ptr<const CastingOutcome>> casting;   // the Casting panel's (casting.h)
+  // The ray thickness, cast once the thickness is known when the panel shows rays: keyed by ThicknessResult::id.
+  AsyncValue<uint64_t, std::shared_ptr<const RayThicknessResult>> rays;
+  AsyncValue<WallsKey, std::shared_ptr<const Walls>> thin_walls;          // walls, not edges (walls.h)
+  AsyncValue<PrintKey, std::shared_ptr<const PrintResult>> print;         // the Print panel's (print.h)
+  AsyncValue<CastingKey, std::shared_ptr<const CastingOutcome>> casting;  // the Casting panel's (casting.h)
   Job<std::filesystem::path> volume_export_job;  // File > Export volume: the file being written (export_volume.h)
   // What the status line adds to "Wrote FILE" when that export is done, e.g. " (the half the cut-away keeps)".
   std::string volume_export_note;

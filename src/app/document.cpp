@@ -105,6 +105,8 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
   state.thin_walls.clear();
   state.thickness_ui.min_wall = -1.0;  // another part: a quarter of its own thickest wall until the user chooses
   state.thickness_ui.cancelled_version = 0;
+  state.rays.clear();
+  state.thickness_ui.rays_cancelled = 0;
   // another part: printed upright until the user turns it; the overhang angle is the printer's and stays
   state.print.clear();
   state.print_ui.up = glm::dvec3(0.0, 0.0, 1.0);

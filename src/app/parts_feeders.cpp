@@ -1,7 +1,10 @@
 // The Casting panel's feeders as parts of the scene (parts.h, "Feeders"): placing one adds its cylinder's voxels as a
 // part, so the Parts panel moves and removes it and Undo takes it back; the casting's run takes the parts that are
 // not feeders as the metal to cast and the feeder parts, placed, as its feeders.
+#include <algorithm>
+#include <cstdlib>
 #include <memory>
+#include <string>
 #include <utility>
 
 #include "app/parts.h"
@@ -20,9 +23,10 @@ Status addFeederPart(AppState& state, const Feeder& feeder) {
   auto scene = std::make_shared<Assembly>(sceneOfModel(state));
   auto voxels = feederVoxels(feeder, scene->lattice());
   if (!voxels) return makeError(voxels.error().code, voxels.error().message + ". Nothing was placed");
-  size_t count = 1;
-  for (const Part& p : scene->parts()) count += p.feeder ? 1 : 0;
-  const std::string name = "feeder " + std::to_string(count);
+  int next = 1;  // one past the highest number a feeder has (a feeder deleted leaves its number unused)
+  for (const Part& p : scene->parts())
+    if (p.feeder && p.name.rfind("feeder ", 0) == 0) next = std::max(next, std::atoi(p.name.c_str() + 7) + 1);
+  const std::string name = "feeder " + std::to_string(next);
   const size_t k = scene->addPart(std::move(voxels).value(), name);
   scene->part(k).colour = kFeederPartColour;
   scene->part(k).feeder = feeder;

@@ -242,9 +242,9 @@ bool checkExpectedError(Harness& h, const Context& c, Step step) {
 
 bool settled(const AppState& s) {
   return !modelBusy(s) && !s.depth.busy() && !s.surface_stats.busy() && !s.mass.busy() && !s.xray_result.busy() &&
-         !s.thickness.busy() && !s.thin_walls.busy() && !s.print.busy() && !s.casting.busy() && !s.skin.pending_peel &&
-         !s.volume_export_job.active() && !s.parts_job.active() && !s.interference_job.active() &&
-         !s.clearance_job.active() && !autosaveBusy(s);
+         !s.thickness.busy() && !s.rays.busy() && !s.thin_walls.busy() && !s.print.busy() && !s.casting.busy() &&
+         !s.skin.pending_peel && !s.volume_export_job.active() && !s.parts_job.active() &&
+         !s.interference_job.active() && !s.clearance_job.active() && !autosaveBusy(s);
 }
 
 void stepScript(Harness& h, AppState& state) {

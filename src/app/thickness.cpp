@@ -38,12 +38,6 @@ std::shared_ptr<const MeshSource> rayMesh(const AppState& state) {
 void requestThickness(AppState& state) {
   state.thickness.poll();
   const uint64_t key = state.model_version;
-  // the ray method asked for on a result computed without it: computed again with it
-  if (const auto* held = state.thickness.get(key); held && *held && state.thickness_ui.ray && !(*held)->ray &&
-                                                   rayMesh(state) && !state.thickness.busy() &&
-                                                   state.panel == Panel::kThickness) {
-    state.thickness.clear();
-  }
   if (state.thickness.get(key)) {
     // Back to a model whose result is here (undo): a computation still under way for the one left is not wanted,
     // and its end would replace this result.
@@ -56,20 +50,17 @@ void requestThickness(AppState& state) {
   if (state.thickness.get(key)) return;
   VoxelGrid grid = state.model;
   const uint64_t id = takeId(state);
-  const std::shared_ptr<const MeshSource> mesh = state.thickness_ui.ray ? rayMesh(state) : nullptr;
-  state.thickness.request(key, "Computing thickness", [grid, id, mesh](const ProgressFn& progress) {
+  state.thickness.request(key, "Computing thickness", [grid, id](const ProgressFn& progress) {
     using R = Result<std::shared_ptr<const ThicknessResult>>;
     // The bar's share of each stage, as their times go on real parts: distance 0..10%, hot spots 10..30%, wall
-    // ridge 30..40%, thickness 40..100%, or 40..80% and rays 80..100% (in the order of ThicknessStage).
-    const double thickness_end = mesh ? 0.8 : 1.0;
-    const workflow::StageProgress bar = [&progress, thickness_end](workflow::ThicknessStage stage, double f) {
-      const double from[] = {0.0, 0.1, 0.4, 0.3, 0.8}, to[] = {0.1, 0.3, thickness_end, 0.4, 1.0};
+    // ridge 30..40%, thickness 40..100% (in the order of ThicknessStage; the rays are a job of their own).
+    const workflow::StageProgress bar = [&progress](workflow::ThicknessStage stage, double f) {
+      const double from[] = {0.0, 0.1, 0.4, 0.3, 1.0}, to[] = {0.1, 0.3, 1.0, 0.4, 1.0};
       const int i = int(stage);
       return !progress || progress(from[i] + (to[i] - from[i]) * f);
     };
     workflow::ThicknessRunOptions options;
     options.walls = WallRidgeParams{};
-    if (mesh) options.ray_mesh = &mesh->mesh;
     auto run = workflow::runThickness(grid, options, bar);
     if (!run) return R(run.error());
     auto out = std::make_shared<ThicknessResult>();
@@ -78,14 +69,47 @@ void requestThickness(AppState& state) {
     out->thickness = std::move(run->thickness);
     out->hot_spots = std::move(run->hot_spots);
     out->ridge = std::move(run->ridge).value();
-    out->ray = std::move(run->ray);
-    out->seconds = run->distance_s + run->hot_spots_s + run->walls_s + run->thickness_s + run->ray_s;
+    out->distance_max = run->distance_max;
+    out->seconds = run->distance_s + run->hot_spots_s + run->walls_s + run->thickness_s;
     return R(std::shared_ptr<const ThicknessResult>(std::move(out)));
   });
 }
 
 const RayThicknessResult* shownRay(const AppState& state, const ThicknessResult& r) {
-  return state.thickness_ui.ray && r.ray ? &*r.ray : nullptr;
+  if (!state.thickness_ui.ray) return nullptr;
+  const auto* rays = state.rays.get(r.id);
+  return rays && *rays ? rays->get() : nullptr;
+}
+
+void requestRays(AppState& state) {
+  state.rays.poll();
+  const ThicknessResult* r = currentThickness(state);
+  if (!state.thickness_ui.ray || !r || state.panel != Panel::kThickness) return;
+  if (state.thickness_ui.rays_cancelled == r->id || !state.rays.wants(r->id)) return;
+  const std::shared_ptr<const MeshSource> mesh = rayMesh(state);
+  if (!mesh) return;
+  const VoxelGrid grid = r->grid;
+  const double distance_max = r->distance_max;
+  state.rays.request(r->id, "Casting rays", [mesh, grid, distance_max](const ProgressFn& progress) {
+    using R = Result<std::shared_ptr<const RayThicknessResult>>;
+    auto rays = workflow::runRayThickness(mesh->mesh, grid, distance_max, RayThicknessParams{}, progress);
+    if (!rays) return R(rays.error());
+    return R(std::shared_ptr<const RayThicknessResult>(std::make_shared<RayThicknessResult>(std::move(rays).value())));
+  });
+}
+
+bool raysComputing(const AppState& state) { return state.rays.busy(); }
+
+const Error* raysError(const AppState& state) {
+  const ThicknessResult* r = currentThickness(state);
+  return r ? state.rays.error(r->id) : nullptr;
+}
+
+void cancelRays(AppState& state) {
+  if (!state.rays.busy()) return;
+  const ThicknessResult* r = currentThickness(state);
+  state.rays.clear();
+  state.thickness_ui.rays_cancelled = r ? r->id : 0;
 }
 
 const ThicknessResult* currentThickness(const AppState& state) {

@@ -30,8 +30,16 @@ const Walls* currentThinWalls(AppState& state);
 // The mesh the ray thickness can follow: the document's, while the model is its voxelization as it was (not peeled,
 // not a scene of parts); null otherwise.
 std::shared_ptr<const MeshSource> rayMesh(const AppState& state);
-// The ray thickness the views show: when the panel's method is ray and the result holds it; else null.
+// The ray thickness the views show: when the panel's method is ray and the rays of `r` are cast; else null.
 const RayThicknessResult* shownRay(const AppState& state, const ThicknessResult& r);
+// Each frame (updateDocument): casts the rays of the thickness shown, in the background, while the Thickness panel
+// shows rays and the model is its mesh's voxelization (a job of its own: switching to rays never recomputes the
+// distance or the local thickness, and switching back keeps them).
+void requestRays(AppState& state);
+bool raysComputing(const AppState& state);
+const Error* raysError(const AppState& state);
+// Stops casting the rays; they are not cast again for this thickness until rays are chosen again.
+void cancelRays(AppState& state);
 // The thin-wall region and the hot spot last clicked in the panel's lists: null when none was, or when the model or
 // the thin walls have changed since.
 const ThinWallRegion* selectedRegion(AppState& state);

@@ -47,6 +47,7 @@ Status thicknessMethodAt(AppState& s, const ActionArgs& a) {  // VALUE: sphere |
                      "(a voxel file, a peeled model or a scene of parts)");
   }
   s.thickness_ui.ray = m == "ray";
+  if (s.thickness_ui.ray) s.thickness_ui.rays_cancelled = 0;  // asked for again: cast after a cancel
   showThickness(s);
   return Ok{};
 }
@@ -97,5 +98,8 @@ Status hotSpotAt(AppState& s, const ActionArgs& a) {
   select(s.thickness_ui, r->id).selected_spot = int32_t(*i);
   return Ok{};
 }
+
+void cancelRaysNow(AppState& s) { cancelRays(s); }
+bool raysComputingNow(const AppState& s) { return raysComputing(s); }
 
 }  // namespace vox::app::actions

@@ -84,6 +84,7 @@ void updateDocument(AppState& state) {
   state.mass.poll();
   state.xray_result.poll();
   requestThickness(state);
+  requestRays(state);  // once the thickness is known, while the panel shows rays
   if (state.panel == Panel::kThickness) currentThinWalls(state);  // the walls under the minimum wall, asked for
   requestPrint(state);
   requestCasting(state);

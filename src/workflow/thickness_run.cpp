@@ -42,14 +42,18 @@ Result<ThicknessRun> runThickness(const VoxelGrid& grid, const ThicknessRunOptio
   const double t4 = nowSeconds();
   run.thickness_s = t4 - t3;
   if (options.ray_mesh) {
-    RayThicknessParams ray_params = options.ray;
-    if (ray_params.paint_limit <= 0.0) ray_params.paint_limit = 2.0 * run.distance_max + 2.0 * grid.voxelSize();
-    auto ray = computeRayThickness(*options.ray_mesh, grid, ray_params, stage(ThicknessStage::kRays));
+    auto ray = runRayThickness(*options.ray_mesh, grid, run.distance_max, options.ray, stage(ThicknessStage::kRays));
     if (!ray) return ray.error();
     run.ray = std::move(ray).value();
     run.ray_s = nowSeconds() - t4;
   }
   return run;
+}
+
+Result<RayThicknessResult> runRayThickness(const TriangleMesh& mesh, const VoxelGrid& grid, double distance_max,
+                                           RayThicknessParams params, const ProgressFn& progress) {
+  if (params.paint_limit <= 0.0) params.paint_limit = 2.0 * distance_max + 2.0 * grid.voxelSize();
+  return computeRayThickness(mesh, grid, params, progress);
 }
 
 }  // namespace vox::workflow

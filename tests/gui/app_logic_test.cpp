@@ -1058,18 +1058,20 @@ TEST(AppScriptRun, theThicknessPanelShowsRaysForAMeshsOwnVoxelization) {
   ASSERT_TRUE(runScript(state, h, "panel-thickness\nthickness-method ray\n")) << h.last_error;
   ASSERT_TRUE(pump(state, [&] {
     requestThickness(state);
+    requestRays(state);
     const ThicknessResult* r = currentThickness(state);
-    return r && r->ray;
+    return r && shownRay(state, *r);
   }));
   const ThicknessResult* r = currentThickness(state);
-  ASSERT_NE(shownRay(state, *r), nullptr);
-  EXPECT_NEAR(r->ray->min, 1.0, 1e-4);  // the faces' rays cross the plate
+  const RayThicknessResult* ray = shownRay(state, *r);
+  ASSERT_NE(ray, nullptr);
+  EXPECT_NEAR(ray->min, 1.0, 1e-4);  // the faces' rays cross the plate
   // the plate's middle layer, its rim aside: read 1 where a ray crossed, nearly everywhere
   const Dims d = state.model.dims();
   int64_t read = 0, total = 0;
   for (int32_t y = 2; y < d.ny - 2; ++y)
     for (int32_t x = 2; x < d.nx - 2; ++x) {
-      const float t = r->ray->field.at(x, y, d.nz / 2);
+      const float t = ray->field.at(x, y, d.nz / 2);
       ++total;
       if (t > 0.0f) {
         ++read;
@@ -1091,6 +1093,30 @@ TEST(AppScriptRun, theThicknessPanelShowsRaysForAMeshsOwnVoxelization) {
   Harness h2;
   ASSERT_TRUE(runScript(state, h2, "thickness-method sphere\n")) << h2.last_error;
   EXPECT_EQ(shownRay(state, *r), nullptr);
+  // back to rays: the same thickness, its rays kept (a job of their own: nothing is computed again)
+  const uint64_t id = r->id;
+  ASSERT_TRUE(dispatch(state, ActionId::kThicknessMethod, ActionArgs{{"ray"}, "ray"}).ok());
+  requestThickness(state);
+  requestRays(state);
+  EXPECT_EQ(currentThickness(state)->id, id);
+  EXPECT_FALSE(state.thickness.busy());
+  EXPECT_FALSE(state.rays.busy());
+  EXPECT_EQ(shownRay(state, *r), ray);
+  // cast again and cancelled: the views show spheres, nothing is cast until rays are asked for again
+  state.rays.clear();
+  requestRays(state);
+  ASSERT_TRUE(state.rays.busy());
+  ASSERT_TRUE(dispatch(state, ActionId::kCancelRays));
+  EXPECT_FALSE(state.rays.busy());
+  requestRays(state);
+  EXPECT_FALSE(state.rays.busy());
+  EXPECT_EQ(shownRay(state, *r), nullptr);
+  ASSERT_TRUE(dispatch(state, ActionId::kThicknessMethod, ActionArgs{{"ray"}, "ray"}).ok());
+  ASSERT_TRUE(pump(state, [&] {
+    requestRays(state);
+    return shownRay(state, *currentThickness(state)) != nullptr;
+  }));
+  ASSERT_TRUE(dispatch(state, ActionId::kThicknessMethod, ActionArgs{{"sphere"}, "sphere"}).ok());
 
   Harness h3;
   testing::internal::CaptureStderr();
@@ -1281,6 +1307,15 @@ TEST(AppScriptRun, theCastingPanelSimulatesAndPlacesAFeeder) {
   EXPECT_EQ(state.model.filledCount(), block_voxels);
   ASSERT_TRUE(dispatch(state, ActionId::kUndo));  // the feeder back
   EXPECT_EQ(feederParts(state).size(), 1u);
+
+  // typed feeders, one deleted, another typed: each feeder keeps a name of its own
+  const std::string typed = "casting-feeder " + std::to_string(f.base.x) + " " + std::to_string(f.base.y) + " " +
+                            std::to_string(f.base.z) + " 2 3\n";
+  Harness ht;
+  ASSERT_TRUE(runScript(state, ht, typed + typed + "casting-delete-feeder 1\n" + typed)) << ht.last_error;
+  std::set<std::string> names;
+  for (const size_t i : feederParts(state)) names.insert(currentParts(state)->part(i).name);
+  EXPECT_EQ(names, (std::set<std::string>{"feeder 2", "feeder 3", "feeder 4"}));
 }
 
 }  // namespace

@@ -45,4 +45,10 @@ struct ThicknessRun {
 Result<ThicknessRun> runThickness(const VoxelGrid& grid, const ThicknessRunOptions& options = {},
                                   const StageProgress& progress = {});
 
+// The ray thickness of `grid` against its own mesh (model units), on its own: the window casts the rays as a job of
+// their own once the thickness is known. `distance_max` (ThicknessRun::distance_max) sets the paint limit when
+// params leave it at 0: rays longer than twice the deepest voxel paint only their ends (no wall is that thick).
+Result<RayThicknessResult> runRayThickness(const TriangleMesh& mesh, const VoxelGrid& grid, double distance_max,
+                                           RayThicknessParams params, const ProgressFn& progress = {});
+
 }  // namespace vox::workflow

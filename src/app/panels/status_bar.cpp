@@ -27,10 +27,11 @@ void drawStatusBar(AppState& state) {
     ImGui::TextUnformatted(state.volume_export_job.label().c_str());
     ImGui::SameLine();
     ImGui::ProgressBar(float(state.volume_export_job.progress()), ImVec2(200.0f, 0.0f));
-  } else if (state.thickness.busy()) {  // the Thickness panel's analysis; its Cancel button is in the panel
-    ImGui::TextUnformatted("Computing thickness");
+  } else if (state.thickness.busy() || state.rays.busy()) {  // the Thickness panel's; its Cancel is in the panel
+    const bool rays = !state.thickness.busy();
+    ImGui::TextUnformatted(rays ? "Casting rays" : "Computing thickness");
     ImGui::SameLine();
-    ImGui::ProgressBar(float(state.thickness.progress()), ImVec2(200.0f, 0.0f));
+    ImGui::ProgressBar(float(rays ? state.rays.progress() : state.thickness.progress()), ImVec2(200.0f, 0.0f));
   } else if (state.parts_job.active() || state.interference_job.active()) {  // the Parts panel's; Esc cancels
     const bool parts = state.parts_job.active();
     ImGui::TextUnformatted(parts ? state.parts_job.label().c_str() : state.interference_job.label().c_str());

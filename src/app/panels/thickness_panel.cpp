@@ -50,6 +50,26 @@ void histogram(const ThicknessStats& st, double min_wall, const std::string& uni
   ImGui::GetWindowDrawList()->AddLine(ImVec2(x, r0.y), ImVec2(x, r1.y), IM_COL32(255, 60, 60, 255), 2.0f);
 }
 
+// The rays, cast as a job of their own once the thickness is known: how many met a wall, or their progress and
+// Cancel, or why there are none.
+void raysStatus(AppState& state, const ThicknessResult& r) {
+  if (const RayThicknessResult* ray = shownRay(state, r)) {
+    ImGui::TextDisabled("%s of %s rays met a wall facing back", groupDigits(ray->accepted).c_str(),
+                        groupDigits(ray->rays).c_str());
+  } else if (raysComputing(state)) {
+    ImGui::TextUnformatted("Casting rays (the views show spheres until they are in)...");
+    ImGui::ProgressBar(float(state.rays.progress()), ImVec2(-80.0f, 0.0f));
+    ImGui::SameLine();
+    if (widget::Button("Cancel##rays")) dispatch(state, ActionId::kCancelRays);
+  } else if (const Error* e = raysError(state)) {
+    wrappedColoured(kWarningColour, "The rays failed: " + e->message);
+  } else if (state.thickness_ui.rays_cancelled == r.id) {
+    ImGui::TextDisabled("Rays cancelled: the views show spheres.");
+    ImGui::SameLine();
+    if (widget::SmallButton("Cast rays")) dispatchValues(state, ActionId::kThicknessMethod, {"ray"});
+  }
+}
+
 // Which thickness the views show: spheres (local thickness) or rays (the mesh's own normals, to the side facing back).
 void methodChoice(AppState& state, const ThicknessResult& r) {
   const bool can_ray = rayMesh(state) != nullptr, rays = state.thickness_ui.ray && can_ray;
@@ -64,9 +84,8 @@ void methodChoice(AppState& state, const ThicknessResult& r) {
     helpMarker(
         "Rays follow the mesh the model was voxelized from; a voxel file, a peeled model or a scene of parts "
         "has none.");
-  } else if (rays && r.ray) {
-    ImGui::TextDisabled("%s of %s rays met a wall facing back", groupDigits(r.ray->accepted).c_str(),
-                        groupDigits(r.ray->rays).c_str());
+  } else if (rays) {
+    raysStatus(state, r);
   }
 }
 
