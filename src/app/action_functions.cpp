@@ -27,12 +27,12 @@ Result<size_t> listRow(const ActionArgs& a, size_t count, const std::string& wha
   }
   return n - 1;
 }
-namespace {
-
 void showPanel(AppState& s, Panel p) {
   s.panel = p;
   s.panel_change_requested = true;
 }
+
+namespace {
 
 void standardView(AppState& s, render::StandardView v) {
   s.view.camera.setStandardView(v);

@@ -5,6 +5,8 @@
 
 namespace vox::app::actions {
 
+// Shows panel p (the tab switches on the next frame).
+void showPanel(AppState& s, Panel p);
 // A usage error of an action's values, saying what it takes.
 Error badValues(std::string message);
 // Row N (counted from 1, as panels show their lists) of a list of `count` rows, as an index from 0; a usage error

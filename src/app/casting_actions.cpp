@@ -13,16 +13,7 @@
 #include "vox/core/text.h"
 
 namespace vox::app::actions {
-namespace {
-
-void showCasting(AppState& s) {
-  s.panel = Panel::kCasting;
-  s.panel_change_requested = true;
-}
-
-}  // namespace
-
-void panelCasting(AppState& s) { showCasting(s); }
+void panelCasting(AppState& s) { showPanel(s, Panel::kCasting); }
 bool onCasting(const AppState& s) { return s.panel == Panel::kCasting; }
 bool hasCasting(const AppState& s) { return currentCasting(s) != nullptr; }
 bool canSimulateCasting(const AppState& s) { return !s.model.empty() && !castingComputing(s); }
@@ -31,13 +22,13 @@ bool isCastingPlaying(const AppState& s) { return s.casting_ui.playing; }
 
 Status castingAlloyAt(AppState& s, const ActionArgs& a) {
   if (Status st = setCastingAlloy(s, a.words[0]); !st) return badValues(st.error().message);
-  showCasting(s);
+  showPanel(s, Panel::kCasting);
   return Ok{};
 }
 
 Status castingMouldAt(AppState& s, const ActionArgs& a) {
   if (Status st = setCastingMould(s, a.words[0]); !st) return badValues(st.error().message);
-  showCasting(s);
+  showPanel(s, Panel::kCasting);
   return Ok{};
 }
 
@@ -47,7 +38,7 @@ Status castingSuperheatAt(AppState& s, const ActionArgs& a) {
     return badValues("casting-superheat takes kelvin above the liquidus, 0 to 1000");
   }
   s.casting_ui.chosen.superheat_k = v;
-  showCasting(s);
+  showPanel(s, Panel::kCasting);
   return Ok{};
 }
 
@@ -59,7 +50,7 @@ Status castingMouldTemperatureAt(AppState& s, const ActionArgs& a) {
     return badValues("casting-mould-temperature takes degrees C (above -273), or 'default'");
   }
   s.casting_ui.chosen.mould_temperature_c = v;
-  showCasting(s);
+  showPanel(s, Panel::kCasting);
   return Ok{};
 }
 
@@ -69,13 +60,13 @@ Status castingFeederAt(AppState& s, const ActionArgs& a) {
   auto f = parseFeeder(text);
   if (!f) return badValues(f.error().message);
   if (Status st = addFeederPart(s, *f); !st) return st;
-  showCasting(s);
+  showPanel(s, Panel::kCasting);
   return Ok{};
 }
 
 void castingPlaceFeederMode(AppState& s) {
   s.casting_ui.placing_feeder = !s.casting_ui.placing_feeder;
-  showCasting(s);
+  showPanel(s, Panel::kCasting);
 }
 
 Status castingPlaceFeederAt(AppState& s, const ActionArgs& a) {
@@ -84,7 +75,7 @@ Status castingPlaceFeederAt(AppState& s, const ActionArgs& a) {
     if (!parseNumber(a.words[size_t(k)], v[k])) return badValues("casting-place-feeder takes I J K, a voxel index");
   }
   if (Status st = placeFeederAt(s, v); !st) return st;
-  showCasting(s);
+  showPanel(s, Panel::kCasting);
   return Ok{};
 }
 
@@ -93,13 +84,13 @@ Status castingDeleteFeederAt(AppState& s, const ActionArgs& a) {
   const auto i = listRow(a, feeders.size(), "casting-delete-feeder", "Casting", "there is no feeder");
   if (!i) return i.error();
   if (Status st = removePart(s, feeders[*i]); !st) return st;
-  showCasting(s);
+  showPanel(s, Panel::kCasting);
   return Ok{};
 }
 
 void simulateCastingNow(AppState& s) {
   simulateCasting(s);
-  showCasting(s);
+  showPanel(s, Panel::kCasting);
 }
 
 void cancelCastingNow(AppState& s) { cancelCasting(s); }
@@ -115,7 +106,7 @@ Status castingFieldChoice(AppState& s, const ActionArgs& a) {
   } else {
     return badValues("casting-field takes time, niyama or modulus");
   }
-  showCasting(s);
+  showPanel(s, Panel::kCasting);
   return Ok{};
 }
 
@@ -129,14 +120,14 @@ Status castingTimeAt(AppState& s, const ActionArgs& a) {
   s.casting_ui.time_shown = v;
   s.casting_ui.playing = false;
   s.casting_ui.field = CastingField::kTime;
-  showCasting(s);
+  showPanel(s, Panel::kCasting);
   return Ok{};
 }
 
 void castingPlay(AppState& s) {
   s.casting_ui.playing = !s.casting_ui.playing;
   if (s.casting_ui.playing) s.casting_ui.field = CastingField::kTime;
-  showCasting(s);
+  showPanel(s, Panel::kCasting);
 }
 
 Status castingHotSpotAt(AppState& s, const ActionArgs& a) {
@@ -156,7 +147,7 @@ Status castingHotSpotAt(AppState& s, const ActionArgs& a) {
   centreView(s, v + 0.5, 3.0 * std::max(size, 8.0));
   s.casting_ui.selected_spot = int32_t(*i);
   s.casting_ui.selected_result = r->id;
-  showCasting(s);
+  showPanel(s, Panel::kCasting);
   return Ok{};
 }
 

@@ -20,11 +20,7 @@ void open(AppState& s) {
 }
 Status openPath(AppState& s, const ActionArgs& a) {
   usePath(s, a.rest, PathSays::kNothing, [](AppState& st, const std::filesystem::path& path) {
-    // a missing file is refused here, where the browser can stay open, rather than after the unsaved prompt
-    if (std::error_code ec; !std::filesystem::is_regular_file(path, ec)) {
-      reportError(st, path.string() + ": no such file");
-      return false;
-    }
+    if (!isExistingFile(st, path)) return false;  // here, not after the unsaved-changes prompt
     requestOpen(st, path);
     return true;
   });

@@ -66,6 +66,12 @@ void usePath(AppState& state, const std::filesystem::path& path, PathSays says,
   }
 }
 
+bool isExistingFile(AppState& state, const std::filesystem::path& path) {
+  if (std::error_code ec; std::filesystem::is_regular_file(path, ec)) return true;
+  reportError(state, path.string() + ": no such file");
+  return false;
+}
+
 bool givePath(AppState& state, ActionId action, const std::filesystem::path& path) {
   state.browser.went_through = false;
   const std::string text = path.string();

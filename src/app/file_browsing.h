@@ -38,6 +38,9 @@ enum class PathSays { kNothing, kWrote };
 void usePath(AppState& state, const std::filesystem::path& path, PathSays says,
              const std::function<bool(AppState&, const std::filesystem::path&)>& use);
 
+// Whether `path` is a file that exists; when not, says so ("PATH: no such file"). Open and Add part refuse a missing
+// file before anything else, while the browser can stay open.
+bool isExistingFile(AppState& state, const std::filesystem::path& path);
 // Gives `path` to the path action `action` (its function, as the browser's Save or Open does; the action opened the
 // browser, so its enabled check is not made again); a failure is shown as a dialog. Returns whether it went through.
 bool givePath(AppState& state, ActionId action, const std::filesystem::path& path);

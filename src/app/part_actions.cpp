@@ -66,10 +66,7 @@ void addPartDialog(AppState& s) {
 }
 Status addPartPath(AppState& s, const ActionArgs& a) {
   usePath(s, a.rest, PathSays::kNothing, [](AppState& st, const std::filesystem::path& path) {
-    if (std::error_code ec; !std::filesystem::is_regular_file(path, ec)) {
-      reportError(st, path.string() + ": no such file");
-      return false;
-    }
+    if (!isExistingFile(st, path)) return false;
     startAddPart(st, path);
     return true;
   });

@@ -11,16 +11,7 @@
 #include "vox/core/text.h"
 
 namespace vox::app::actions {
-namespace {
-
-void showPrint(AppState& s) {
-  s.panel = Panel::kPrint;
-  s.panel_change_requested = true;
-}
-
-}  // namespace
-
-void panelPrint(AppState& s) { showPrint(s); }
+void panelPrint(AppState& s) { showPanel(s, Panel::kPrint); }
 bool onPrint(const AppState& s) { return s.panel == Panel::kPrint; }
 bool printComputingNow(const AppState& s) { return printComputing(s); }
 bool printCancelledNow(const AppState& s) { return printCancelled(s); }
@@ -30,7 +21,7 @@ Status printDirectionAt(AppState& s, const ActionArgs& a) {
   std::string text;
   for (const std::string& w : a.words) text += (text.empty() ? "" : ",") + w;
   if (Status st = setPrintDirection(s, text); !st) return st;
-  showPrint(s);
+  showPanel(s, Panel::kPrint);
   return Ok{};
 }
 
@@ -40,13 +31,13 @@ Status overhangAngleAt(AppState& s, const ActionArgs& a) {
     return badValues("overhang-angle takes degrees from the vertical, 0 to under 90");
   }
   s.print_ui.overhang_angle = v;
-  showPrint(s);
+  showPanel(s, Panel::kPrint);
   return Ok{};
 }
 
 void printOrient(AppState& s) {
   s.print_ui.orient = true;
-  showPrint(s);
+  showPanel(s, Panel::kPrint);
 }
 
 Status printOrientationAt(AppState& s, const ActionArgs& a) {
@@ -56,7 +47,7 @@ Status printOrientationAt(AppState& s, const ActionArgs& a) {
   if (!i) return i.error();
   // the list found stays for the direction applied (print.cpp, knownOrientations): it is not searched again
   s.print_ui.up = r->check.orientations[*i].direction;
-  showPrint(s);
+  showPanel(s, Panel::kPrint);
   return Ok{};
 }
 
@@ -76,13 +67,13 @@ Status printCavityAt(AppState& s, const ActionArgs& a) {
   centreView(s, glm::dvec3(c.box_min + c.box_max + 1) * 0.5, 3.0 * double(std::max({size.x, size.y, size.z})));
   s.print_ui.selected_cavity = int32_t(*i);
   s.print_ui.selected_result = r->id;
-  showPrint(s);
+  showPanel(s, Panel::kPrint);
   return Ok{};
 }
 
 void printLayFaceMode(AppState& s) {
   s.print_ui.lay_face = !s.print_ui.lay_face;
-  showPrint(s);
+  showPanel(s, Panel::kPrint);
 }
 
 Status printLayFaceAt(AppState& s, const ActionArgs& a) {
@@ -91,7 +82,7 @@ Status printLayFaceAt(AppState& s, const ActionArgs& a) {
     if (!parseNumber(a.words[size_t(k)], v[k])) return badValues("print-lay-face takes I J K, a voxel index");
   }
   if (Status st = layFaceOnPlate(s, v); !st) return st;
-  showPrint(s);
+  showPanel(s, Panel::kPrint);
   return Ok{};
 }
 

@@ -11,22 +11,13 @@
 #include "vox/core/text.h"
 
 namespace vox::app::actions {
-namespace {
-
-void showThickness(AppState& s) {
-  s.panel = Panel::kThickness;
-  s.panel_change_requested = true;
-}
-
-}  // namespace
-
-void panelThickness(AppState& s) { showThickness(s); }
+void panelThickness(AppState& s) { showPanel(s, Panel::kThickness); }
 bool onThickness(const AppState& s) { return s.panel == Panel::kThickness; }
 Status minWallAt(AppState& s, const ActionArgs& a) {  // VALUE: the Thickness panel's minimum wall, model units
   double v = 0.0;
   if (!parseNumber(a.words[0], v) || !(v >= 0.0)) return badValues("min-wall takes a length >= 0 in model units");
   s.thickness_ui.min_wall = v;
-  showThickness(s);
+  showPanel(s, Panel::kThickness);
   return Ok{};
 }
 Status minAreaAt(AppState& s, const ActionArgs& a) {
@@ -35,7 +26,7 @@ Status minAreaAt(AppState& s, const ActionArgs& a) {
     return badValues("min-area takes an area in model units^2 (below 0: the minimum wall squared)");
   }
   s.thickness_ui.min_area = v < 0.0 ? -1.0 : v;
-  showThickness(s);
+  showPanel(s, Panel::kThickness);
   return Ok{};
 }
 Status thicknessMethodAt(AppState& s, const ActionArgs& a) {  // VALUE: sphere | ray
@@ -48,7 +39,7 @@ Status thicknessMethodAt(AppState& s, const ActionArgs& a) {  // VALUE: sphere |
   }
   s.thickness_ui.ray = m == "ray";
   if (s.thickness_ui.ray) s.thickness_ui.rays_cancelled = 0;  // asked for again: cast after a cancel
-  showThickness(s);
+  showPanel(s, Panel::kThickness);
   return Ok{};
 }
 
@@ -62,7 +53,7 @@ void showThicknessPlace(AppState& s, glm::ivec3 lo, glm::ivec3 hi) {
   const glm::ivec3 size = hi - lo + 1;
   centreView(s, glm::dvec3(lo + hi + 1) * 0.5, double(std::max({size.x, size.y, size.z})));
   s.section.playing = false;
-  showThickness(s);
+  showPanel(s, Panel::kThickness);
 }
 
 // The selection, for `result`: what was selected in another result is dropped.
