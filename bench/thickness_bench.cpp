@@ -7,6 +7,8 @@
 //   thickness       local thickness from the dense field (its copy made outside the timing)
 //   hot_spots       regional maxima of the dense distance field with their dynamics
 //   thin_walls      thin-wall regions below 10% of the largest thickness
+//   rays            ray thickness (--method ray) from the mesh's own surface, painted over the grid (ray origins per
+//                   voxel face of area: VOXMOD_BENCH_SAMPLES, default 2 as the CLI casts)
 // Peak memory of one step alone: run with --benchmark_filter=<name> under /usr/bin/time -v.
 //
 //   build/bench/thickness_bench --benchmark_filter=distance
@@ -20,6 +22,7 @@
 
 #include "bench_support.h"
 #include "vox/analysis/distance.h"
+#include "vox/analysis/ray_thickness.h"
 #include "vox/analysis/thickness.h"
 #include "vox/io/stl.h"
 #include "vox/voxelize/voxelize.h"
@@ -115,6 +118,26 @@ void thinWalls(benchmark::State& state) {
   }
 }
 
+void rays(benchmark::State& state) {
+  const vox::VoxelGrid& g = benchGrid();
+  auto stl =
+      vox::io::loadStl(vox::bench::sharedMesh(vox::bench::envOr("VOXMOD_BENCH_MESH", "igea_refined_508k") + ".stl"));
+  if (!stl) {
+    state.SkipWithError(stl.error().message.c_str());
+    return;
+  }
+  vox::RayThicknessParams p;
+  p.paint_limit = 2.0 * benchDistance().maxModel() + 2.0 * g.voxelSize();  // as the workflow passes it
+  p.samples_per_face = std::atof(vox::bench::envOr("VOXMOD_BENCH_SAMPLES", "2").c_str());
+  for (auto _ : state) {
+    auto r = vox::computeRayThickness(stl->mesh, g, p);
+    if (!r) state.SkipWithError(r.error().message.c_str());
+    state.counters["rays"] = double(r->rays);
+    state.counters["accepted"] = double(r->accepted);
+    state.counters["voxels"] = double(r->voxels);
+  }
+}
+
 }  // namespace
 
 BENCHMARK(distance)
@@ -138,5 +161,6 @@ BENCHMARK(thinWalls)
     ->MeasureProcessCPUTime()
     ->UseRealTime()
     ->Iterations(1);
+BENCHMARK(rays)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime()->Iterations(1);
 
 BENCHMARK_MAIN();

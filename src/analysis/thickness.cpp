@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "analysis/huge_array.h"
+#include "analysis/morton.h"
 #include "analysis/open_voxels.h"
 #include "analysis/progress_gate.h"
 #include "vox/analysis/thickness.h"
@@ -548,15 +549,7 @@ std::vector<Centre> orderCentres(std::vector<std::vector<Centre>>& buckets, uint
     for (const Centre& c : b) centres[size_t(start[size_t(max_squared - c.s)]++)] = c;
     std::vector<Centre>().swap(b);
   }
-  auto morton = [](const Centre& c) {
-    auto spread = [](uint64_t v) {  // bits of a 16-bit value to every third bit
-      v = (v | v << 16) & 0x0000FF0000FFull;
-      v = (v | v << 8) & 0x00F00F00F00F00Full;
-      v = (v | v << 4) & 0x0C30C30C30C30C3ull;
-      return (v | v << 2) & 0x249249249249249ull;
-    };
-    return spread(c.x) | spread(c.y) << 1 | spread(c.z) << 2;
-  };
+  auto morton = [](const Centre& c) { return analysis_detail::mortonCode(c.x, c.y, c.z); };
   const int64_t values = int64_t(first.size()) - 1;
   parallelChunks(0, values, 1, threadsFor(int64_t(centres.size())), [&](int, int64_t vb, int64_t ve) {
     for (int64_t v = vb; v < ve; ++v) {

@@ -221,6 +221,7 @@ int runThickness(const ThicknessOptions& o) {
   if (Status st = writeOutputs(files, out); !st) return out.fail(st.error());
   d["distance_s"] = run->distance_s;
   d["thickness_s"] = run->thickness_s;
+  d["hot_spots_s"] = run->hot_spots_s;
   if (run->ridge) d["walls_s"] = run->walls_s;
   if (run->ray) d["ray_s"] = run->ray_s;
   return out.finish();
