@@ -17,6 +17,7 @@
 #include "vox/io/mesh_file.h"
 #include "vox/io/voxel_file.h"
 #include "vox/io/vxm_stream.h"
+#include "vox/workflow/model_input.h"
 
 namespace vox::app {
 namespace {
@@ -255,7 +256,7 @@ void startOpen(AppState& state, const std::filesystem::path& path, bool recovere
                            io::MeshFileOptions options;
                            options.resolution = resolution;
                            options.progress = progress;
-                           auto load = io::loadMeshFile(path, options);
+                           auto load = workflow::readMeshFile(path, options);
                            if (!load) return load.error();
                            auto mesh = makeMeshSource(path, std::move(load).value());
                            mesh->load_s = nowSeconds() - t0;

@@ -9,6 +9,7 @@
 #include "app/messages.h"
 #include "vox/core/text.h"
 #include "vox/io/cad.h"
+#include "vox/workflow/model_input.h"
 
 namespace vox::app {
 
@@ -69,7 +70,7 @@ Result<VoxelizeOutcome> voxelizeMesh(const std::shared_ptr<const MeshSource>& op
     mesh = out.mesh = std::move(fresh);
     voxelizing = [&](double f) { return !progress || progress(0.4 + 0.6 * f); };
   }
-  auto result = voxelizeSolid(mesh->mesh, params, voxelizing, &mesh->topology);
+  auto result = workflow::voxelizeMesh(mesh->mesh, mesh->topology, params, voxelizing);
   if (!result) return result.error();
   out.result = std::move(result).value();
   return out;

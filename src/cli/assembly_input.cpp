@@ -10,6 +10,7 @@
 #include "vox/io/mesh_file.h"
 #include "vox/io/voxel_file.h"
 #include "vox/voxelize/bodies.h"
+#include "vox/workflow/model_input.h"
 
 namespace vox::cli {
 namespace {
@@ -128,8 +129,8 @@ Status addMeshInput(const Input& in, const GridPlacement& whole, const VoxelizeP
     }
     return Ok{};
   }
-  auto r = voxelizeSolid(mesh, p, terminalProgress("voxelizing " + in.name), &in.mesh->topology);
-  if (!r) return makeError(r.error().code, in.name + ": " + r.error().message);
+  auto r = workflow::voxelizeMesh(mesh, in.mesh->topology, p, terminalProgress("voxelizing " + in.name), in.name);
+  if (!r) return r.error();
   for (const std::string& w : r->warnings) log.warn(in.name + ": " + w);
   out.parts.push_back(LatticeGrid{std::move(r->grid), p.placement->first});
   out.names.push_back(in.name);

@@ -19,26 +19,21 @@ namespace {
 // are collected (a batch prints nothing per file).
 Result<VoxelGrid> readGrid(const BatchItem& item, const BatchSettings& settings, int threads,
                            std::vector<std::string>& warnings) {
-  const std::string name = fs::path(item.input).filename().string();
-  if (io::isVoxelFile(item.input)) {
-    auto grid = io::loadVoxelFile(item.input);
-    if (grid && !settings.mesh.units.empty()) grid->frame().units = settings.mesh.units;
-    return grid;
-  }
-  io::MeshFileOptions file_options = meshFileOptions(settings.mesh);
-  file_options.progress = {};  // several files at once: no per-file progress lines
-  auto mesh = io::loadMeshFile(item.input, file_options);
-  if (!mesh) return mesh.error();
-  warnings.insert(warnings.end(), mesh->warnings.begin(), mesh->warnings.end());
+  workflow::ModelFileOptions o;
+  o.reading = meshFileOptions(settings.mesh);
+  o.reading.progress = {};  // several files at once: no per-file progress lines
   auto params = voxelizeParams(settings.mesh);
   if (!params) return params.error();
-  params->units = mesh->units;
-  params->threads = threads;
-  auto result = voxelizeSolid(mesh->mesh, *params, {}, &mesh->topology);
-  if (!result) return makeError(result.error().code, item.input + ": " + result.error().message);
-  warnings.insert(warnings.end(), result->warnings.begin(), result->warnings.end());
-  result->grid.frame().source = name;  // as voxelize names it
-  return std::move(result->grid);
+  o.params = *params;
+  o.params.threads = threads;
+  o.units = settings.mesh.units;
+  o.name = item.input;
+  o.messages = [&warnings](workflow::InputMessage kind, const std::string& text) {
+    if (kind == workflow::InputMessage::kWarning) warnings.push_back(text);
+  };
+  auto model = workflow::readModelFile(item.input, o);
+  if (!model) return model.error();
+  return std::move(model->grid);
 }
 
 // The grid in the format of the item's output (atomic; the directories below OUTDIR made first).

@@ -14,6 +14,7 @@
 #include "cli/voxelize_stream.h"
 #include "vox/io/voxel_file.h"
 #include "vox/voxelize/stream.h"
+#include "vox/workflow/model_input.h"
 
 namespace vox::cli {
 namespace {
@@ -44,8 +45,8 @@ int runVoxelizeHere(const VoxelizeOptions& o) {
                                                  "--remove-strays needs it whole; leave it out or lower --res"});
   }
   if (*slab_layers > 0) return runStreamedVoxelize({o.mesh, o.out, *slab_layers, t0, t_loaded}, *mesh, *params, out);
-  auto result = voxelizeSolid(mesh->mesh, *params, terminalProgress("voxelizing"), &mesh->topology);
-  if (!result) return out.fail(Error{result.error().code, o.mesh + ": " + result.error().message});
+  auto result = workflow::voxelizeMesh(mesh->mesh, mesh->topology, *params, terminalProgress("voxelizing"), o.mesh);
+  if (!result) return out.fail(result.error());
   const double t_voxelized = nowSeconds();
   for (const std::string& w : result->warnings) out.warn(w);
   // The mesh is no longer needed: release it before the file is encoded, so writing never adds to the peak.

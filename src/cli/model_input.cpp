@@ -111,12 +111,23 @@ io::MeshFileOptions meshFileOptions(const MeshOptions& options) {
   return o;
 }
 
+namespace {
+
+// The reader's and the voxelizer's warnings and notes, through `out` as they arise.
+workflow::InputMessages messagesTo(Output& out) {
+  return [&out](workflow::InputMessage kind, const std::string& text) {
+    if (kind == workflow::InputMessage::kWarning) {
+      out.warn(text);
+    } else {
+      out.note(text);
+    }
+  };
+}
+
+}  // namespace
+
 Result<io::MeshFileLoad> loadMesh(const std::filesystem::path& file, const MeshOptions& options, Output& out) {
-  auto mesh = io::loadMeshFile(file, meshFileOptions(options));
-  if (!mesh) return mesh.error();
-  for (const std::string& w : mesh->warnings) out.warn(w);
-  for (const std::string& n : mesh->notes) out.note(n);
-  return mesh;
+  return workflow::readMeshFile(file, meshFileOptions(options), messagesTo(out));
 }
 
 void warnMeshOnlyOptions(const std::filesystem::path& file, const MeshOptions& options, Output& out) {
@@ -130,43 +141,21 @@ void warnMeshOnlyOptions(const std::filesystem::path& file, const MeshOptions& o
 
 Result<LoadedModel> loadModel(const std::filesystem::path& file, const MeshOptions& options, Output& out,
                               bool keep_mesh) {
-  LoadedModel m;
-  const double t0 = nowSeconds();
-  if (io::isVoxelFile(file)) {
-    warnMeshOnlyOptions(file, options, out);
-    auto grid = io::loadVoxelFile(file);
-    if (!grid) return grid.error();
-    m.grid = std::move(grid).value();
-    if (!options.units.empty()) m.grid.frame().units = options.units;
-    m.load_s = nowSeconds() - t0;
-    return m;
-  }
-  auto mesh = loadMesh(file, options, out);
-  if (!mesh) return mesh.error();
-  m.load_s = nowSeconds() - t0;
-  m.from_mesh = true;
-  m.triangles = int64_t(mesh->mesh.triangles.size());
-  m.topology = mesh->topology;
-  m.format = mesh->format_detail;
-  m.bodies = int64_t(mesh->bodies.size());
-  m.file_units = mesh->file_units;
-  m.deflection = mesh->deflection;
-
+  if (io::isVoxelFile(file)) warnMeshOnlyOptions(file, options, out);
+  workflow::ModelFileOptions o;
+  o.reading = meshFileOptions(options);
   auto params = voxelizeParams(options);
   if (!params) return params.error();
-  params->units = mesh->units;
-  const double t1 = nowSeconds();
-  auto result = voxelizeSolid(mesh->mesh, *params, terminalProgress("voxelizing"), &mesh->topology);
-  if (!result) {
-    return makeError(result.error().code, file.filename().string() + ": " + result.error().message);
+  o.params = *params;
+  o.units = options.units;
+  o.voxelizing = terminalProgress("voxelizing");
+  o.keep_mesh = keep_mesh;
+  o.messages = messagesTo(out);
+  auto m = workflow::readModelFile(file, o);
+  if (!m) return m.error();
+  if (m->from_mesh) {
+    out.say("voxelized " + file.filename().string() + " with mode " + m->mode_used + " (" + m->mode_reason + ")");
   }
-  m.voxelize_s = nowSeconds() - t1;
-  for (const std::string& w : result->warnings) out.warn(w);
-  m.mode_used = fillModeName(result->mode_used);
-  out.say("voxelized " + file.filename().string() + " with mode " + m.mode_used + " (" + result->mode_reason + ")");
-  m.grid = std::move(result->grid);
-  m.grid.frame().source = file.filename().string();
-  if (keep_mesh) m.mesh = std::move(mesh->mesh);
   return m;
 }
 

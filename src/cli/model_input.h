@@ -13,6 +13,7 @@
 #include "vox/core/voxel_grid.h"
 #include "vox/io/mesh_file.h"
 #include "vox/voxelize/voxelize.h"
+#include "vox/workflow/model_input.h"
 
 namespace CLI {
 class App;
@@ -36,27 +37,14 @@ struct MeshOptions {
 // number of MiB, or a number with K, M or G (KiB, MiB, GiB).
 void addMeshOptions(CLI::App& sub, MeshOptions& options, const std::string& mode_names = "--mode,--fill-mode");
 
-struct LoadedModel {
-  VoxelGrid grid;
-  bool from_mesh = false;
-  int64_t triangles = 0;             // when from_mesh
-  MeshTopology topology;             // when from_mesh
-  std::optional<TriangleMesh> mesh;  // when from_mesh and kept
-  std::string mode_used;             // when from_mesh
-  // When from_mesh: the file's format ("binary STL", "STEP (AUTOMOTIVE_DESIGN)"), bodies, the unit it declares and,
-  // for CAD files, the tessellation's deflection (model units).
-  std::string format;
-  int64_t bodies = 0;
-  std::string file_units;
-  double deflection = 0.0;
-  double load_s = 0.0, voxelize_s = 0.0;
-};
+// A model read from FILE (vox/workflow/model_input.h).
+using LoadedModel = workflow::ModelFile;
 
 // The voxelizer's params from the options (--mode, --memory-limit, --units on top of --res / --voxel-size /
 // --threads), for every subcommand that voxelizes a mesh.
 Result<VoxelizeParams> voxelizeParams(const MeshOptions& options);
 
-// What io::loadMeshFile needs from the options: the grid (CAD files are tessellated for its voxel size), --units,
+// What reading a mesh file needs from the options: the grid (CAD files are tessellated for its voxel size), --units,
 // --memory-limit; progress on stderr when it is a terminal.
 io::MeshFileOptions meshFileOptions(const MeshOptions& options);
 // Reads a mesh or CAD file; its warnings and notes go through `out`.
