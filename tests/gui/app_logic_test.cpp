@@ -25,6 +25,7 @@
 #include "app/script_runner.h"
 #include "app/settings.h"
 #include "app/update.h"
+#include "gui/app_test_support.h"
 #include "support/cad_parts.h"
 #include "support/test_support.h"
 #include "vox/io/cad.h"
@@ -252,18 +253,7 @@ TEST(AppActions, everyActionIsInTheTableOnceAndShortcutsAreUnique) {
 
 // ---- Document operations ----
 
-// Pumps the per-frame update until `done` holds (the workers run in the background).
-template <class F>
-bool pump(AppState& state, F done) {
-  // A deadline, not a count of frames: under the thread sanitizer a large file takes many times longer to open.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  while (std::chrono::steady_clock::now() < deadline) {
-    updateDocument(state);
-    if (done()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  return false;
-}
+using test_app::pump;
 
 // A solid 12 x 10 x 8 block: 4 skin layers, since the thinnest side (8) loses a voxel at both ends per layer.
 VoxelGrid block() {

@@ -15,6 +15,7 @@
 #include "app/parts.h"
 #include "app/parts_view.h"
 #include "app/viewport.h"
+#include "gui/app_test_support.h"
 #include "support/cad_parts.h"
 #include "support/test_support.h"
 #include "vox/analysis/assembly.h"
@@ -27,45 +28,9 @@
 namespace vox::app {
 namespace {
 
-template <class F>
-bool pump(AppState& state, F done) {
-  for (int i = 0; i < 5000; ++i) {
-    updateDocument(state);
-    if (done()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  return false;
-}
-
-Status run(AppState& state, const std::string& line) {
-  std::vector<std::string> words;
-  std::string rest;
-  size_t start = 0;
-  while (start < line.size()) {
-    const size_t end = std::min(line.find(' ', start), line.size());
-    words.push_back(line.substr(start, end - start));
-    start = end + 1;
-  }
-  const Action* a = findAction(words[0]);
-  if (!a) return makeError(ErrorCode::kInvalidArgument, "no action " + words[0]);
-  words.erase(words.begin());
-  if (const size_t sp = line.find(' '); sp != std::string::npos) rest = line.substr(sp + 1);
-  return dispatch(state, *a, ActionArgs{words, rest});
-}
-
-// A headless GL context on Mesa's software rasteriser, for the tests of the view (an error where there is none).
-Result<std::unique_ptr<render::HeadlessContext>> llvmpipeContext() {
-  setenv("GALLIUM_DRIVER", "llvmpipe", 1);
-  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 1);
-  return render::HeadlessContext::create();
-}
-
-// Skips the test without a headless GL context (fails in CI, where Mesa's EGL is installed).
-#define VOX_SKIP_WITHOUT_GL(context)                                                       \
-  if (!(context)) {                                                                        \
-    if (test::inCI()) FAIL() << "no headless OpenGL in CI: " << (context).error().message; \
-    GTEST_SKIP() << "no headless OpenGL: " << (context).error().message;                   \
-  }
+using test_app::llvmpipeContext;
+using test_app::pump;
+using test_app::run;
 
 // A box [lo, hi] as 12 outward triangles (the unit cube scaled and moved).
 void addBox(TriangleMesh& mesh, glm::vec3 lo, glm::vec3 hi) {
