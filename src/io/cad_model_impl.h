@@ -2,6 +2,7 @@
 // What a CadModel holds (vox/io/cad.h): the healed Open CASCADE shape in millimetres and what reading found.
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <TopoDS_Shape.hxx>
@@ -18,6 +19,10 @@ struct CadModel::Impl {
   MeshFormat format = MeshFormat::kUnknown;
   std::string format_detail, file_units, name;
   std::vector<std::string> warnings, notes;
+  // STEP: the solids the transfer made with their products' names (io/step_names.h), then, once healed, a name per
+  // solid of `shape` in the order TopExp_Explorer meets them (empty where the file names none).
+  std::vector<std::pair<TopoDS_Shape, std::string>> named_solids;
+  std::vector<std::string> solid_names;
 };
 
 }  // namespace vox::io

@@ -16,6 +16,7 @@
 #include <atomic>
 #include <cctype>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include <BRepBndLib.hxx>
@@ -32,6 +33,7 @@
 #include <Interface_InterfaceModel.hxx>
 #include <IFSelect_WorkLibrary.hxx>
 #include <STEPControl_Reader.hxx>
+#include <ShapeBuild_ReShape.hxx>
 #include <ShapeFix_Shape.hxx>
 #include <StepData_StepModel.hxx>
 #include <StepShape_OrientedEdge.hxx>
@@ -44,6 +46,7 @@
 #include "io/cad_model_impl.h"
 #include "io/occt_support.h"
 #include "io/step_check.h"
+#include "io/step_names.h"
 #include "vox/core/text.h"
 #include "vox/core/units.h"
 #include "vox/io/file_util.h"
@@ -199,7 +202,9 @@ Status readStep(std::span<const uint8_t> bytes, const std::string& name, const P
   if (lengths.Length() > 0) out.file_units = lengths.Value(1).ToCString();
   const std::string schema = stepSchema(reader);
   out.format_detail = schema.empty() ? "STEP" : "STEP (" + schema + ")";
-  return transfer(reader, name, "STEP", lock, progress, out.shape);
+  if (Status s = transfer(reader, name, "STEP", lock, progress, out.shape); !s.ok()) return s;
+  out.named_solids = stepSolidNames(reader);
+  return Ok{};
 }
 
 Status readIgesFile(const std::filesystem::path& path, const std::string& name, const ProgressFn& progress,
@@ -266,6 +271,20 @@ Status applyUnitOverride(const std::string& units, const std::string& name, CadM
   return Ok{};
 }
 
+// The name of each solid of the healed shape, from the solids the transfer named (healing may have replaced them).
+void nameSolids(const ShapeFix_Shape& fix, CadModel::Impl& out) {
+  if (out.named_solids.empty()) return;
+  std::map<const TopoDS_TShape*, std::string> by_shape;
+  for (const auto& [solid, name] : out.named_solids) {
+    const TopoDS_Shape healed = fix.Context().IsNull() ? solid : fix.Context()->Value(solid);
+    by_shape.emplace(healed.TShape().get(), name);
+  }
+  for (TopExp_Explorer e(out.shape, TopAbs_SOLID); e.More(); e.Next()) {
+    const auto it = by_shape.find(e.Current().TShape().get());
+    out.solid_names.push_back(it == by_shape.end() ? std::string() : it->second);
+  }
+}
+
 // ShapeFix_Shape (progress [0.7, 0.95]), then counts and the tight bounding box.
 Status healAndMeasure(const std::string& name, const ProgressFn& progress, CadModel::Impl& out) {
   occt::ProgressBridge bridge(progress, 0.7, 0.95);
@@ -273,6 +292,7 @@ Status healAndMeasure(const std::string& name, const ProgressFn& progress, CadMo
   fix.Perform(bridge.Start());
   if (bridge.cancelled()) return makeError(ErrorCode::kCancelled, name + ": healing cancelled");
   out.shape = fix.Shape();
+  nameSolids(fix, out);
   for (TopExp_Explorer e(out.shape, TopAbs_SOLID); e.More(); e.Next()) ++out.solids;
   for (TopExp_Explorer e(out.shape, TopAbs_FACE, TopAbs_SOLID); e.More(); e.Next()) ++out.loose_faces;
   if (out.solids == 0 && out.loose_faces == 0) {

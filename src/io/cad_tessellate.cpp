@@ -6,6 +6,8 @@
 // it, so a solid's triangles meet at bit-identical vertices: a closed solid gives a watertight mesh by exact welding,
 // which is what the voxelizer's auto mode checks. An assembly's instances share their part's triangulation; each is
 // placed by its own location, computed in double before rounding to float.
+#include <map>
+
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
@@ -89,14 +91,28 @@ Status sewLooseFaces(const TopoDS_Shape& shape, double tolerance, const std::str
   return Ok{};
 }
 
+// The solids' names: their products' as the file names them ("bolt"; "bolt 1", "bolt 2" where a product is placed
+// more than once), else "solid N" (N counting the solids from 1).
+void nameBodies(const std::vector<std::string>& names, std::vector<CadBody>& bodies) {
+  std::map<std::string, int> count, seen;
+  for (size_t k = 0; k < bodies.size() && k < names.size(); ++k)
+    if (!names[k].empty()) ++count[names[k]];
+  for (size_t k = 0; k < bodies.size(); ++k) {
+    const std::string& name = k < names.size() ? names[k] : std::string();
+    if (name.empty()) {
+      bodies[k].name = "solid " + std::to_string(k + 1);
+    } else {
+      bodies[k].name = count[name] > 1 ? name + " " + std::to_string(++seen[name]) : name;
+    }
+  }
+}
+
 // The bodies to mesh: the file's solids, then sewn shells; open surfaces only when nothing is closed.
 Result<CadBodies> collectBodies(const CadModel::Impl& model, const TopoDS_Shape& shape, double tolerance,
                                 const ProgressFn& progress, std::vector<std::string>& warnings) {
   CadBodies out;
-  int64_t n = 0;
-  for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next()) {
-    out.bodies.push_back({e.Current(), "solid " + std::to_string(++n)});
-  }
+  for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next()) out.bodies.push_back({e.Current(), ""});
+  nameBodies(model.solid_names, out.bodies);
   std::vector<TopoDS_Shape> open;
   if (Status s = sewLooseFaces(shape, tolerance, model.name, progress, out, open); !s.ok()) return s.error();
   if (open.empty()) return out;

@@ -13,6 +13,9 @@
 #include <Message_PrinterOStream.hxx>
 #include <STEPControl_Controller.hxx>
 #include <STEPControl_Writer.hxx>
+#include <StepBasic_Product.hxx>
+#include <TCollection_HAsciiString.hxx>
+#include <StepData_StepModel.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Face.hxx>
 #include <gp_Ax2.hxx>
@@ -63,6 +66,28 @@ TopoDS_Compound compoundOf(const std::vector<CadPart>& parts) {
   return all;
 }
 
+// The writer names the compound's product "Open CASCADE STEP translator <version> 1" and part k's "... 1.k" (or the
+// one part's "... 1"): each part's product takes the part's name instead.
+void nameProducts(STEPControl_Writer& writer, const std::vector<CadPart>& parts) {
+  const Handle(StepData_StepModel) model = writer.Model();
+  for (int i = 1; i <= model->NbEntities(); ++i) {
+    const auto product = Handle(StepBasic_Product)::DownCast(model->Value(i));
+    if (product.IsNull() || product->Name().IsNull()) continue;
+    const std::string name = product->Name()->ToCString();
+    const size_t dot = name.rfind(" 1.");
+    size_t k = 0;
+    if (dot != std::string::npos) {
+      k = size_t(std::stoul(name.substr(dot + 3)));
+    } else if (parts.size() == 1 && name.size() > 2 && name.compare(name.size() - 2, 2, " 1") == 0) {
+      k = 1;
+    }
+    if (k < 1 || k > parts.size()) continue;
+    const Handle(TCollection_HAsciiString) given = new TCollection_HAsciiString(parts[k - 1].name.c_str());
+    product->SetName(given);
+    product->SetId(given);
+  }
+}
+
 }  // namespace
 
 void writeStep(const std::filesystem::path& path, const std::vector<CadPart>& parts, const char* unit,
@@ -73,6 +98,7 @@ void writeStep(const std::filesystem::path& path, const std::vector<CadPart>& pa
   ASSERT_TRUE(Interface_Static::SetCVal("write.step.unit", unit));  // read when the writer makes its model
   STEPControl_Writer writer;
   ASSERT_EQ(writer.Transfer(compoundOf(parts), STEPControl_AsIs), IFSelect_RetDone);
+  nameProducts(writer, parts);
   ASSERT_EQ(writer.Write(path.c_str()), IFSelect_RetDone) << path;
   Interface_Static::SetCVal("write.step.unit", "MM");
   Interface_Static::SetCVal("write.step.schema", "AP214IS");

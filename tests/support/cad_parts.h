@@ -18,6 +18,7 @@ struct CadPart {
   CadShape shape = CadShape::kBox;
   glm::dvec3 corner{0.0};
   glm::dvec3 size{1.0};
+  std::string name{};  // STEP: the name of the part's product (empty: none)
 };
 
 // Writes the parts as one STEP file (each part its own solid), lengths in `unit` ("MM", "INCH", "M"; the parts'

@@ -191,6 +191,22 @@ TEST(CadFile, eachSolidOfAnAssemblyIsABody) {
   EXPECT_TRUE(m.topology.watertight());
 }
 
+// A STEP file's solids take their products' names, numbered where a product is placed more than once; a solid of a
+// product without a name is "solid N" (N its place among the solids).
+TEST(CadFile, solidsAreNamedByTheirProducts) {
+  test::TempDir tmp;
+  test::writeStep(tmp / "named.step", {{CadShape::kBox, {0, 0, 0}, {4, 4, 1}, "plate"},
+                                       {CadShape::kCylinder, {1, 1, 1}, {0.5, 0, 2}, "pin"},
+                                       {CadShape::kCylinder, {3, 3, 1}, {0.5, 0, 2}, "pin"},
+                                       {CadShape::kSphere, {8, 8, 8}, {1, 0, 0}, ""}});
+  const MeshFileLoad m = loadOk(tmp / "named.step");
+  ASSERT_EQ(m.bodies.size(), 4u);
+  std::vector<std::string> names;
+  for (const MeshBody& b : m.bodies) names.push_back(b.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"plate", "pin 1", "pin 2", "solid 4"}));
+  EXPECT_EQ(m.bodies[0].triangle_count, 12u);  // the plate is the box
+}
+
 TEST(CadFile, igesSurfaceModelIsSewnIntoAClosedSolid) {
   test::TempDir tmp;
   test::writeIgesFaces(tmp / "box.iges", {{CadShape::kBox, {0, 0, 0}, {10, 10, 10}}});
