@@ -211,6 +211,13 @@ Result<Interference> findInterference(std::span<const LatticeGrid> parts, const 
   }
   std::stable_sort(out.pairs.begin(), out.pairs.end(),
                    [](const InterferencePair& x, const InterferencePair& y) { return x.voxels > y.voxels; });
+  for (InterferencePair& p : out.pairs) {  // how thick each overlap is: contact or interference
+    if (gate.cancelled()) return makeError(ErrorCode::kCancelled, "finding interference: cancelled");
+    auto thickness = overlapThickness(sharedVoxels(parts[size_t(p.a)], parts[size_t(p.b)], lattice), lattice);
+    // without memory for the distance: the box's least side, which no overlap inside it exceeds
+    const glm::ivec3 side = p.box.size();
+    p.thickness = thickness ? *thickness : double(std::min({side.x, side.y, side.z})) * lattice.voxel_size;
+  }
   Box3i all;
   for (const Box3i& b : boxes) all = unite(all, b);
   if (!all.empty() && !out.pairs.empty()) {

@@ -156,6 +156,7 @@ void removeSelected(AppState& s);
 Status removeAt(AppState& s, const ActionArgs& a);  // N, from 1
 void findInterferenceNow(AppState& s);
 Status showPairAt(AppState& s, const ActionArgs& a);     // N: the list's row from 1; 0 clears
+Status contactAt(AppState& s, const ActionArgs& a);      // T: overlaps at most T thick (model units) are contact
 Status selectPartsAt(AppState& s, const ActionArgs& a);  // N...: part numbers from 1
 Status partVisibleAt(AppState& s, const ActionArgs& a);  // N on|off
 Status partsScopeAt(AppState& s, const ActionArgs& a);   // union | selected

@@ -139,6 +139,7 @@ const Action kActions[] = {
   {ActionId::kCancelInterference, "cancel-interference", nullptr, "Cancel finding interference", kNone,                     0, 0,  cancelInterferenceNow, nullptr,   interferenceRunning, nullptr},
   {ActionId::kClearance,      "clearance",       "Parts",   "Clearance of the two selected parts", kNone,                      2, 2,  clearanceSelected, clearanceAt,   hasParts,    nullptr},
   {ActionId::kInterferencePair, "interference-pair", nullptr, "Show an interference pair",        kNone,                       1, 1,  nullptr,       showPairAt,        hasInterference, nullptr},
+  {ActionId::kInterferenceContact, "contact",      nullptr,   "Contact: overlaps this thin only touch", kNone,                     1, 1,  nullptr,       contactAt,         hasParts,    nullptr},
   {ActionId::kSelectPart,     "select-part",     nullptr,   "Select parts",                       kNone,                       1, -1, nullptr,       selectPartsAt,     hasParts,    nullptr},
   {ActionId::kPartVisible,    "part-visible",    nullptr,   "Show or hide a part",                kNone,                       2, 2,  nullptr,       partVisibleAt,     hasParts,    nullptr},
   {ActionId::kPartsScope,     "parts-scope",     nullptr,   "Section, X-ray and mass on",         kNone,                       1, 1,  nullptr,       partsScopeAt,      hasParts,    nullptr},

@@ -118,6 +118,7 @@ enum class ActionId {
   kRemovePart,
   kInterference,
   kInterferencePair,
+  kInterferenceContact,
   kSelectPart,
   kPartVisible,
   kPartsScope,

@@ -2,6 +2,7 @@
 // selecting and showing parts, and the interference list. Part numbers in scripts count from 1, as the panel shows.
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <system_error>
 #include <utility>
@@ -123,6 +124,16 @@ Status showPairAt(AppState& s, const ActionArgs& a) {
     return badValues("interference pairs go from 1 to " + std::to_string(inter->pairs.size()) + " (0: none)");
   }
   showInterferencePair(s, int32_t(n) - 1);
+  showParts(s);
+  return Ok{};
+}
+
+Status contactAt(AppState& s, const ActionArgs& a) {
+  double v = 0.0;
+  if (!parseNumber(a.words[0], v) || !(v >= 0.0) || !std::isfinite(v)) {
+    return badValues("contact takes a thickness >= 0 in model units (0: every shared voxel interferes)");
+  }
+  s.parts_ui.contact = v;
   showParts(s);
   return Ok{};
 }

@@ -26,11 +26,12 @@ struct PartsUi {
   uint64_t interference_version = 0;  // the model version `interference` was found for (0: none)
   std::optional<Interference> interference;
   double interference_s = 0.0;
-  int32_t pair = -1;                  // the interference pair shown (index into interference->pairs); -1: none
-  VoxelGrid pair_overlap;             // its shared voxels on the model's frame
-  uint64_t pair_key = 0;              // changes with the pair shown (the overlay renderer's key)
-  std::vector<int64_t> voxel_counts;  // filled voxels of each part (partVoxelCounts)
-  uint64_t counts_version = 0;        // the model version they were counted for
+  int32_t pair = -1;       // the interference pair shown (index into interference->pairs); -1: none
+  double contact = 0.0;    // overlaps at most this thick (model units) only touch: listed as contact, not interference
+  VoxelGrid pair_overlap;  // its shared voxels on the model's frame
+  uint64_t pair_key = 0;   // changes with the pair shown (the overlay renderer's key)
+  std::vector<int64_t> voxel_counts;            // filled voxels of each part (partVoxelCounts)
+  uint64_t counts_version = 0;                  // the model version they were counted for
   uint64_t interference_cancelled_version = 0;  // the model version whose interference search was cancelled
   // The clearance between two parts (parts_clearance.cpp): the parts and model version it was found for.
   std::optional<Clearance> clearance;

@@ -135,10 +135,11 @@ struct InterfereOptions {
   std::vector<std::string> files;
   bool bodies = false, json = false;
   int connectivity = 6;
+  double contact = 0.0;  // --contact: overlaps at most this thick are contact, not interference (model units)
   MeshOptions mesh;
 };
 
-nlohmann::ordered_json pairJson(const InterferencePair& pair, const Lattice& lattice) {
+nlohmann::ordered_json pairJson(const InterferencePair& pair, const Lattice& lattice, double contact) {
   nlohmann::ordered_json j;
   j["a"] = pair.a;
   j["b"] = pair.b;
@@ -146,6 +147,8 @@ nlohmann::ordered_json pairJson(const InterferencePair& pair, const Lattice& lat
   j["volume"] = volumeOf(pair.voxels, lattice);
   j["bbox"] = boxJson(pair.box, lattice);
   j["centre"] = jsonVec3(pair.centre);
+  j["thickness"] = pair.thickness;
+  j["contact"] = isContact(pair, contact);
   return j;
 }
 
@@ -161,8 +164,14 @@ int runInterfere(const InterfereOptions& o) {
   auto& d = out.data();
   d["parts"] = p.names;
   nlohmann::ordered_json pairs = nlohmann::ordered_json::array();
-  for (const InterferencePair& pair : r.pairs) pairs.push_back(pairJson(pair, p.lattice));
+  int64_t interfering = 0;
+  for (const InterferencePair& pair : r.pairs) {
+    pairs.push_back(pairJson(pair, p.lattice, o.contact));
+    interfering += !isContact(pair, o.contact);
+  }
   d["pairs"] = std::move(pairs);
+  d["contact"] = o.contact;
+  d["interfering_pairs"] = interfering;
   d["overlap_voxels"] = r.overlap_voxels;
   d["overlap_volume"] = volumeOf(r.overlap_voxels, p.lattice);
   d["multiple_overlap_voxels"] = r.multiple_overlap_voxels;
@@ -173,13 +182,17 @@ int runInterfere(const InterfereOptions& o) {
   d["voxelize_s"] = p.voxelize_s;
   d["interfere_s"] = interfere_s;
   d["total_s"] = nowSeconds() - t0;
-  out.say(std::to_string(p.parts.size()) + " parts, " + std::to_string(r.pairs.size()) + " interfering pairs, " +
-          std::to_string(r.overlap_voxels) + " voxels in two or more parts (" +
+  const std::string contacts = o.contact > 0.0 ? " (and " + std::to_string(int64_t(r.pairs.size()) - interfering) +
+                                                     " in contact, overlapping " + significant(o.contact) + " or less)"
+                                               : std::string();
+  out.say(std::to_string(p.parts.size()) + " parts, " + std::to_string(interfering) + " interfering pairs" + contacts +
+          ", " + std::to_string(r.overlap_voxels) + " voxels in two or more parts (" +
           std::to_string(r.multiple_overlap_voxels) + " in three or more)");
   for (size_t i = 0; i < r.pairs.size() && i < 10; ++i) {
     const InterferencePair& q = r.pairs[i];
     out.say("  " + p.names[size_t(q.a)] + " / " + p.names[size_t(q.b)] + ": " + std::to_string(q.voxels) +
-            " voxels, volume " + significant(volumeOf(q.voxels, p.lattice)));
+            " voxels, volume " + significant(volumeOf(q.voxels, p.lattice)) + ", " + significant(q.thickness) +
+            " thick" + (isContact(q, o.contact) ? " (contact)" : ""));
   }
   return out.finish();
 }
@@ -266,6 +279,10 @@ void addInterfereCommand(CLI::App& sub, CommandContext& ctx) {
                  "With --bodies, for voxel files: components joined through faces (6, default) or also edges and "
                  "corners (26)")
       ->check(CLI::IsMember({6, 26}));
+  sub.add_option("--contact", o->contact,
+                 "Overlaps at most this thick (model units) are contact, not interference: parts that touch overlap "
+                 "by a voxel or two (default 0: every shared voxel interferes)")
+      ->check(CLI::NonNegativeNumber);
   sub.callback([o, &ctx] { ctx.exit_code = runInterfere(*o); });
 }
 

@@ -157,6 +157,37 @@ TEST_F(AssemblyCli, aStepFilesTouchingSolidsStayTwoBodies) {
   EXPECT_TRUE(k["pairs"].empty());  // touching, not overlapping
 }
 
+// Contact: c.stl overlaps a.stl in one layer of voxels (x = 9, where a ends at 10 and c starts at 9.2), a sheet 1
+// voxel thick; a and b overlap in a 4 x 5 x 6 block, 3 voxels thick by the exact distance ((2 d - 1), d = 2). With
+// --contact 1 the first only touches.
+TEST_F(AssemblyCli, interfereTellsContactFromInterference) {
+  ASSERT_TRUE(io::saveStlBinary(boxMesh({9.2f, -10, 0}, {20, 4, 10}), path("c.stl")).ok());
+  for (const char* contact : {"0", "1"}) {
+    auto r = runVoxmod(
+        {"interfere", path("a.stl"), path("b.stl"), path("c.stl"), "--res", "25", "--contact", contact, "--json"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const json j = parse(r);
+    ASSERT_DOUBLE_EQ(j["voxel_size"].get<double>(), 1.0);
+    ASSERT_EQ(j["pairs"].size(), 2u);
+    const json& ab = j["pairs"][0];  // the larger overlap first
+    const json& ac = j["pairs"][1];
+    EXPECT_EQ(ab["a"], 0);
+    EXPECT_EQ(ab["b"], 1);
+    EXPECT_EQ(ab["voxels"], 120);
+    EXPECT_DOUBLE_EQ(ab["thickness"].get<double>(), 3.0);
+    EXPECT_EQ(ac["a"], 0);
+    EXPECT_EQ(ac["b"], 2);
+    EXPECT_EQ(ac["voxels"], 40);
+    EXPECT_DOUBLE_EQ(ac["thickness"].get<double>(), 1.0);
+    const bool tolerant = std::string(contact) == "1";
+    EXPECT_FALSE(ab["contact"].get<bool>());
+    EXPECT_EQ(ac["contact"].get<bool>(), tolerant);
+    EXPECT_EQ(j["interfering_pairs"], tolerant ? 1 : 2);
+  }
+  auto bad = runVoxmod({"interfere", path("a.stl"), path("b.stl"), "--contact", "-1"});
+  EXPECT_NE(bad.exit_code, 0);
+}
+
 // The shared assembly's 18 solids (brackets with the bolts and nuts that touch them) stay 18 bodies and 18 parts,
 // each named by its product in the file (PRODUCT('nut', ...): eight nuts, six bolts, two l-brackets, a rod and a
 // plate), a product placed more than once numbered.

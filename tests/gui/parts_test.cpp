@@ -96,6 +96,15 @@ TEST(AppParts, aMeshSplitsIntoItsBodiesOnTheModelsLattice) {
   EXPECT_EQ(inter->pairs[0].b, 1);
   EXPECT_EQ(inter->pairs[0].voxels, expected.pairs[0].voxels);
   EXPECT_GT(inter->pairs[0].voxels, 0);
+  EXPECT_DOUBLE_EQ(inter->pairs[0].thickness, expected.pairs[0].thickness);
+  // The contact tolerance, as the panel's field sets it: the overlap (the boxes interpenetrate by a voxel size and
+  // more) is contact only under a tolerance as thick as it.
+  EXPECT_FALSE(isContact(inter->pairs[0], state.parts_ui.contact));
+  ASSERT_TRUE(run(state, "contact " + std::to_string(inter->pairs[0].thickness)).ok());
+  EXPECT_TRUE(isContact(inter->pairs[0], state.parts_ui.contact));
+  EXPECT_FALSE(run(state, "contact -1").ok());
+  EXPECT_FALSE(run(state, "contact nan").ok());
+  ASSERT_TRUE(run(state, "contact 0").ok());
 
   // Clicking the pair: both parts selected, the overlap as a grid on the model's frame, the section through it.
   ASSERT_TRUE(run(state, "interference-pair 1").ok());

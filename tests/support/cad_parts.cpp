@@ -1,5 +1,7 @@
 #include "support/cad_parts.h"
 
+#include <cstdlib>
+
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
@@ -12,6 +14,7 @@
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
 #include <STEPControl_Controller.hxx>
+
 #include <STEPControl_Writer.hxx>
 #include <StepBasic_Product.hxx>
 #include <TCollection_HAsciiString.hxx>
@@ -66,21 +69,17 @@ TopoDS_Compound compoundOf(const std::vector<CadPart>& parts) {
   return all;
 }
 
-// The writer names the compound's product "Open CASCADE STEP translator <version> 1" and part k's "... 1.k" (or the
-// one part's "... 1"): each part's product takes the part's name instead.
+// The writer names the compound's product "Open CASCADE STEP translator <version> <n>" and part k's "... <n>.k", n
+// counting the files the process wrote: each part's product takes the part's name instead.
 void nameProducts(STEPControl_Writer& writer, const std::vector<CadPart>& parts) {
   const Handle(StepData_StepModel) model = writer.Model();
   for (int i = 1; i <= model->NbEntities(); ++i) {
     const auto product = Handle(StepBasic_Product)::DownCast(model->Value(i));
     if (product.IsNull() || product->Name().IsNull()) continue;
     const std::string name = product->Name()->ToCString();
-    const size_t dot = name.rfind(" 1.");
-    size_t k = 0;
-    if (dot != std::string::npos) {
-      k = size_t(std::stoul(name.substr(dot + 3)));
-    } else if (parts.size() == 1 && name.size() > 2 && name.compare(name.size() - 2, 2, " 1") == 0) {
-      k = 1;
-    }
+    const size_t space = name.rfind(' '), dot = name.rfind('.');
+    if (space == std::string::npos || dot == std::string::npos || dot < space) continue;
+    const size_t k = size_t(std::atoi(name.c_str() + dot + 1));
     if (k < 1 || k > parts.size()) continue;
     const Handle(TCollection_HAsciiString) given = new TCollection_HAsciiString(parts[k - 1].name.c_str());
     product->SetName(given);

@@ -66,6 +66,10 @@ struct InterferencePair {
   int64_t voxels = 0;    // voxels inside both
   Box3i box;             // lattice voxels, the smallest box holding the shared voxels
   glm::dvec3 centre{0};  // model units: the mean of the shared voxels' centres
+  // Model units: how thick the overlap is, (2 d - 1) voxels where d is the largest exact distance (voxels) of a shared
+  // voxel from the voxels not shared: a sheet k voxels thick reads k voxels (k odd) or k - 1 (k even). Parts that
+  // only touch overlap in a sheet a voxel or two thick; a contact tolerance compares with this.
+  double thickness = 0.0;
 };
 struct Interference {
   std::vector<InterferencePair> pairs;  // every pair sharing a voxel, most voxels first (ties: by a, then b)
@@ -74,6 +78,10 @@ struct Interference {
   Box3i multiple_overlap_box;           // where those lie (empty when none)
   int64_t candidate_pairs = 0;          // pairs whose boxes meet (the only ones compared voxel by voxel)
 };
+// Whether the pair only touches: its overlap at most `contact` thick (model units; 0: never).
+inline bool isContact(const InterferencePair& pair, double contact) {
+  return contact > 0.0 && pair.thickness <= contact;
+}
 // Every pair of parts sharing voxels. Boxes are swept along X (sorted by box start), so pairs whose boxes do not meet
 // are never compared; the others are compared word by word over the rows of their boxes' intersection. The voxels in
 // two or more (three or more) parts are counted by a bit-sliced counter over the union of the boxes, one layer at a
@@ -85,6 +93,9 @@ Result<Interference> findInterference(std::span<const LatticeGrid> parts, const 
                                       const ProgressFn& progress);
 // The voxels a and b share (empty grid over their boxes' intersection, or a 1-voxel empty grid when they do not meet).
 LatticeGrid sharedVoxels(const LatticeGrid& a, const LatticeGrid& b, const Lattice& lattice);
+// InterferencePair::thickness of the voxels `shared` (model units; 0 when none): the exact distance transform of the
+// shared voxels alone (vox/analysis/distance.h).
+Result<double> overlapThickness(const LatticeGrid& shared, const Lattice& lattice);
 
 // ---- Clearance ----
 struct Clearance {

@@ -241,17 +241,25 @@ void drawPairList(AppState& state, const Assembly& parts, const Interference& in
                        countOf(inter.candidate_pairs, "pair").c_str());
     return;
   }
+  const double contact = state.parts_ui.contact;
+  const auto contacts = std::count_if(inter.pairs.begin(), inter.pairs.end(),
+                                      [&](const InterferencePair& p) { return isContact(p, contact); });
+  const std::string touching = contacts > 0 ? " (" + std::to_string(contacts) + " only touch: overlaps " +
+                                                  formatLength(contact, units) + " thick or less, greyed)"
+                                            : std::string();
   ImGui::TextWrapped(
-      "%s share voxels (%s voxels in two or more parts, %s in three or more), found in %s. "
-      "Click one to see its overlap.",
-      countOf(int64_t(inter.pairs.size()), "pair").c_str(), groupDigits(inter.overlap_voxels).c_str(),
-      groupDigits(inter.multiple_overlap_voxels).c_str(), formatSeconds(state.parts_ui.interference_s).c_str());
+      "%s interfere%s; %s voxels in two or more parts, %s in three or more; found in %s. Click one to see its "
+      "overlap.",
+      countOf(int64_t(inter.pairs.size()) - contacts, "pair").c_str(), touching.c_str(),
+      groupDigits(inter.overlap_voxels).c_str(), groupDigits(inter.multiple_overlap_voxels).c_str(),
+      formatSeconds(state.parts_ui.interference_s).c_str());
   const int rows = std::min(int(inter.pairs.size()), kMostPairs);
-  if (!beginList("pairs", 4, rows, 12)) return;
+  if (!beginList("pairs", 5, rows, 12)) return;
   ImGui::TableSetupColumn("A");
   ImGui::TableSetupColumn("B");
-  ImGui::TableSetupColumn("Voxels", ImGuiTableColumnFlags_WidthFixed, 64.0f);
-  ImGui::TableSetupColumn(volumeHeader(units).c_str(), ImGuiTableColumnFlags_WidthFixed, 90.0f);
+  ImGui::TableSetupColumn("Voxels", ImGuiTableColumnFlags_WidthFixed, 48.0f);
+  ImGui::TableSetupColumn(volumeHeader(units).c_str(), ImGuiTableColumnFlags_WidthFixed, 72.0f);
+  ImGui::TableSetupColumn("Thick", ImGuiTableColumnFlags_WidthFixed, 56.0f);
   ImGui::TableHeadersRow();
   for (int i = 0; i < rows; ++i) {
     const InterferencePair& p = inter.pairs[size_t(i)];
@@ -259,6 +267,8 @@ void drawPairList(AppState& state, const Assembly& parts, const Interference& in
     ImGui::TableSetColumnIndex(0);
     ImGui::PushID(i);
     const bool shown = state.parts_ui.pair == i;
+    const bool touches = isContact(p, contact);  // the row greyed
+    if (touches) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     if (widget::Selectable(parts.part(size_t(p.a)).name.c_str(), shown, ImGuiSelectableFlags_SpanAllColumns)) {
       dispatchValues(state, ActionId::kInterferencePair, {std::to_string(shown ? 0 : i + 1)});
     }
@@ -269,13 +279,31 @@ void drawPairList(AppState& state, const Assembly& parts, const Interference& in
     ImGui::TextUnformatted(groupDigits(p.voxels).c_str());
     ImGui::TableSetColumnIndex(3);
     ImGui::TextUnformatted(volumeText(p.voxels, h).c_str());
+    ImGui::TableSetColumnIndex(4);
+    ImGui::TextUnformatted(formatLength(p.thickness, units).c_str());
+    if (touches) ImGui::PopStyleColor();
     ImGui::PopID();
   }
   ImGui::EndTable();
 }
 
+// Overlaps at most this thick only touch (parts that touch share a voxel or two of their surfaces).
+void contactField(AppState& state, const Assembly& parts) {
+  double contact = state.parts_ui.contact;
+  ImGui::SetNextItemWidth(100.0f);
+  const std::string label = "Contact up to, " + unitsLabel(parts.lattice().units);
+  if (widget::InputDouble(label.c_str(), &contact, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue)) {
+    dispatchValues(state, ActionId::kInterferenceContact, {std::to_string(contact)});
+  }
+  markWidget("interference_contact");
+  helpMarker(
+      "Parts that touch (a bolt in its hole) share a sheet of surface voxels a voxel or two thick. Overlaps no "
+      "thicker than this are listed as contact, not interference. 0: every shared voxel interferes.");
+}
+
 void drawInterference(AppState& state, const Assembly& parts) {
   heading("Interference");
+  contactField(state, parts);
   if (const Interference* inter = currentInterference(state)) {
     drawPairList(state, parts, *inter);
   } else if (state.interference_job.active()) {

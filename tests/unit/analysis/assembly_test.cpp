@@ -211,6 +211,36 @@ TEST(Interference, twoBoxesOverlapInAKnownBlock) {
   EXPECT_EQ(sharedVoxels(a, b, lattice).grid.filledCount(), 120);
 }
 
+// An overlap's thickness: a slab k voxels thick where two blocks overlap reads k voxels (k odd) or k - 1 (k even),
+// whichever way it lies; a block inside another reads its least side the same way. Contact is a thickness at most
+// the tolerance.
+TEST(Interference, anOverlapsThicknessIsItsSlabs) {
+  Lattice lattice{glm::dvec3(0.0), 0.25, "mm"};
+  const LatticeGrid a{test::boxGrid(Dims{20, 20, 20}, {0, 0, 0}, {20, 20, 20}), {0, 0, 0}};
+  for (int k : {1, 2, 3, 5, 6}) {
+    for (int axis = 0; axis < 3; ++axis) {
+      glm::ivec3 at(0);
+      at[axis] = 20 - k;
+      const LatticeGrid b{test::boxGrid(Dims{20, 20, 20}, {0, 0, 0}, {20, 20, 20}), at};
+      const std::vector<LatticeGrid> parts{a, b};
+      const Interference r = findInterference(parts, lattice);
+      ASSERT_EQ(r.pairs.size(), 1u) << k;
+      EXPECT_EQ(r.pairs[0].voxels, int64_t(k) * 400) << k;
+      const int expected = k % 2 ? k : k - 1;
+      EXPECT_DOUBLE_EQ(r.pairs[0].thickness, expected * 0.25) << "k " << k << " axis " << axis;
+      EXPECT_TRUE(isContact(r.pairs[0], 0.25 * expected));
+      EXPECT_FALSE(isContact(r.pairs[0], 0.25 * expected - 0.01));
+      EXPECT_FALSE(isContact(r.pairs[0], 0.0));  // no tolerance: every overlap interferes
+    }
+  }
+  // A 5 x 7 x 9 block inside the big one: 5 voxels, its least side.
+  const LatticeGrid inner{test::boxGrid(Dims{5, 7, 9}, {0, 0, 0}, {5, 7, 9}), {4, 4, 4}};
+  const std::vector<LatticeGrid> nested{a, inner};
+  const Interference n = findInterference(nested, lattice);
+  ASSERT_EQ(n.pairs.size(), 1u);
+  EXPECT_DOUBLE_EQ(n.pairs[0].thickness, 5 * 0.25);
+}
+
 TEST(Interference, progressReachesTheEndAndCancelStops) {
   const Lattice lattice;
   std::vector<LatticeGrid> parts;
