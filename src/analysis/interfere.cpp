@@ -166,6 +166,16 @@ OverlapTally tallyOverlaps(std::span<const LatticeGrid> parts, const std::vector
   return sum;
 }
 
+// InterferencePair::thickness from the voxels the pair shares over their own box; without memory for the distance,
+// the box's least side, which no overlap inside it exceeds.
+void pairThickness(InterferencePair& p, std::span<const LatticeGrid> parts, const Lattice& lattice) {
+  const LatticeGrid both = booleanParts(reframe(parts[size_t(p.a)], p.box, lattice),
+                                        reframe(parts[size_t(p.b)], p.box, lattice), PartOp::kIntersection, lattice);
+  auto thickness = overlapThickness(both, lattice);
+  const glm::ivec3 side = p.box.size();
+  p.thickness = thickness ? *thickness : double(std::min({side.x, side.y, side.z})) * lattice.voxel_size;
+}
+
 }  // namespace
 
 Interference findInterference(std::span<const LatticeGrid> parts, const Lattice& lattice) {
@@ -211,13 +221,13 @@ Result<Interference> findInterference(std::span<const LatticeGrid> parts, const 
   }
   std::stable_sort(out.pairs.begin(), out.pairs.end(),
                    [](const InterferencePair& x, const InterferencePair& y) { return x.voxels > y.voxels; });
-  for (InterferencePair& p : out.pairs) {  // how thick each overlap is: contact or interference
-    if (gate.cancelled()) return makeError(ErrorCode::kCancelled, "finding interference: cancelled");
-    auto thickness = overlapThickness(sharedVoxels(parts[size_t(p.a)], parts[size_t(p.b)], lattice), lattice);
-    // without memory for the distance: the box's least side, which no overlap inside it exceeds
-    const glm::ivec3 side = p.box.size();
-    p.thickness = thickness ? *thickness : double(std::min({side.x, side.y, side.z})) * lattice.voxel_size;
-  }
+  // how thick each overlap is (contact or interference): the shared voxels over their own box, a pair per thread
+  parallelChunks(0, int64_t(out.pairs.size()), 1, threadsFor(int64_t(out.pairs.size()) << 16),
+                 [&](int, int64_t k0, int64_t k1) {
+                   for (int64_t k = k0; k < k1 && !gate.cancelled(); ++k)
+                     pairThickness(out.pairs[size_t(k)], parts, lattice);
+                 });
+  if (gate.cancelled()) return makeError(ErrorCode::kCancelled, "finding interference: cancelled");
   Box3i all;
   for (const Box3i& b : boxes) all = unite(all, b);
   if (!all.empty() && !out.pairs.empty()) {
