@@ -131,7 +131,10 @@ void rays(benchmark::State& state) {
   p.samples_per_face = std::atof(vox::bench::envOr("VOXMOD_BENCH_SAMPLES", "2").c_str());
   for (auto _ : state) {
     auto r = vox::computeRayThickness(stl->mesh, g, p);
-    if (!r) state.SkipWithError(r.error().message.c_str());
+    if (!r) {
+      state.SkipWithError(r.error().message.c_str());
+      break;
+    }
     state.counters["rays"] = double(r->rays);
     state.counters["accepted"] = double(r->accepted);
     state.counters["voxels"] = double(r->voxels);

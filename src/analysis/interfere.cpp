@@ -22,8 +22,13 @@ namespace {
 
 using analysis_detail::ProgressGate;
 
-// The share of the work the pairs take (the rest: counting the voxels in two or more parts, layer by layer).
-constexpr double kPairShare = 0.7;
+// The shares of the work: comparing the pairs, then their overlaps' thickness (the rest: counting the voxels in two
+// or more parts, layer by layer).
+constexpr double kPairShare = 0.5;
+constexpr double kThicknessShare = 0.3;
+// A pair's box up to this many voxels has its distance transform on one thread beside the others'; larger ones are
+// taken one at a time with the transform's own threads (their memory is not needed at once).
+constexpr int64_t kSmallOverlapBox = int64_t(1) << 22;
 
 // Bit j of a bit's index within a word: sum over j of 2^j popcount(m & kIndexBit[j]) is the sum of m's bit indices.
 constexpr std::array<uint64_t, 6> kIndexBit = {0xAAAAAAAAAAAAAAAAull, 0xCCCCCCCCCCCCCCCCull, 0xF0F0F0F0F0F0F0F0ull,
@@ -117,7 +122,8 @@ OverlapTally tallyOverlaps(std::span<const LatticeGrid> parts, const std::vector
     std::vector<size_t> in_layer;
     OverlapTally& tally = per_thread[size_t(t)];
     for (int32_t Z = int32_t(z0); Z < int32_t(z1); ++Z) {
-      if (!gate.report(kPairShare + (1.0 - kPairShare) * double(layers_done.fetch_add(1)) / layers)) return;
+      const double share = kPairShare + kThicknessShare;
+      if (!gate.report(share + (1.0 - share) * double(layers_done.fetch_add(1)) / layers)) return;
       in_layer.clear();
       for (size_t p = 0; p < parts.size(); ++p) {
         if (!boxes[p].empty() && boxes[p].min.z <= Z && Z < boxes[p].max.z) in_layer.push_back(p);
@@ -168,12 +174,36 @@ OverlapTally tallyOverlaps(std::span<const LatticeGrid> parts, const std::vector
 
 // InterferencePair::thickness from the voxels the pair shares over their own box; without memory for the distance,
 // the box's least side, which no overlap inside it exceeds.
-void pairThickness(InterferencePair& p, std::span<const LatticeGrid> parts, const Lattice& lattice) {
+void pairThickness(InterferencePair& p, std::span<const LatticeGrid> parts, const Lattice& lattice,
+                   ProgressGate& gate) {
   const LatticeGrid both = booleanParts(reframe(parts[size_t(p.a)], p.box, lattice),
                                         reframe(parts[size_t(p.b)], p.box, lattice), PartOp::kIntersection, lattice);
-  auto thickness = overlapThickness(both, lattice);
+  auto thickness = overlapThickness(both, lattice, [&gate](double) { return !gate.cancelled(); });
+  if (gate.cancelled()) return;
   const glm::ivec3 side = p.box.size();
   p.thickness = thickness ? *thickness : double(std::min({side.x, side.y, side.z})) * lattice.voxel_size;
+}
+
+// InterferencePair::thickness of every pair: the small boxes a pair per thread, the large ones one at a time.
+void overlapThicknesses(std::vector<InterferencePair>& pairs, std::span<const LatticeGrid> parts,
+                        const Lattice& lattice, ProgressGate& gate) {
+  std::vector<size_t> small, large;
+  for (size_t k = 0; k < pairs.size(); ++k) (pairs[k].box.count() <= kSmallOverlapBox ? small : large).push_back(k);
+  std::atomic<int64_t> done{0};
+  const auto report = [&] {
+    return gate.report(kPairShare + kThicknessShare * double(done.fetch_add(1) + 1) / double(pairs.size()));
+  };
+  parallelChunks(0, int64_t(small.size()), 1, threadsFor(int64_t(small.size()) << 16),
+                 [&](int, int64_t k0, int64_t k1) {
+                   for (int64_t k = k0; k < k1 && !gate.cancelled(); ++k) {
+                     pairThickness(pairs[small[size_t(k)]], parts, lattice, gate);
+                     report();
+                   }
+                 });
+  for (size_t k = 0; k < large.size() && !gate.cancelled(); ++k) {
+    pairThickness(pairs[large[k]], parts, lattice, gate);
+    report();
+  }
 }
 
 }  // namespace
@@ -221,12 +251,7 @@ Result<Interference> findInterference(std::span<const LatticeGrid> parts, const 
   }
   std::stable_sort(out.pairs.begin(), out.pairs.end(),
                    [](const InterferencePair& x, const InterferencePair& y) { return x.voxels > y.voxels; });
-  // how thick each overlap is (contact or interference): the shared voxels over their own box, a pair per thread
-  parallelChunks(0, int64_t(out.pairs.size()), 1, threadsFor(int64_t(out.pairs.size()) << 16),
-                 [&](int, int64_t k0, int64_t k1) {
-                   for (int64_t k = k0; k < k1 && !gate.cancelled(); ++k)
-                     pairThickness(out.pairs[size_t(k)], parts, lattice);
-                 });
+  overlapThicknesses(out.pairs, parts, lattice, gate);  // how thick each overlap is: contact or interference
   if (gate.cancelled()) return makeError(ErrorCode::kCancelled, "finding interference: cancelled");
   Box3i all;
   for (const Box3i& b : boxes) all = unite(all, b);

@@ -6,9 +6,9 @@
 
 namespace vox {
 
-Result<double> overlapThickness(const LatticeGrid& shared, const Lattice& lattice) {
+Result<double> overlapThickness(const LatticeGrid& shared, const Lattice& lattice, const ProgressFn& progress) {
   if (shared.grid.filledCount() == 0) return 0.0;
-  auto distance = computeDistance(shared.grid);
+  auto distance = computeDistance(shared.grid, progress);
   if (!distance) return distance.error();
   return std::max(0.0, 2.0 * distance->maxVoxels() - 1.0) * lattice.voxel_size;
 }

@@ -100,18 +100,18 @@ std::vector<uint32_t> spatialOrder(const TriangleMesh& mesh, const GridFrame& f)
   return order;
 }
 
-// Empty voxels and voxels no ray reached to 0; the statistics of the rest.
+// Empty voxels and voxels no ray reached to 0; the statistics of the rest (summed per layer, then the layers in
+// order: the same mean whichever thread took a layer).
 void finishField(const VoxelGrid& grid, RayThicknessResult& out) {
   const int64_t nx = grid.nx(), ny = grid.ny();
-  const int threads = threadsFor(grid.dims().count());
   struct Sums {
     int64_t voxels = 0;
     double sum = 0.0, min = std::numeric_limits<double>::infinity(), max = 0.0;
   };
-  std::vector<Sums> sums(static_cast<size_t>(threads));
-  parallelChunks(0, int64_t(grid.nz()), 1, threads, [&](int th, int64_t zb, int64_t ze) {
-    Sums& s = sums[size_t(th)];
+  std::vector<Sums> layers(static_cast<size_t>(grid.nz()));
+  parallelChunks(0, int64_t(grid.nz()), 1, threadsFor(grid.dims().count()), [&](int, int64_t zb, int64_t ze) {
     for (int64_t z = zb; z < ze; ++z) {
+      Sums& s = layers[size_t(z)];
       for (int64_t y = 0; y < ny; ++y) {
         const uint64_t* row = grid.rowWords(int32_t(y), int32_t(z));
         float* values = out.field.values.data() + nx * (y + ny * z);
@@ -130,7 +130,7 @@ void finishField(const VoxelGrid& grid, RayThicknessResult& out) {
     }
   });
   Sums all;
-  for (const Sums& s : sums) {
+  for (const Sums& s : layers) {
     all.voxels += s.voxels, all.sum += s.sum;
     all.min = std::min(all.min, s.min), all.max = std::max(all.max, s.max);
   }

@@ -1,5 +1,6 @@
 // The assembly subcommands (docs/conventions.md, "Assemblies"): boolean, bodies, interfere,
 // clearance. Inputs go through placeInputs (assembly_input.h), which puts every file on one lattice.
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -12,6 +13,7 @@
 #include "cli/commands.h"
 #include "cli/write_grid.h"
 #include "vox/analysis/assembly.h"
+#include "vox/core/text.h"
 #include "vox/io/file_util.h"
 #include "vox/io/voxel_file.h"
 
@@ -282,7 +284,13 @@ void addInterfereCommand(CLI::App& sub, CommandContext& ctx) {
   sub.add_option("--contact", o->contact,
                  "Overlaps at most this thick (model units) are contact, not interference: parts that touch overlap "
                  "by a voxel or two (default 0: every shared voxel interferes)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::NonNegativeNumber & CLI::Validator(
+                                           [](std::string& v) {
+                                             double x = 0.0;
+                                             return parseNumber(v, x) && std::isfinite(x) ? std::string()
+                                                                                          : "not a finite number";
+                                           },
+                                           "FINITE"));
   sub.callback([o, &ctx] { ctx.exit_code = runInterfere(*o); });
 }
 

@@ -246,6 +246,25 @@ Status readIgesBytes(std::span<const uint8_t> bytes, const std::string& name, co
   return s;
 }
 
+// The name of each solid of `shape`, in the order TopExp_Explorer meets them (empty where none), from the solids
+// named as transferred: a solid is known by its TShape (an assembly's instances share their part's), after the
+// healing's replacements where `context` holds them.
+std::vector<std::string> namesInOrder(const TopoDS_Shape& shape,
+                                      const std::vector<std::pair<TopoDS_Shape, std::string>>& named,
+                                      const Handle(ShapeBuild_ReShape) & context) {
+  std::map<const TopoDS_TShape*, std::string> by_shape;
+  for (const auto& [solid, name] : named) {
+    const TopoDS_Shape now = context.IsNull() ? solid : context->Value(solid);
+    by_shape.emplace(now.TShape().get(), name);
+  }
+  std::vector<std::string> out;
+  for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next()) {
+    const auto it = by_shape.find(e.Current().TShape().get());
+    out.push_back(it == by_shape.end() ? std::string() : it->second);
+  }
+  return out;
+}
+
 // The caller's unit instead of the file's: the shape, already in mm from the file's unit, is scaled by
 // (caller's unit / file's unit).
 Status applyUnitOverride(const std::string& units, const std::string& name, CadModel::Impl& out) {
@@ -267,22 +286,21 @@ Status applyUnitOverride(const std::string& units, const std::string& name, CadM
   scale.SetScale(gp_Pnt(0, 0, 0), factor);
   BRepBuilderAPI_Transform transform(out.shape, scale, Standard_True);
   if (!transform.IsDone()) return makeError(ErrorCode::kParse, name + ": the shape could not be rescaled");
+  // the names follow the solids: the copy's k-th solid is the original's k-th
+  const std::vector<std::string> names = namesInOrder(out.shape, out.named_solids, nullptr);
   out.shape = transform.Shape();
+  out.named_solids.clear();
+  size_t k = 0;
+  for (TopExp_Explorer e(out.shape, TopAbs_SOLID); e.More() && k < names.size(); e.Next(), ++k) {
+    if (!names[k].empty()) out.named_solids.emplace_back(e.Current(), names[k]);
+  }
   return Ok{};
 }
 
 // The name of each solid of the healed shape, from the solids the transfer named (healing may have replaced them).
 void nameSolids(const ShapeFix_Shape& fix, CadModel::Impl& out) {
-  if (out.named_solids.empty()) return;
-  std::map<const TopoDS_TShape*, std::string> by_shape;
-  for (const auto& [solid, name] : out.named_solids) {
-    const TopoDS_Shape healed = fix.Context().IsNull() ? solid : fix.Context()->Value(solid);
-    by_shape.emplace(healed.TShape().get(), name);
-  }
-  for (TopExp_Explorer e(out.shape, TopAbs_SOLID); e.More(); e.Next()) {
-    const auto it = by_shape.find(e.Current().TShape().get());
-    out.solid_names.push_back(it == by_shape.end() ? std::string() : it->second);
-  }
+  if (!out.named_solids.empty()) out.solid_names = namesInOrder(out.shape, out.named_solids, fix.Context());
+  out.named_solids.clear();  // the solids as transferred are no longer needed
 }
 
 // ShapeFix_Shape (progress [0.7, 0.95]), then counts and the tight bounding box.

@@ -6,6 +6,7 @@
 
 #include <Interface_EntityIterator.hxx>
 #include <Interface_Graph.hxx>
+#include <Standard_Failure.hxx>
 #include <StepBasic_Product.hxx>
 #include <StepBasic_ProductDefinition.hxx>
 #include <StepBasic_ProductDefinitionFormation.hxx>
@@ -58,9 +59,8 @@ std::string productOf(const Interface_Graph& graph, const Handle(Standard_Transi
   return {};
 }
 
-}  // namespace
-
-std::vector<std::pair<TopoDS_Shape, std::string>> stepSolidNames(const STEPControl_Reader& reader) {
+// The solids the transfer made from the file's solid B-reps, with their products' names.
+std::vector<std::pair<TopoDS_Shape, std::string>> namedSolids(const STEPControl_Reader& reader) {
   std::vector<std::pair<TopoDS_Shape, std::string>> out;
   const Handle(XSControl_WorkSession) session = reader.WS();
   if (session.IsNull() || session->Model().IsNull() || session->TransferReader().IsNull()) return out;
@@ -70,10 +70,11 @@ std::vector<std::pair<TopoDS_Shape, std::string>> stepSolidNames(const STEPContr
   const Handle(Interface_InterfaceModel) model = session->Model();
   for (int i = 1; i <= model->NbEntities(); ++i) {
     const Handle(Standard_Transient) entity = model->Value(i);
-    if (!entity->IsKind(STANDARD_TYPE(StepShape_ManifoldSolidBrep))) continue;
+    if (entity.IsNull() || !entity->IsKind(STANDARD_TYPE(StepShape_ManifoldSolidBrep))) continue;
     const TopoDS_Shape solid = TransferBRep::ShapeResult(process, entity);
     if (solid.IsNull()) continue;
     for (Interface_EntityIterator it = graph.Sharings(entity); it.More(); it.Next()) {
+      if (it.Value().IsNull()) continue;
       if (std::string name = productOf(graph, it.Value(), 2); !name.empty()) {
         out.emplace_back(solid, std::move(name));
         break;
@@ -81,6 +82,16 @@ std::vector<std::pair<TopoDS_Shape, std::string>> stepSolidNames(const STEPContr
     }
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<std::pair<TopoDS_Shape, std::string>> stepSolidNames(const STEPControl_Reader& reader) {
+  try {
+    return namedSolids(reader);
+  } catch (const Standard_Failure&) {
+    return {};  // names are a courtesy: a file whose structure Open CASCADE cannot follow keeps "solid N"
+  }
 }
 
 }  // namespace vox::io

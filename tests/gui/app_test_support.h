@@ -3,6 +3,7 @@
 // line, and a headless GL context for the tests of the view.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <memory>
@@ -41,6 +42,7 @@ inline Status run(AppState& state, const std::string& line) {
     words.push_back(line.substr(start, end - start));
     start = end + 1;
   }
+  if (words.empty()) return makeError(ErrorCode::kInvalidArgument, "an empty line is no action");
   const Action* a = findAction(words[0]);
   if (!a) return makeError(ErrorCode::kInvalidArgument, "no action " + words[0]);
   words.erase(words.begin());

@@ -94,8 +94,8 @@ Result<Interference> findInterference(std::span<const LatticeGrid> parts, const 
 // The voxels a and b share (empty grid over their boxes' intersection, or a 1-voxel empty grid when they do not meet).
 LatticeGrid sharedVoxels(const LatticeGrid& a, const LatticeGrid& b, const Lattice& lattice);
 // InterferencePair::thickness of the voxels `shared` (model units; 0 when none): the exact distance transform of the
-// shared voxels alone (vox/analysis/distance.h).
-Result<double> overlapThickness(const LatticeGrid& shared, const Lattice& lattice);
+// shared voxels alone (vox/analysis/distance.h), with its progress and cancel.
+Result<double> overlapThickness(const LatticeGrid& shared, const Lattice& lattice, const ProgressFn& progress = {});
 
 // ---- Clearance ----
 struct Clearance {

@@ -293,7 +293,9 @@ void contactField(AppState& state, const Assembly& parts) {
   ImGui::SetNextItemWidth(100.0f);
   const std::string label = "Contact up to, " + unitsLabel(parts.lattice().units);
   if (widget::InputDouble(label.c_str(), &contact, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue)) {
-    dispatchValues(state, ActionId::kInterferenceContact, {std::to_string(contact)});
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", contact);  // the value as typed, every digit
+    dispatchValues(state, ActionId::kInterferenceContact, {text});
   }
   markWidget("interference_contact");
   helpMarker(

@@ -205,6 +205,13 @@ TEST(CadFile, solidsAreNamedByTheirProducts) {
   for (const MeshBody& b : m.bodies) names.push_back(b.name);
   EXPECT_EQ(names, (std::vector<std::string>{"plate", "pin 1", "pin 2", "solid 4"}));
   EXPECT_EQ(m.bodies[0].triangle_count, 12u);  // the plate is the box
+  // The names follow the solids through a unit given instead of the file's (the shape rescaled).
+  MeshFileOptions inches;
+  inches.units = "in";
+  const MeshFileLoad scaled = loadOk(tmp / "named.step", inches);
+  ASSERT_EQ(scaled.bodies.size(), 4u);
+  for (size_t k = 0; k < 4; ++k) EXPECT_EQ(scaled.bodies[k].name, names[k]) << k;
+  EXPECT_NEAR(scaled.mesh.bounds().extent().x, 25.4 * 9.0, 2.0);  // 0..9 "mm" read as inches (the ball tessellated)
 }
 
 TEST(CadFile, igesSurfaceModelIsSewnIntoAClosedSolid) {
