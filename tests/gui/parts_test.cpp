@@ -763,7 +763,17 @@ TEST(AppParts, theInterferenceSearchShowsProgressAndCancels) {
   ASSERT_TRUE(pump(state, [&] { return !state.interference_job.active(); }));
   EXPECT_EQ(currentInterference(state), nullptr);
   EXPECT_EQ(state.parts_ui.interference_cancelled_version, state.doc.model->version);
-  // Asked again, it runs to the end: every pair of the 30 blocks.
+  // Asked again, it runs to the end: every pair of 30 blocks of 32^3 (each overlap's thickness is a distance
+  // transform: the large blocks' would take minutes under the thread sanitizer).
+  auto small = std::make_shared<Assembly>(currentParts(state)->lattice());
+  for (int i = 0; i < 30; ++i) {
+    VoxelGrid g(Dims{32, 32, 32});
+    for (int32_t z = 0; z < 32; ++z) {
+      for (int32_t y = 0; y < 32; ++y) g.fillRun(y, z, 0, 32);
+    }
+    small->addPart(LatticeGrid{std::move(g), glm::ivec3(i, 0, 0)}, "block " + std::to_string(i));
+  }
+  state.doc.model->parts = small;
   ASSERT_TRUE(run(state, "interference").ok());
   EXPECT_EQ(state.parts_ui.interference_cancelled_version, 0u);
   ASSERT_TRUE(pump(state, [&] { return currentInterference(state) != nullptr; }));
