@@ -740,15 +740,20 @@ TEST(AppParts, theInterferenceSearchShowsProgressAndCancels) {
   EXPECT_FALSE(actionEnabled(state, action(ActionId::kCancelInterference)));  // nothing running
   // A scene whose interference takes a while: 30 blocks of 128^3 voxels, every pair overlapping (the parts are set
   // in place, as visibility is, to skip 30 part jobs).
-  auto scene = std::make_shared<Assembly>(currentParts(state)->lattice());
-  for (int i = 0; i < 30; ++i) {
-    VoxelGrid g(Dims{128, 128, 128});
-    for (int32_t z = 0; z < 128; ++z) {
-      for (int32_t y = 0; y < 128; ++y) g.fillRun(y, z, 0, 128);
+  // 30 cubes of n^3 voxels side by side, each a voxel along X from the last: every pair overlaps.
+  const Lattice lattice = currentParts(state)->lattice();
+  const auto blocks = [&lattice](int32_t n) {
+    auto scene = std::make_shared<Assembly>(lattice);
+    for (int i = 0; i < 30; ++i) {
+      VoxelGrid g(Dims{n, n, n});
+      for (int32_t z = 0; z < n; ++z) {
+        for (int32_t y = 0; y < n; ++y) g.fillRun(y, z, 0, n);
+      }
+      scene->addPart(LatticeGrid{std::move(g), glm::ivec3(i, 0, 0)}, "block " + std::to_string(i));
     }
-    scene->addPart(LatticeGrid{std::move(g), glm::ivec3(i, 0, 0)}, "block " + std::to_string(i));
-  }
-  state.doc.model->parts = scene;
+    return scene;
+  };
+  state.doc.model->parts = blocks(128);
   ASSERT_TRUE(run(state, "interference").ok());
   ASSERT_TRUE(actionEnabled(state, action(ActionId::kCancelInterference)));
   ASSERT_TRUE(run(state, "cancel-interference").ok());
@@ -765,15 +770,7 @@ TEST(AppParts, theInterferenceSearchShowsProgressAndCancels) {
   EXPECT_EQ(state.parts_ui.interference_cancelled_version, state.doc.model->version);
   // Asked again, it runs to the end: every pair of 30 blocks of 32^3 (each overlap's thickness is a distance
   // transform: the large blocks' would take minutes under the thread sanitizer).
-  auto small = std::make_shared<Assembly>(currentParts(state)->lattice());
-  for (int i = 0; i < 30; ++i) {
-    VoxelGrid g(Dims{32, 32, 32});
-    for (int32_t z = 0; z < 32; ++z) {
-      for (int32_t y = 0; y < 32; ++y) g.fillRun(y, z, 0, 32);
-    }
-    small->addPart(LatticeGrid{std::move(g), glm::ivec3(i, 0, 0)}, "block " + std::to_string(i));
-  }
-  state.doc.model->parts = small;
+  state.doc.model->parts = blocks(32);
   ASSERT_TRUE(run(state, "interference").ok());
   EXPECT_EQ(state.parts_ui.interference_cancelled_version, 0u);
   ASSERT_TRUE(pump(state, [&] { return currentInterference(state) != nullptr; }));
