@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/messages.h"
+#include "app/parts.h"      // currentClearance
 #include "app/thickness.h"  // rayMesh
 #include "app/view_export.h"
 #include "vox/io/file_util.h"
@@ -38,13 +39,21 @@ bool startReportExport(AppState& state, const std::filesystem::path& path) {
     options.density_kg_m3 = state.mass_ui.density;
     options.material = state.mass_ui.material;
   }
+  // an assembly: its parts and interference, with the panel's contact tolerance and the clearance it found
+  std::shared_ptr<const Assembly> parts = state.doc.model ? state.doc.model->parts : nullptr;
+  options.contact = state.parts_ui.contact;
+  if (const Clearance* c = currentClearance(state)) {
+    options.clearance =
+        workflow::ReportOptions::PartClearance{state.parts_ui.clearance_a, state.parts_ui.clearance_b, *c};
+  }
   state.volume_export_note.clear();
   state.volume_export_job.start(
       "Writing " + path.filename().string(),
-      [grid = state.model, mesh = rayMesh(state), options, pictures = std::move(pictures),
+      [grid = state.model, mesh = rayMesh(state), parts, options, pictures = std::move(pictures),
        path](const ProgressFn& progress) -> Result<std::filesystem::path> {
         workflow::ReportOptions o = options;
         if (mesh) o.mesh = &mesh->mesh;
+        o.parts = parts.get();
         auto html = workflow::buildReport(grid, o, pictures, nullptr, progress);
         if (!html) return html.error();
         if (Status s = io::writeFilesAtomic({{path, std::vector<uint8_t>(html->begin(), html->end())}}); !s) {

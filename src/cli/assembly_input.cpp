@@ -1,12 +1,15 @@
 #include "cli/assembly_input.h"
 
+#include <cmath>
 #include <filesystem>
 #include <optional>
 
+#include <CLI/CLI.hpp>
 #include <glm/common.hpp>
 
 #include "vox/analysis/assembly.h"
 #include "vox/core/mesh_bodies.h"
+#include "vox/core/text.h"
 #include "vox/io/mesh_file.h"
 #include "vox/io/voxel_file.h"
 #include "vox/voxelize/bodies.h"
@@ -182,6 +185,16 @@ Result<PartsOnLattice> placeInputs(const std::vector<std::string>& files, const 
   }
   parts.voxelize_s = nowSeconds() - t0;
   return parts;
+}
+
+CLI::Validator contactValue() {
+  return CLI::NonNegativeNumber & CLI::Validator(
+                                      [](std::string& v) {
+                                        double x = 0.0;
+                                        return parseNumber(v, x) && std::isfinite(x) ? std::string()
+                                                                                     : "not a finite number";
+                                      },
+                                      "FINITE");
 }
 
 nlohmann::ordered_json boxJson(const Box3i& box, const Lattice& lattice) {

@@ -11,6 +11,10 @@
 #include "cli/output.h"
 #include "vox/core/lattice.h"
 
+namespace CLI {
+class Validator;
+}
+
 namespace vox::cli {
 
 struct PartsOnLattice {
@@ -31,6 +35,9 @@ struct PartsOnLattice {
 // With `bodies`, a voxel file's bodies are its components, joined through faces (6) or also edges and corners (26).
 Result<PartsOnLattice> placeInputs(const std::vector<std::string>& files, const MeshOptions& options, bool bodies,
                                    Output& out, int connectivity = 6);
+
+// --contact T: a finite number of model units, 0 or more (overlaps at most T thick only touch).
+CLI::Validator contactValue();
 
 // {"min": [x, y, z], "max": [x, y, z]}: the outer faces of a box of lattice voxels, model units.
 nlohmann::ordered_json boxJson(const Box3i& box, const Lattice& lattice);

@@ -284,13 +284,7 @@ void addInterfereCommand(CLI::App& sub, CommandContext& ctx) {
   sub.add_option("--contact", o->contact,
                  "Overlaps at most this thick (model units) are contact, not interference: parts that touch overlap "
                  "by a voxel or two (default 0: every shared voxel interferes)")
-      ->check(CLI::NonNegativeNumber & CLI::Validator(
-                                           [](std::string& v) {
-                                             double x = 0.0;
-                                             return parseNumber(v, x) && std::isfinite(x) ? std::string()
-                                                                                          : "not a finite number";
-                                           },
-                                           "FINITE"));
+      ->check(contactValue());
   sub.callback([o, &ctx] { ctx.exit_code = runInterfere(*o); });
 }
 

@@ -1,10 +1,13 @@
 // voxmod report FILE -o OUT.html (vox/workflow/report.h): one self-contained HTML page of what voxmod
-// computes of the part, with a rendered view (headless; left out, with a note, where no OpenGL can be had).
+// computes of the part (or, with --bodies, of the assembly of its bodies), with a rendered view (headless; left out,
+// with a note, where no OpenGL can be had).
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 
+#include "cli/assembly_input.h"
 #include "cli/cmd_list.h"
 #include "cli/commands.h"
 #include "cli/model_input.h"
@@ -23,7 +26,22 @@ struct ReportCliOptions {
   std::string out;
   double min_wall = 0.0;
   std::string material;
+  bool bodies = false;   // the file's bodies as the parts of an assembly (interference listed)
+  double contact = 0.0;  // with bodies: overlaps at most this thick only touch
 };
+
+// With --bodies: the file's bodies (a CAD file's solids by their names, a mesh's shells, a voxel file's components)
+// as the parts of an assembly.
+Result<Assembly> bodiesOf(const ReportCliOptions& o, Output& out) {
+  auto placed = placeInputs({o.c.file}, o.c.mesh, true, out);
+  if (!placed) return placed.error();
+  Assembly parts(placed->lattice);
+  for (size_t i = 0; i < placed->parts.size(); ++i) {
+    const std::string& own = placed->body_names[i];
+    parts.addPart(std::move(placed->parts[i]), own.empty() ? placed->names[i] : own);
+  }
+  return parts;
+}
 
 // The part lit, from above at an angle: the report's first picture; none (and a note) without OpenGL.
 std::vector<workflow::ReportPicture> viewPictures(const VoxelGrid& grid, Output& out) {
@@ -68,6 +86,14 @@ int runReport(const ReportCliOptions& o) {
   }
   options.name = std::filesystem::path(o.c.file).filename().string();
   options.mesh = model->mesh ? &*model->mesh : nullptr;
+  std::optional<Assembly> parts;
+  if (o.bodies) {
+    auto split = bodiesOf(o, out);
+    if (!split) return out.fail(split.error());
+    parts = std::move(split).value();
+    options.parts = &*parts;
+    options.contact = o.contact;
+  }
   const double t0 = nowSeconds();
   const std::vector<workflow::ReportPicture> pictures = viewPictures(grid, out);
   workflow::ReportFacts facts;
@@ -87,6 +113,11 @@ int runReport(const ReportCliOptions& o) {
   d["hot_spots"] = facts.hot_spots;
   d["support_volume"] = facts.support_volume;
   d["trapped_cavities"] = facts.trapped_cavities;
+  if (o.bodies) {
+    d["parts"] = facts.parts;
+    d["interfering_pairs"] = facts.interfering_pairs;
+    d["contact_pairs"] = facts.contact_pairs;
+  }
   d["report_s"] = nowSeconds() - t0;
   return out.finish();
 }
@@ -101,7 +132,21 @@ void addReportCommand(CLI::App& sub, CommandContext& ctx) {
       ->check(CLI::PositiveNumber);
   sub.add_option("--material", o->material,
                  "Give the mass for a common material's density (needs units): " + materialNames());
-  sub.callback([o, &ctx] { ctx.exit_code = runReport(*o); });
+  sub.add_flag("--bodies", o->bodies,
+               "Report the file's bodies as an assembly: its parts and the pairs that interfere (a CAD file's solids, "
+               "a mesh's shells, a voxel file's components)");
+  auto* contact = sub.add_option("--contact", o->contact,
+                                 "With --bodies: overlaps at most this thick (model units) only touch: listed as "
+                                 "contact, not interference")
+                      ->check(contactValue());
+  sub.callback([o, contact, &ctx] {
+    if (contact->count() > 0 && !o->bodies) {
+      Output out(o->c.json);
+      ctx.exit_code = out.fail(kExitUsage, "--contact applies to an assembly's overlaps: give --bodies too");
+      return;
+    }
+    ctx.exit_code = runReport(*o);
+  });
 }
 
 }  // namespace vox::cli

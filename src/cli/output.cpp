@@ -1,5 +1,6 @@
 #include "cli/output.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -48,6 +49,8 @@ Result<std::vector<uint8_t>> encodeFieldFile(const std::string& name, const Scal
 }
 
 void Output::note(const std::string& line) {
+  // the same input read twice (a report of an assembly reads its file as a whole and by bodies) says it once
+  if (std::find(notes_.begin(), notes_.end(), line) != notes_.end()) return;
   if (quiet_) {
     notes_.push_back(line);
     return;

@@ -147,6 +147,61 @@ void printSection(Page& page, const PrintCheck& p) {
   if (!rows.empty()) page.table({"#", "Volume", "Centre", "Shortest drain"}, rows);
 }
 
+// The parts of an assembly, with their volumes and boxes.
+void partsTable(Page& page, const Assembly& parts) {
+  const Lattice& lattice = parts.lattice();
+  const double voxel = lattice.voxel_size * lattice.voxel_size * lattice.voxel_size;
+  std::vector<std::vector<std::string>> rows;
+  for (size_t i = 0; i < parts.size(); ++i) {
+    const LatticeGrid placed = parts.placedVoxels(i);
+    const Box3i box = placed.box();
+    rows.push_back({std::to_string(i + 1), io::escapeHtml(parts.part(i).name),
+                    page.volume(double(placed.grid.filledCount()) * voxel), page.point(lattice.corner(box.min)),
+                    page.point(lattice.corner(box.max))});
+  }
+  page.table({"#", "Part", "Volume", "From", "To"}, rows);
+}
+
+// The pairs of parts sharing voxels: interference, or contact where the overlap is at most `contact` thick.
+void interferenceTable(Page& page, const Assembly& parts, const Interference& found, double contact,
+                       ReportFacts& counts) {
+  const Lattice& lattice = parts.lattice();
+  const double voxel = lattice.voxel_size * lattice.voxel_size * lattice.voxel_size;
+  std::vector<std::vector<std::string>> rows;
+  for (const InterferencePair& pair : found.pairs) {
+    const bool touch = isContact(pair, contact);
+    ++(touch ? counts.contact_pairs : counts.interfering_pairs);
+    if (rows.size() >= 50) continue;
+    rows.push_back({io::escapeHtml(parts.part(size_t(pair.a)).name), io::escapeHtml(parts.part(size_t(pair.b)).name),
+                    touch ? "contact" : "<b>interference</b>", page.volume(double(pair.voxels) * voxel),
+                    page.length(pair.thickness), page.point(pair.centre)});
+  }
+  std::string summary = std::to_string(counts.interfering_pairs) + " pair" +
+                        (counts.interfering_pairs == 1 ? "" : "s") + " of parts interfere";
+  if (contact > 0.0) {
+    summary +=
+        "; " + std::to_string(counts.contact_pairs) + " only touch (overlapping " + page.length(contact) + " or less)";
+  }
+  page.text(summary + ". An overlap's thickness is that of the voxels the two parts share.");
+  if (!rows.empty()) page.table({"Part", "Part", "", "Overlap", "Thickness", "Centre"}, rows);
+  if (found.multiple_overlap_voxels > 0) {
+    page.text(std::to_string(found.multiple_overlap_voxels) + " voxels lie inside three parts or more.");
+  }
+}
+
+void clearanceText(Page& page, const Assembly& parts, const ReportOptions::PartClearance& c) {
+  if (c.a >= parts.size() || c.b >= parts.size()) return;
+  const std::string names = io::escapeHtml(parts.part(c.a).name) + " and " + io::escapeHtml(parts.part(c.b).name);
+  const Clearance& k = c.clearance;
+  if (k.touching) {
+    page.text("Clearance between " + names + ": they touch.");
+  } else if (k.found) {
+    page.text("Clearance between " + names + ": a gap of " + page.length(k.gap) + ", between " +
+              page.point(k.centre_a) + " and " + page.point(k.centre_b) + " (the closest voxels' centres, " +
+              page.length(k.centre_distance) + " apart).");
+  }
+}
+
 std::string pageHead(const std::string& name) {
   return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>voxmod report: " +
          io::escapeHtml(name) +
@@ -196,11 +251,19 @@ Result<std::string> buildReport(const VoxelGrid& grid, const ReportOptions& opti
       case PrintStage::kSupport:
         return share(0.75, 0.85);
       default:
-        return share(0.85, 0.95);
+        return share(0.85, 0.95);  // (an assembly's interference: 0.95 to 0.99)
     }
   };
   auto print = runPrintCheck(grid, print_options, [&](PrintStage stage, double f) { return print_share(stage)(f); });
   if (!print) return print.error();
+  const Assembly* parts = options.parts && options.parts->size() >= 2 ? options.parts : nullptr;
+  Interference interference;
+  if (parts) {
+    const std::vector<LatticeGrid> placed = parts->placedParts();
+    auto found = findInterference(placed, parts->lattice(), share(0.95, 0.99));
+    if (!found) return found.error();
+    interference = std::move(found).value();
+  }
   // the section through the middle of the part, coloured by thickness: a whole number of pixels per voxel, at least
   // 480 pixels wide for a small part, one pixel per voxel for a large one
   SectionParams section;
@@ -220,6 +283,13 @@ Result<std::string> buildReport(const VoxelGrid& grid, const ReportOptions& opti
                *section_png);
   hotSpotSection(page, run->hot_spots);
   printSection(page, *print);
+  ReportFacts counts;
+  if (parts) {
+    page.heading("Assembly: " + std::to_string(parts->size()) + " parts");
+    partsTable(page, *parts);
+    interferenceTable(page, *parts, interference, options.contact, counts);
+    if (options.clearance) clearanceText(page, *parts, *options.clearance);
+  }
   if (facts) {
     *facts = ReportFacts{mass.volume,
                          walls->wall_min,
@@ -227,7 +297,10 @@ Result<std::string> buildReport(const VoxelGrid& grid, const ReportOptions& opti
                          print->support.support_volume,
                          options.min_wall > 0.0 ? int64_t(walls->regions.size()) : 0,
                          int64_t(run->hot_spots.size()),
-                         int64_t(print->cavities.size())};
+                         int64_t(print->cavities.size()),
+                         parts ? int64_t(parts->size()) : 0,
+                         counts.interfering_pairs,
+                         counts.contact_pairs};
   }
   if (progress && !progress(1.0)) return makeError(ErrorCode::kCancelled, "report cancelled");
   return pageHead(options.name.empty() ? std::string("voxmod report") : options.name) + page.html() +

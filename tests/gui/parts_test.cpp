@@ -5,6 +5,8 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <thread>
 
 #include "app/actions.h"
@@ -721,6 +723,16 @@ TEST(AppParts, theClearanceOfTwoPartsIsTheLibrarysAndMarksTwoVoxels) {
   EXPECT_FALSE(clearanceVoxels(state, va, vb));
   ASSERT_TRUE(run(state, "select-part 2 1").ok());
   EXPECT_TRUE(clearanceVoxels(state, va, vb));
+  // File > Export report: the parts, no pair interfering, and the clearance found, as the panel says it.
+  const std::filesystem::path html = dir / "parts.html";
+  ASSERT_TRUE(run(state, "export-report " + html.string()).ok());
+  ASSERT_TRUE(pump(state, [&] { return !state.volume_export_job.active() && std::filesystem::exists(html); }));
+  std::ifstream in(html);
+  const std::string page((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const char* words : {"Assembly: 2 parts", "<td>a.vxm</td>", "<td>b.vxm</td>", "0 pairs of parts interfere",
+                            "Clearance between a.vxm and b.vxm: a gap of 2 model units"}) {
+    EXPECT_NE(page.find(words), std::string::npos) << words;
+  }
   EXPECT_FALSE(run(state, "clearance 1 1").ok());
   EXPECT_FALSE(run(state, "clearance 1 3").ok());
   // Esc (Model > Cancel) drops a clearance under way: nothing arrives for it.

@@ -82,5 +82,54 @@ TEST(CliReport, badNamesMissingUnitsAndUnwritablePlacesWriteNothing) {
   EXPECT_FALSE(std::filesystem::exists(dir / "missing"));
 }
 
+// The box [lo, hi] as 12 outward-facing triangles.
+TriangleMesh boxMesh(glm::vec3 lo, glm::vec3 hi) {
+  TriangleMesh m = test::unitCubeMesh();
+  for (Triangle& t : m.triangles)
+    for (glm::vec3& v : t.v) v = lo + v * (hi - lo);
+  return m;
+}
+
+// Three boxes in one file, its bodies the parts of an assembly, on a grid of 1 mm voxels (R = 25 over the 25 mm the
+// boxes span in y): a = [0, 10]^3 and b = [6, 16] x [5, 15] x [4, 14] share a 4 x 5 x 6 block, 3 voxels thick by
+// the exact distance; c = [9.2, 20] x [-10, 4] x [0, 10] shares a's last layer of voxels (x = 9), 1 voxel thick.
+// With --contact 1 the second only touches.
+TEST(CliReport, anAssemblysReportListsItsPartsAndTellsInterferenceFromContact) {
+  test::TempDir dir;
+  TriangleMesh all = boxMesh({0, 0, 0}, {10, 10, 10});
+  for (const TriangleMesh& m : {boxMesh({6, 5, 4}, {16, 15, 14}), boxMesh({9.2f, -10, 0}, {20, 4, 10})}) {
+    all.triangles.insert(all.triangles.end(), m.triangles.begin(), m.triangles.end());
+  }
+  const std::string stl = (dir / "three.stl").string();
+  ASSERT_TRUE(io::saveStlBinary(all, stl).ok());
+  const std::filesystem::path html = dir / "three.html";
+  auto r = runVoxmod(
+      {"report", stl, "--res", "25", "--units", "mm", "--bodies", "--contact", "1", "-o", html.string(), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["parts"], 3);
+  EXPECT_EQ(j["interfering_pairs"], 1);
+  EXPECT_EQ(j["contact_pairs"], 1);
+  const std::string page = readText(html);
+  for (const char* words :
+       {"Assembly: 3 parts", "body 0", "body 1", "body 2", "1 pair of parts interfere",
+        "1 only touch (overlapping 1 mm or less)", "<b>interference</b>", "<td>contact</td>",
+        "<td>120 mm&sup3;</td><td>3 mm</td>", "<td>40 mm&sup3;</td><td>1 mm</td>", "<td>1000 mm&sup3;</td>"}) {
+    EXPECT_NE(page.find(words), std::string::npos) << words;
+  }
+  // without the tolerance both overlaps interfere; without --bodies there are no parts, and --contact is refused
+  r = runVoxmod({"report", stl, "--res", "25", "--units", "mm", "--bodies", "-o", html.string(), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["interfering_pairs"], 2);
+  r = runVoxmod({"report", stl, "--res", "25", "--units", "mm", "-o", html.string(), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(nlohmann::json::parse(r.out).contains("parts"));
+  EXPECT_EQ(readText(html).find("Assembly"), std::string::npos);
+  r = runVoxmod({"report", stl, "--res", "25", "--contact", "1", "-o", (dir / "no.html").string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--bodies"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "no.html"));
+}
+
 }  // namespace
 }  // namespace vox
