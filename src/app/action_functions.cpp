@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/glossary.h"
 #include "app/measure.h"
 #include "app/operations.h"
 #include "app/parts.h"
@@ -257,8 +258,21 @@ Status xrayAlong(AppState& s, const ActionArgs& a) {  // AXIS MODE, as the X-ray
 }
 
 // ---- Help and dialogs ----
-void controls(AppState& s) { s.show_controls = true; }
-void about(AppState& s) { s.show_about = true; }
+void controls(AppState& s) { s.help.show_controls = true; }
+void about(AppState& s) { s.help.show_about = true; }
+void terms(AppState& s) {
+  s.help.show_terms = true;
+  s.help.term.clear();
+}
+Status termsAt(AppState& s, const ActionArgs& a) {
+  std::string words;  // "suspect voxels" as well as "suspect-voxels"
+  for (const std::string& w : a.words) words += (words.empty() ? "" : " ") + w;
+  const Term* t = findTerm(words);
+  if (!t) return badValues("no term '" + words + "' (known: " + termKeys() + ")");
+  s.help.show_terms = true;
+  s.help.term = t->key;
+  return Ok{};
+}
 void closeDialogs(AppState& s) { s.close_dialogs = true; }
 
 }  // namespace vox::app::actions

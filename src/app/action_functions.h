@@ -212,6 +212,8 @@ void cancelPrintNow(AppState& s);
 // ---- Help and dialogs ----
 void controls(AppState& s);
 void about(AppState& s);
+void terms(AppState& s);                           // Help > Terms, from the top
+Status termsAt(AppState& s, const ActionArgs& a);  // TERM: Help > Terms at that term (glossary.h)
 void closeDialogs(AppState& s);
 
 }  // namespace vox::app::actions

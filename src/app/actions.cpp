@@ -148,6 +148,7 @@ const Action kActions[] = {
   {ActionId::kPartColour,     "part-colour",     nullptr,   "Colour of a part",                   kNone,                       2, 5,  nullptr,       partColourAt,      hasParts,    nullptr},
 
   {ActionId::kControls,       "controls",        "Help",    "Mouse and keyboard",                 {GLFW_KEY_F1, 0},            0, 0,  controls,      nullptr,           nullptr,     nullptr},
+  {ActionId::kTerms,          "terms",           "Help",    "Terms...",                           kNone,                       0, -1, terms,         termsAt,           nullptr,     nullptr},
   {ActionId::kAbout,          "about",           "Help",    "About voxmod",                       kNone,                       0, 0,  about,         nullptr,           nullptr,     nullptr},
   {ActionId::kCloseDialogs,   "close-dialogs",   nullptr,   "Close the open dialog",              kNone,                       0, 0,  closeDialogs,  nullptr,           nullptr,     nullptr},
 };

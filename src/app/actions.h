@@ -128,6 +128,7 @@ enum class ActionId {
   kClearance,
   kCancelInterference,
   kControls,
+  kTerms,
   kAbout,
   kCloseDialogs,
 };

@@ -16,6 +16,8 @@
 #include "app/job.h"
 #include "app/parts_state.h"
 #include "app/casting_state.h"
+#include "app/file_browser_state.h"
+#include "app/glossary.h"
 #include "app/print_state.h"
 #include "app/viewport_state.h"
 #include "app/settings.h"
@@ -176,37 +178,6 @@ struct VoxelizeDialog {
 };
 
 // The actions of the window's table (app/actions.h): the file browser gives its path to one of them.
-enum class ActionId;
-
-struct FileBrowser {
-  struct Entry {
-    std::string name;
-    bool is_directory = false;
-    uintmax_t size = 0;
-  };
-  bool open_requested = false;
-  bool accepted = false;  // the file chosen went through (between frames): the browser closes
-  // What it is for: the action its path is given to (one of the table's that takes a path), its title, the extensions
-  // it lists (none: it names a folder), and whether it names a file to write (the first extension added to a name
-  // without one) or one to open.
-  ActionId action{};
-  std::string title;
-  std::vector<std::string> extensions;
-  bool saving = false;
-  bool went_through = false;  // the path last given to a path action was used (usePath): the browser may close
-  std::filesystem::path directory;
-  std::string file_name;  // typed or clicked
-  bool show_all_files = false;
-  std::string error;  // e.g. the directory could not be listed
-  // The listing of `directory`, refreshed when the directory or the filter changes (not every frame).
-  std::vector<Entry> entries;
-  std::filesystem::path listed_directory;
-  bool listed_all_files = false;
-  bool needs_listing = true;
-  // Run after a successful save from the browser (the unsaved-changes prompt's "Save" continues with it).
-  std::function<void(AppState&)> then;
-};
-
 // ---- Caches of results derived from the model (recomputed when their key changes) ----
 
 struct SectionKey {
@@ -380,9 +351,8 @@ struct AppState {
   bool unsaved_prompt_requested = false;
   bool quit_requested = false;
   bool release_memory = false;  // a document was closed: give freed memory back to the system after the next frame
-  bool show_about = false;
-  bool show_controls = false;  // Help > Mouse and keyboard
-  std::string status_message;  // e.g. "Wrote /home/me/part.png", in the status bar for a few seconds
+  HelpUi help;                  // Help > About, Mouse and keyboard, Terms
+  std::string status_message;   // e.g. "Wrote /home/me/part.png", in the status bar for a few seconds
   double status_since = 0.0;
   int32_t export_width = 0, export_height = 0;  // size of an exported 3D view in pixels; 0: the view's own
   bool close_dialogs = false;  // every open dialog closes itself on the next frame (the close-dialogs action)

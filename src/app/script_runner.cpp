@@ -347,6 +347,7 @@ std::string describeState(const AppState& s, const Harness& h) {
   out << "view_points = " << s.viewport.stats.points_drawn << "\n";
   out << "view_lod = " << s.viewport.stats.lod_level << "\n";
   out << "errors = " << s.errors.messages.size() << "\n";
+  out << "help_term = " << s.help.term << "\n";  // the term Help > Terms was last opened at
   out << "autosave_file = " << (s.autosave.file_written ? s.autosave.file.string() : std::string()) << "\n";
   out << "autosave_orphans = " << s.autosave.orphans.size() << "\n";
   out << "document = " << documentName(s) << "\n";

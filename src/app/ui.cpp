@@ -1,5 +1,6 @@
 #include "app/ui.h"
 
+#include "app/glossary.h"
 #include "vox/core/text.h"
 
 #include <algorithm>
@@ -41,6 +42,13 @@ std::string formatVolume(double value, const std::string& units) { return format
 void heading(const char* title) {
   ImGui::Spacing();
   ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "%s", title);
+  ImGui::Separator();
+}
+
+void heading(const char* title, AppState& state, const char* term) {
+  ImGui::Spacing();
+  ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "%s", title);
+  termMarker(state, term);
   ImGui::Separator();
 }
 
@@ -146,5 +154,26 @@ void actionCheckbox(AppState& state, ActionId id, const char* label) {
 }
 
 void setToggle(AppState& state, ActionId id, bool on) { dispatchValues(state, id, {on ? "on" : "off"}); }
+
+void termMarker(AppState& state, const char* key) {
+  const Term* t = findTerm(key);
+  if (!t) return;
+  ImGui::SameLine();
+  const std::string label = std::string("(?)##") + t->key;
+  ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.0f, 0.0f, 0.0f, 0.0f));
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  const bool pressed = widget::SmallButton(label.c_str());
+  ImGui::PopStyleColor(2);
+  if (ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    ImGui::TextUnformatted(t->name);
+    ImGui::TextUnformatted(t->text);
+    ImGui::TextDisabled("Click for Help > Terms.");
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+  if (pressed) dispatchValues(state, ActionId::kTerms, {t->key});
+}
 
 }  // namespace vox::app

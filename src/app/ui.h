@@ -141,6 +141,12 @@ void actionCheckbox(AppState& state, ActionId id, const char* label);
 // Sets a toggle of the action table on or off through dispatch (as a script's "lit off").
 void setToggle(AppState& state, ActionId id, bool on);
 
+// A "(?)" after the last item for the term `key` (glossary.h): hovered, it says what the term means; pressed, it
+// opens Help > Terms at it (the terms action). Recorded as "(?)@KEY" (script.h).
+void termMarker(AppState& state, const char* key);
+// A section heading whose title is a term: its "(?)" beside the title.
+void heading(const char* title, AppState& state, const char* term);
+
 // Under the Section and X-ray panels' controls: a line saying the model is peeled, when it is.
 void peeledNotice(const AppState& state);
 

@@ -15,6 +15,7 @@
 #include "app/actions.h"
 #include "app/app_state.h"
 #include "app/full_section.h"
+#include "app/glossary.h"
 #include "app/job.h"
 #include "app/measure.h"
 #include "app/operations.h"
@@ -249,6 +250,32 @@ TEST(AppActions, everyActionIsInTheTableOnceAndShortcutsAreUnique) {
   EXPECT_EQ(shortcutText(action(ActionId::kSaveAs).shortcut), "Ctrl+Shift+S");
   EXPECT_EQ(shortcutText(action(ActionId::kSectionNext).shortcut), "PgUp");
   EXPECT_EQ(shortcutText(action(ActionId::kExportBinvox).shortcut), "");
+}
+
+// Help > Terms: each term once, explained; the terms action opens it at a term named by its key or as the panels
+// write it, and refuses a word that is none, listing the known ones.
+TEST(AppActions, theTermsActionOpensTheGlossaryAtATerm) {
+  std::set<std::string> keys;
+  for (const Term& t : glossary()) {
+    EXPECT_TRUE(keys.insert(t.key).second) << t.key;
+    EXPECT_GT(std::string(t.text).size(), 60u) << t.key;
+    EXPECT_EQ(findTerm(t.name), &t) << t.name;
+  }
+  for (const char* used : {"suspect-voxels", "core", "modulus", "isolated", "niyama", "wall", "interference"}) {
+    EXPECT_TRUE(keys.count(used)) << used;
+  }
+  AppState state;
+  ASSERT_TRUE(test_app::run(state, "terms suspect voxels").ok());
+  EXPECT_TRUE(state.help.show_terms);
+  EXPECT_EQ(state.help.term, "suspect-voxels");
+  ASSERT_TRUE(test_app::run(state, "terms Niyama").ok());
+  EXPECT_EQ(state.help.term, "niyama");
+  const Status bad = test_app::run(state, "terms flux capacitor");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().message.find("modulus"), std::string::npos) << bad.error().message;
+  EXPECT_EQ(state.help.term, "niyama");
+  ASSERT_TRUE(test_app::run(state, "terms").ok());  // Help > Terms from the menu: from the top
+  EXPECT_TRUE(state.help.term.empty());
 }
 
 // ---- Document operations ----

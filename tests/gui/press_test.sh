@@ -92,6 +92,13 @@ expect casting_feeder.txt parts 2
 expect casting_undo.txt casting_feeders 0
 [[ -n "$(get casting.txt casting_solidification_s)" ]] || fail "the casting was not simulated"
 
+# The "(?)" beside the casting's modulus opened Help > Terms at "Modulus", every term listed.
+expect terms.txt help_term modulus
+for term in modulus isolated niyama suspect-voxels core; do
+  grep -q "^rect_term $term = " "$out/terms.txt" || fail "Help > Terms does not list $term"
+done
+checks=$((checks + 1))
+
 # Every panel pressed, with the assembly and with one model: 18 rounds, each with more than the 3D view's buttons.
 rounds=$(grep -c "^press-all: pressed" "$out/voxmod.log")
 ((rounds == 18)) || fail "expected 18 press-all rounds, found $rounds"

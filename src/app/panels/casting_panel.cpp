@@ -117,7 +117,7 @@ const CastingOutcome* runOrStatus(AppState& state) {
   return r;
 }
 
-void facts(const CastingOutcome& r, const std::string& units) {
+void facts(AppState& state, const CastingOutcome& r, const std::string& units) {
   const CastingResult& c = r.run.result;
   wrappedColoured(c.sound ? ImVec4(0.5f, 0.9f, 0.5f, 1.0f) : kErrorColour, c.verdict);
   if (!beginFactTable("casting_facts")) return;
@@ -131,6 +131,7 @@ void facts(const CastingOutcome& r, const std::string& units) {
     tableRow("Yield", text);
   }
   tableRow("Largest modulus", formatLength(r.run.modulus_max, units));
+  termMarker(state, "modulus");
   std::snprintf(text, sizeof text, "%d x %d x %d, %lld steps", c.box.nx, c.box.ny, c.box.nz, (long long)c.steps);
   tableRow("Simulated", text);
   tableRow("Took", formatSeconds(r.seconds));
@@ -141,6 +142,7 @@ void hotSpots(AppState& state, const CastingOutcome& r, const std::string& units
   heading("Hot spots (latest first)");
   const auto& spots = r.run.result.hot_spots;
   ImGui::TextWrapped("Red: isolated, nothing later to feed it. White: fed. Blue: in a feeder. Click one to see it.");
+  termMarker(state, "isolated");
   const int rows = std::min(int(spots.size()), 100);
   if (!beginScrollList("casting_hot_spots", 3, rows, 6)) return;
   ImGui::TableSetupColumn("Freezes at");
@@ -180,6 +182,7 @@ void viewChoice(AppState& state, const CastingOutcome& r) {
     if (i > 0) ImGui::SameLine();
     if (widget::RadioButton(labels[i], int(ui.field) == i)) dispatchValues(state, ActionId::kCastingField, {names[i]});
   }
+  termMarker(state, "niyama");
   const double end = r.run.result.last_metal_s;
   float t = float(castingTimeShown(state, r));
   ImGui::SetNextItemWidth(-70.0f);
@@ -208,7 +211,7 @@ void drawCastingPanel(AppState& state) {
   feeders(state, units);
   const CastingOutcome* r = runOrStatus(state);
   if (!r) return;
-  facts(*r, units);
+  facts(state, *r, units);
   viewChoice(state, *r);
   hotSpots(state, *r, units);
 }

@@ -100,6 +100,7 @@ void drawFrame(AppState& state) {
   drawRecoveryOffer(state);
   drawAboutDialog(state);
   drawControlsDialog(state);
+  drawTermsDialog(state);
   // Last: an error raised by another dialog this frame shows on top of it; the file browser shows its own errors.
   if (!fileBrowserOpen()) drawErrorDialog(state);
   state.close_dialogs = false;

@@ -1,4 +1,5 @@
-// Help > Mouse and keyboard (the mouse controls and every shortcut of the action table) and Help > About.
+// Help > Mouse and keyboard (the mouse controls and every shortcut of the action table), Help > Terms (glossary.h) and
+// Help > About.
 #include <string>
 
 #include <imgui.h>
@@ -8,14 +9,15 @@
 #include <GLFW/glfw3.h>
 
 #include "app/actions.h"
+#include "app/glossary.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
 
 namespace vox::app {
 
 void drawControlsDialog(AppState& state) {
-  if (state.show_controls) {
-    state.show_controls = false;
+  if (state.help.show_controls) {
+    state.help.show_controls = false;
     ImGui::OpenPopup("Mouse and keyboard");
   }
   centreNextWindow();
@@ -52,9 +54,42 @@ void drawControlsDialog(AppState& state) {
   ImGui::EndPopup();
 }
 
+void drawTermsDialog(AppState& state) {
+  HelpUi& help = state.help;
+  if (help.show_terms) {
+    help.show_terms = false;
+    help.scroll_to_term = !help.term.empty();
+    ImGui::OpenPopup("Terms");
+  }
+  centreNextWindow();
+  const float em = ImGui::GetFontSize();
+  ImGui::SetNextWindowSize(ImVec2(em * 40.0f, 0.0f));
+  if (!ImGui::BeginPopupModal("Terms", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::BeginChild("terms", ImVec2(0.0f, em * 28.0f), true);
+  for (const Term& t : glossary()) {
+    const bool chosen = help.term == t.key;
+    ImGui::PushStyleColor(ImGuiCol_Text, chosen ? ImVec4(1.0f, 0.8f, 0.3f, 1.0f) : ImVec4(0.55f, 0.75f, 1.0f, 1.0f));
+    ImGui::TextUnformatted(t.name);
+    ImGui::PopStyleColor();
+    markWidget(std::string("term ") + t.key);
+    if (chosen && help.scroll_to_term) {
+      ImGui::SetScrollHereY(0.0f);
+      help.scroll_to_term = false;
+    }
+    ImGui::TextWrapped("%s", t.text);
+    ImGui::Spacing();
+  }
+  ImGui::EndChild();
+  if (widget::Button("Close", ImVec2(120.0f, 0.0f)) || state.close_dialogs ||
+      ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
 void drawAboutDialog(AppState& state) {
-  if (state.show_about) {
-    state.show_about = false;
+  if (state.help.show_about) {
+    state.help.show_about = false;
     ImGui::OpenPopup("About voxmod");
   }
   centreNextWindow();

@@ -57,8 +57,10 @@ void modelSection(AppState& state) {
       char vol[64];
       std::snprintf(vol, sizeof vol, "%.5g (filled x voxel size^3)", double(stats->filled) * h3);
       tableRow("Volume", vol);
-      if (stats->suspect_voxels > 0)
+      if (stats->suspect_voxels > 0) {
         tableRow("Suspect voxels", groupDigits(stats->suspect_voxels) + " (4-5 free faces)");
+        termMarker(state, "suspect-voxels");
+      }
     } else {
       tableRow("Filled voxels", "counting...");
     }

@@ -49,6 +49,7 @@ void drawUnsavedPrompt(AppState& state);
 void drawRecoveryOffer(AppState& state);
 void drawAboutDialog(AppState& state);
 void drawControlsDialog(AppState& state);  // Help > Mouse and keyboard
+void drawTermsDialog(AppState& state);     // Help > Terms (glossary.h), at the term asked for
 // Progress of the running load or voxelization, with Cancel.
 void drawJobWindow(AppState& state);
 

@@ -223,6 +223,7 @@ void drawClearance(AppState& state) {
   if (widget::Button("Clearance of the two selected")) dispatch(state, ActionId::kClearance);
   markWidget("part_clearance");
   ImGui::EndDisabled();
+  termMarker(state, "clearance");
   if (state.clearance_job.active()) {
     ImGui::SameLine();
     ImGui::Text("Finding the clearance... %.1f s", nowSeconds() - state.job_started);
@@ -304,7 +305,7 @@ void contactField(AppState& state, const Assembly& parts) {
 }
 
 void drawInterference(AppState& state, const Assembly& parts) {
-  heading("Interference");
+  heading("Interference", state, "interference");
   contactField(state, parts);
   if (const Interference* inter = currentInterference(state)) {
     drawPairList(state, parts, *inter);

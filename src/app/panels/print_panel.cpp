@@ -45,7 +45,7 @@ void directionChoice(AppState& state) {
   markWidget("print_lay_face");
   helpMarker("Click the face the part should stand on: the build direction becomes the opposite of its normal.");
 
-  heading("Overhang angle");
+  heading("Overhang angle", state, "overhang");
   // applied when the slider is let go: each angle on the way would check the part again
   PrintUi& ui = state.print_ui;
   float angle = ui.angle_drag >= 0.0f ? ui.angle_drag : float(ui.overhang_angle);
@@ -81,7 +81,7 @@ const PrintResult* printOrStatus(AppState& state) {
 }
 
 void cavityList(AppState& state, const PrintResult& r, const std::string& units) {
-  heading("Trapped cavities");
+  heading("Trapped cavities", state, "trapped-cavity");
   const auto& cavities = r.check.cavities;
   if (cavities.empty()) {
     ImGui::TextWrapped("None: every empty space inside reaches the outside, so powder or resin can drain.");

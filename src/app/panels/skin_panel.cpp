@@ -114,6 +114,7 @@ void drawSkinPanel(AppState& state) {
   if (beginFactTable("skin_facts")) {
     // The CLI's words: the model has L skin layers, the last (layer L) is the core; peeling stops before it.
     tableRow("Skin layers", std::to_string(layers) + " (the core is layer " + std::to_string(layers) + ")");
+    termMarker(state, "skin-layer");
     tableRow("Core depth", formatLength(double(layers) * h, units) + " in face steps");
     tableRow("Peeled", k == 0 ? std::string(snap.round_peels.empty() ? "none (the whole model)" : "no layers")
                               : std::to_string(k) + " of " + std::to_string(layers) + " layers" +
@@ -122,6 +123,7 @@ void drawSkinPanel(AppState& state) {
     tableRow("Remaining voxels", groupDigits(total - gone) + " of " + groupDigits(total));
     if (k > 0 && size_t(k) <= removed.size()) tableRow("Layer removed", groupDigits(removed[size_t(k) - 1]));
     tableRow("Core voxels", groupDigits(depth->coreVoxels()));
+    termMarker(state, "core");
     ImGui::EndTable();
   }
 

@@ -79,6 +79,11 @@ void drawHotSpotList(AppState& state, const ThicknessResult& r, const std::strin
       "Centres of the thickest regions (magenta rings): where a casting freezes last. Isolated: behind a thinner "
       "neck, so it needs its own feeder. Lengths in %s.",
       unitsLabel(units).c_str());
+  ImGui::TextDisabled("Modulus");
+  termMarker(state, "modulus");
+  ImGui::SameLine();
+  ImGui::TextDisabled("Isolated");
+  termMarker(state, "isolated");
   if (r.hot_spots.empty()) return;
   const int rows = std::min(int(r.hot_spots.size()), kMostRows);
   if (!beginScrollList("hot_spots", 4, rows, 8)) return;

@@ -80,6 +80,7 @@ void methodChoice(AppState& state, const ThicknessResult& r) {
   ImGui::BeginDisabled(!can_ray);
   if (widget::RadioButton("rays", rays)) dispatchValues(state, ActionId::kThicknessMethod, {"ray"});
   ImGui::EndDisabled();
+  termMarker(state, "ray-thickness");
   if (!can_ray) {
     helpMarker(
         "Rays follow the mesh the model was voxelized from; a voxel file, a peeled model or a scene of parts "
@@ -105,8 +106,12 @@ void drawThicknessPanel(AppState& state) {
   const Walls* walls = currentThinWalls(state);
   if (beginFactTable("thickness_facts")) {
     // the thinnest wall first: the local thickness's own minimum is a convex edge's, no wall's
-    if (walls) tableRow("Thinnest wall", formatLength(walls->wall_min, units));
+    if (walls) {
+      tableRow("Thinnest wall", formatLength(walls->wall_min, units));
+      termMarker(state, "wall");
+    }
     tableRow("Thinnest (sphere)", formatLength(st.min, units));
+    termMarker(state, "local-thickness");
     tableRow("Thickest", formatLength(st.max, units));
     tableRow("Mean", formatLength(st.mean, units));
     tableRow("Voxels", groupDigits(st.voxels) + " in " + formatSeconds(r->seconds));
@@ -147,7 +152,7 @@ void drawThicknessPanel(AppState& state) {
     ImGui::ProgressBar(float(state.thin_walls.progress()), ImVec2(-1.0f, 0.0f));
   }
 
-  heading("Hot spots");
+  heading("Hot spots", state, "hot-spot");
   drawHotSpotList(state, *r, units);
   if (!state.thickness_ui.volume_problem.empty()) {
     wrappedColoured(kWarningColour, state.thickness_ui.volume_problem);
