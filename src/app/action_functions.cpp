@@ -156,6 +156,12 @@ Status zoomBy(AppState& s, const ActionArgs& a) {  // FACTOR: > 1 zooms in
 
 void toggleLit(AppState& s) { s.view.lit = !s.view.lit; }
 bool isLit(const AppState& s) { return s.view.lit; }
+void toggleOrtho(AppState& s) {
+  render::Projection& p = s.view.camera.projection;
+  p = p == render::Projection::kOrthographic ? render::Projection::kPerspective : render::Projection::kOrthographic;
+}
+bool isOrthographic(const AppState& s) { return s.view.camera.projection == render::Projection::kOrthographic; }
+
 void toggleRound(AppState& s) { s.view.round_points = !s.view.round_points; }
 bool isRound(const AppState& s) { return s.view.round_points; }
 void toggleLod(AppState& s) { s.view.lod = !s.view.lod; }

@@ -88,6 +88,8 @@ void zoomOut(AppState& s);
 Status zoomBy(AppState& s, const ActionArgs& a);
 void toggleLit(AppState& s);
 bool isLit(const AppState& s);
+void toggleOrtho(AppState& s);  // the 3D view's projection: orthographic or perspective
+bool isOrthographic(const AppState& s);
 void toggleRound(AppState& s);
 bool isRound(const AppState& s);
 void toggleLod(AppState& s);

@@ -62,6 +62,7 @@ const Action kActions[] = {
   {ActionId::kViewNegY,       "view-neg-y",      "View",    "From -Y",                            {GLFW_KEY_2, kShift},        0, 0,  viewNegY,      nullptr,           nullptr,     nullptr},
   {ActionId::kViewPosZ,       "view-pos-z",      "View",    "From +Z",                            {GLFW_KEY_3, 0},             0, 0,  viewPosZ,      nullptr,           nullptr,     nullptr},
   {ActionId::kViewNegZ,       "view-neg-z",      "View",    "From -Z",                            {GLFW_KEY_3, kShift},        0, 0,  viewNegZ,      nullptr,           nullptr,     nullptr},
+  {ActionId::kViewOrtho,      "ortho",           "View",    "Orthographic projection",            {GLFW_KEY_5, 0},             0, 0,  toggleOrtho,   nullptr,           nullptr,     isOrthographic},
   {ActionId::kViewAngles,     "view",            nullptr,   "Camera angles",                      kNone,                       2, 2,  nullptr,       viewAngles,        nullptr,     nullptr},
   {ActionId::kZoomIn,         "zoom-in",         "View",    "Zoom in",                            {GLFW_KEY_EQUAL, 0},         0, 0,  zoomIn,        nullptr,           nullptr,     nullptr},
   {ActionId::kZoomOut,        "zoom-out",        "View",    "Zoom out",                           {GLFW_KEY_MINUS, 0},         0, 0,  zoomOut,       nullptr,           nullptr,     nullptr},

@@ -51,6 +51,7 @@ enum class ActionId {
   kViewNegY,
   kViewPosZ,
   kViewNegZ,
+  kViewOrtho,
   kViewAngles,
   kZoomIn,
   kZoomOut,

@@ -342,6 +342,8 @@ std::string describeState(const AppState& s, const Harness& h) {
   out << "xray_mode = " << xrayModeName(s.xray.params.mode) << "\n";
   out << "view_yaw = " << s.view.camera.yaw_deg << "\n";
   out << "view_pitch = " << s.view.camera.pitch_deg << "\n";
+  out << "view_projection = "
+      << (s.view.camera.projection == render::Projection::kOrthographic ? "orthographic" : "perspective") << "\n";
   out << "viewport = " << s.viewport.x << " " << s.viewport.y << " " << s.viewport.width << " " << s.viewport.height
       << "\n";
   out << "view_points = " << s.viewport.stats.points_drawn << "\n";

@@ -18,6 +18,7 @@
 #include "app/print_view.h"
 #include "app/ui.h"
 #include "app/thickness_view.h"
+#include "app/view_cube.h"
 #include "app/view_export.h"
 #include "app/view_overlays.h"
 #include "app/viewport_input.h"
@@ -340,7 +341,8 @@ void drawViewport(AppState& state) {
                   core ? "Core (thickest region) shown through the model" : "Disputed voxels (vote mode)");
     }
   }
-  drawViewToolbar(state, ImVec2(pos.x + float(w) - 260.0f, pos.y + 6.0f));
+  drawViewToolbar(state, ImVec2(pos.x + float(w) - 310.0f, pos.y + 6.0f));
+  if (!state.model.empty()) drawViewCube(state, ImVec2(pos.x + float(w) - 52.0f, pos.y + 80.0f), 22.0f);
   ImGui::SetCursorScreenPos(after);
 }
 

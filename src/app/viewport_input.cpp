@@ -8,6 +8,8 @@
 
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
+#include <imgui.h>
+#include <imgui_internal.h>  // ImGuiButtonFlags_AllowItemOverlap
 
 #include "app/actions.h"
 #include "app/measure.h"
@@ -50,12 +52,26 @@ void drawViewToolbar(AppState& state, ImVec2 pos) {
       ImGui::SetTooltip("%s%s%s%s", a.label, sc.empty() ? "" : " (", sc.c_str(), sc.empty() ? "" : ")");
     }
   }
+  // the projection: lit while orthographic
+  ImGui::SameLine(0.0f, 8.0f);
+  const Action& projection = action(ActionId::kViewOrtho);
+  const bool ortho = projection.checked(state);
+  if (ortho) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+  if (widget::SmallButton("Ortho")) dispatch(state, projection.id);
+  if (ortho) ImGui::PopStyleColor();
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("%s (%s): %s", projection.label, shortcutText(projection.shortcut).c_str(),
+                      ortho ? "on, parallel lines stay parallel" : "off, the view is in perspective");
+  }
 }
 
 bool handleViewMouse(AppState& state, ImVec2 pos, int w, int h, double aspect) {
-  ImGui::InvisibleButton(
-      "##view", ImVec2(float(w), float(h)),
-      ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
+  ImGui::InvisibleButton("##view", ImVec2(float(w), float(h)),
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                             ImGuiButtonFlags_MouseButtonMiddle | ImGuiButtonFlags_AllowItemOverlap);
+  // the view buttons and the view cube are drawn over it afterwards: without this the first item drawn, the view,
+  // would keep the mouse and their clicks would orbit it
+  ImGui::SetItemAllowOverlap();
   const ImGuiIO& io = ImGui::GetIO();
   bool dragging = false;
   if (ImGui::IsItemActive()) {

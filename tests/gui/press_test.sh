@@ -92,6 +92,14 @@ expect casting_feeder.txt parts 2
 expect casting_undo.txt casting_feeders 0
 [[ -n "$(get casting.txt casting_solidification_s)" ]] || fail "the casting was not simulated"
 
+# The view buttons over the view: +X turned it, the cube's +Z face looked from +Z, Ortho made it orthographic.
+expect view_x.txt view_yaw 90
+expect view_x.txt view_pitch 0
+expect view_cube.txt view_yaw 0
+expect view_cube.txt view_pitch 0
+expect view_cube.txt view_projection perspective
+expect view_ortho.txt view_projection orthographic
+
 # The "(?)" beside the casting's modulus opened Help > Terms at "Modulus", every term listed.
 expect terms.txt help_term modulus
 for term in modulus isolated niyama suspect-voxels core; do
