@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include <glm/common.hpp>
+
 #include "app/glossary.h"
 #include "app/measure.h"
 #include "app/operations.h"
@@ -205,6 +207,30 @@ Status sectionAt(AppState& s, const ActionArgs& a) {  // AXIS INDEX: the slider'
   s.view.cut_away = true;
   showPanel(s, Panel::kSection);
   return Ok{};
+}
+
+Status sectionZoom(AppState& s, const ActionArgs& a) {
+  double zoom = 0.0;
+  if (!parseFileNumber(a.words[0], zoom) || !(zoom >= 1.0 && zoom <= kMaxSectionZoom)) {
+    return badValues("section-zoom takes a zoom from 1 (the whole section) to " + std::to_string(int(kMaxSectionZoom)) +
+                     ", then the voxel U V to zoom about");
+  }
+  if (a.words.size() == 2) return badValues("section-zoom takes Z, or Z U V (the voxel along right and up)");
+  // default: about the voxel in the middle now
+  const double w = std::max(axisLength(s, imageRightAxis(s.section.axis)), 1);
+  const double h = std::max(axisLength(s, imageUpAxis(s.section.axis)), 1);
+  glm::dvec2 uv(s.section.centre.x * w - 0.5, s.section.centre.y * h - 0.5);
+  if (a.words.size() == 3 && (!parseFileNumber(a.words[1], uv.x) || !parseFileNumber(a.words[2], uv.y))) {
+    return badValues("section-zoom: U and V are voxels along the picture's right and up axes");
+  }
+  zoomSection(s, zoom, uv);
+  showPanel(s, Panel::kSection);
+  return Ok{};
+}
+
+void sectionWhole(AppState& s) {
+  s.section.zoom = 1.0;
+  s.section.centre = glm::dvec2(0.5);
 }
 
 Status sectionPlane(AppState& s, const ActionArgs& a) {

@@ -120,6 +120,7 @@ const Action kActions[] = {
   {ActionId::kSectionPlay,    "section-play",    "Section", "Play / pause sections",              {GLFW_KEY_SPACE, 0},         0, 0,  sectionPlay,   nullptr,           hasSection,  isPlaying},
   {ActionId::kSectionPlane,   "section-plane",   nullptr,   "Section at an angle",                kNone,                       3, 4,  nullptr,       sectionPlane,      hasSection,  nullptr},
   {ActionId::kSectionAt,      "section",         nullptr,   "Section at an index",                kNone,                       2, 2,  nullptr,       sectionAt,         hasSection,  nullptr},
+  {ActionId::kSectionZoom,    "section-zoom",    "Section", "Whole section (zoom 1)",             kNone,                       1, 3,  sectionWhole,  sectionZoom,       hasSection,  nullptr},
 
   {ActionId::kPeelOne,        "peel-one",        "Skin",    "Peel one layer",                     {GLFW_KEY_P, 0},             0, 0,  peelOne,       nullptr,           canPeel,     nullptr},
   {ActionId::kPeelN,          "peel",            "Skin",    "Peel N layers",                      kNone,                       1, 1,  peelN,         peelCount,         canPeel,     nullptr},

@@ -103,6 +103,7 @@ enum class ActionId {
   kSectionNext,
   kSectionPlay,
   kSectionAt,
+  kSectionZoom,
   kSectionPlane,
   kPeelOne,
   kPeelN,
@@ -141,6 +142,9 @@ struct Shortcut {
 };
 
 // The values an action is given: words, and the text after the action's name (for paths with spaces).
+// The most the axis section's picture is zoomed (section-zoom).
+inline constexpr double kMaxSectionZoom = 256.0;
+
 struct ActionArgs {
   std::vector<std::string> words;
   std::string rest;

@@ -141,6 +141,10 @@ struct SectionUi {
   bool oblique = false;
   glm::dvec3 normal{1.0, 1.0, 0.0};
   double offset = 0.0;
+  // The axis section's picture zoomed (section-zoom): 1 shows it whole; `centre` is the point shown in its middle, as
+  // fractions of the picture's width (right) and height (up).
+  double zoom = 1.0;
+  glm::dvec2 centre{0.5, 0.5};
   bool playing = false;
   int32_t step = 1;
   float play_speed = 15.0f;  // sections per second while playing

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "app/actions.h"  // kMaxSectionZoom
 #include "app/document.h"
 #include "app/parts.h"
 #include "app/update.h"
@@ -72,6 +73,13 @@ void showInterferencePair(AppState& state, int32_t i) {
       std::clamp(int(std::floor(centre[a])), 0, std::max(axisLength(state, state.section.axis) - 1, 0));
   const glm::ivec3 size = p.box.size();
   centreView(state, centre, double(std::max({size.x, size.y, size.z})));
+  // ... and the section's picture zoomed onto the overlap, its box a third of the picture at most: a small overlap
+  // is more than a red pixel
+  const int r = int(imageRightAxis(state.section.axis)), u = int(imageUpAxis(state.section.axis));
+  const double fit = std::min(double(axisLength(state, Axis(r))) / std::max(size[r], 1),
+                              double(axisLength(state, Axis(u))) / std::max(size[u], 1)) /
+                     3.0;
+  zoomSection(state, std::clamp(fit, 1.0, kMaxSectionZoom), glm::dvec2(centre[r] - 0.5, centre[u] - 0.5));
 }
 
 std::string interferencePairText(const AppState& state) {

@@ -7,6 +7,8 @@
 #include <tuple>
 #include <utility>
 
+#include <glm/common.hpp>
+
 #include "app/document.h"
 #include "app/export_volume.h"
 #include "app/full_section.h"
@@ -141,6 +143,15 @@ const XrayResult* currentXray(const AppState& state) {
   const XrayKey key{state.model_version, state.xray.params.axis, state.xray.params.mode};
   const auto* x = state.xray_result.get(key);
   return x ? x->get() : nullptr;
+}
+
+void zoomSection(AppState& state, double zoom, glm::dvec2 uv) {
+  const int32_t w = std::max(axisLength(state, imageRightAxis(state.section.axis)), 1);
+  const int32_t h = std::max(axisLength(state, imageUpAxis(state.section.axis)), 1);
+  const double half = 0.5 / zoom;  // the picture shown: [centre - half, centre + half] on each axis, within [0, 1]
+  state.section.zoom = zoom;
+  state.section.centre =
+      glm::clamp(glm::dvec2((uv.x + 0.5) / w, (uv.y + 0.5) / h), glm::dvec2(half), glm::dvec2(1.0 - half));
 }
 
 int32_t axisLength(const AppState& state, Axis axis) {

@@ -19,6 +19,9 @@ const ObliqueSection* currentObliqueSection(AppState& state);
 const XrayResult* currentXray(const AppState& state);
 // Number of voxels along an axis of the model (0 without one).
 int32_t axisLength(const AppState& state, Axis axis);
+// Zooms the axis section's picture `zoom` times (1 to kMaxSectionZoom) about the voxel `uv` of the picture (along its
+// right and up axes, fractions allowed), kept within the picture.
+void zoomSection(AppState& state, double zoom, glm::dvec2 uv);
 // Turns the 3D view about `centre` (voxel coordinates of the model) from where it looks, and comes near enough to see
 // a place `extent` voxels wide well (never farther than it was).
 void centreView(AppState& state, glm::dvec3 centre, double extent);

@@ -278,6 +278,31 @@ TEST(AppActions, theTermsActionOpensTheGlossaryAtATerm) {
   EXPECT_TRUE(state.help.term.empty());
 }
 
+// section-zoom: the axis section's picture zoomed about a voxel, kept within the picture, refused out of range.
+TEST(AppActions, theSectionZoomsAboutAVoxelWithinThePicture) {
+  test::TempDir dir;
+  VoxelGrid g(Dims{40, 20, 10});
+  for (int32_t z = 0; z < 10; ++z)
+    for (int32_t y = 0; y < 20; ++y) g.fillRun(y, z, 0, 40);
+  ASSERT_TRUE(io::saveVxm(g, dir / "slab.vxm").ok());
+  AppState state;
+  ASSERT_TRUE(test_app::run(state, "open " + (dir / "slab.vxm").string()).ok());
+  ASSERT_TRUE(test_app::pump(state, [&] { return state.doc.model.has_value(); }));
+  ASSERT_TRUE(test_app::run(state, "section z 5").ok());  // the picture: x right (40), y up (20)
+  ASSERT_TRUE(test_app::run(state, "section-zoom 4 9.5 9.5").ok());
+  EXPECT_DOUBLE_EQ(state.section.zoom, 4.0);
+  EXPECT_DOUBLE_EQ(state.section.centre.x, 10.0 / 40.0);
+  EXPECT_DOUBLE_EQ(state.section.centre.y, 10.0 / 20.0);
+  ASSERT_TRUE(test_app::run(state, "section-zoom 4 0 0").ok());  // the corner: as far as the picture goes
+  EXPECT_DOUBLE_EQ(state.section.centre.x, 0.125);
+  EXPECT_DOUBLE_EQ(state.section.centre.y, 0.125);
+  EXPECT_FALSE(test_app::run(state, "section-zoom 0.5").ok());
+  EXPECT_FALSE(test_app::run(state, "section-zoom 1000").ok());
+  EXPECT_DOUBLE_EQ(state.section.zoom, 4.0);
+  ASSERT_TRUE(test_app::run(state, "section-zoom").ok());  // Section > Whole section
+  EXPECT_DOUBLE_EQ(state.section.zoom, 1.0);
+}
+
 // ---- Document operations ----
 
 using test_app::pump;

@@ -16,6 +16,7 @@
 #include "app/operations.h"
 #include "app/parts.h"
 #include "app/parts_view.h"
+#include "app/update.h"
 #include "app/viewport.h"
 #include "gui/app_test_support.h"
 #include "support/cad_parts.h"
@@ -119,6 +120,12 @@ TEST(AppParts, aMeshSplitsIntoItsBodiesOnTheModelsLattice) {
   EXPECT_GE(index, box.min[a]);
   EXPECT_LT(index, box.max[a]);
   EXPECT_FALSE(interferencePairText(state).empty());
+  // ... and the section's picture zoomed onto the overlap: its middle in the middle of what is shown
+  EXPECT_GT(state.section.zoom, 1.0);
+  const int r = int(imageRightAxis(state.section.axis));
+  const double mid = (double(box.min[r] + box.max[r]) * 0.5 - parts.extent().min[r]) / axisLength(state, Axis(r));
+  const double half = 0.5 / state.section.zoom;
+  EXPECT_NEAR(state.section.centre.x, std::clamp(mid, half, 1.0 - half), 1e-9);
 
   // Selecting another part leaves the pair: its banner and red overlap go (they stayed, naming parts not selected).
   ASSERT_TRUE(run(state, "select-part 3").ok());
