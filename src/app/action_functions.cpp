@@ -201,6 +201,7 @@ Status sectionAt(AppState& s, const ActionArgs& a) {  // AXIS INDEX: the slider'
   if (index < 0 || index >= n) {
     return badValues("section index " + std::to_string(index) + " is outside 0.." + std::to_string(n - 1));
   }
+  if (*axis != s.section.axis) sectionWhole(s);  // another picture: shown whole
   s.section.axis = *axis;
   s.section.index = index;
   s.section.oblique = false;

@@ -121,6 +121,8 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
   state.model = VoxelGrid{};
   state.model_version = 0;
   state.section.index = -1;
+  state.section.zoom = 1.0;  // a new model's section shown whole
+  state.section.centre = glm::dvec2(0.5);
   state.section.playing = false;
   state.view.fit_pending = true;
   state.viewport.dirty = true;

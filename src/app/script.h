@@ -24,6 +24,7 @@
 //   measure I J K | measure-clear    pick voxel (I, J, K) for measuring, as a click does (two: their distance)
 //   lit on|off, round on|off, disputed on|off, cut on|off, lod on|off   (no value: toggle)
 //   undo | redo | quit | cancel | export-size W H | about | controls | terms [TERM] | close-dialogs
+//   ortho [on|off] | section-zoom [Z [U V]]
 // The harness's own commands look, wait and write what the window shows; they change nothing a user edits:
 //   sweep AXIS [STEP]                the section action once per frame through every STEP-th index along AXIS, then
 //                                    print the frame rate (the section-slider benchmark)

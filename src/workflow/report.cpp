@@ -298,7 +298,7 @@ Result<std::string> buildReport(const VoxelGrid& grid, const ReportOptions& opti
                          options.min_wall > 0.0 ? int64_t(walls->regions.size()) : 0,
                          int64_t(run->hot_spots.size()),
                          int64_t(print->cavities.size()),
-                         parts ? int64_t(parts->size()) : 0,
+                         options.parts ? int64_t(options.parts->size()) : 0,
                          counts.interfering_pairs,
                          counts.contact_pairs};
   }

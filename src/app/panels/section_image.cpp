@@ -190,7 +190,7 @@ void drawSectionImage(AppState& state) {
   ImGui::SetCursorScreenPos(origin);
   const SectionWindow win(state.section, origin, size, iw, ih);
   ImGui::Image(textureId(state.section_texture.id()), size, win.uvMin(), win.uvMax());
-  ImGui::SetItemUsingMouseWheel();  // the wheel zooms the picture, not the panel
+  ImGui::SetItemUsingMouseWheel();  // (the picture's window scrolls with no wheel anyway: NoScrollWithMouse)
   markWidget("section_image");
   const bool hovered = ImGui::IsItemHovered();
   const bool clicked = ImGui::IsItemClicked(ImGuiMouseButton_Left);
