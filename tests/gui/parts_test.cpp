@@ -126,6 +126,9 @@ TEST(AppParts, aMeshSplitsIntoItsBodiesOnTheModelsLattice) {
   const double mid = (double(box.min[r] + box.max[r]) * 0.5 - parts.extent().min[r]) / axisLength(state, Axis(r));
   const double half = 0.5 / state.section.zoom;
   EXPECT_NEAR(state.section.centre.x, std::clamp(mid, half, 1.0 - half), 1e-9);
+  const int u = int(imageUpAxis(state.section.axis));  // up: the fraction from the picture's bottom
+  const double mid_up = (double(box.min[u] + box.max[u]) * 0.5 - parts.extent().min[u]) / axisLength(state, Axis(u));
+  EXPECT_NEAR(state.section.centre.y, std::clamp(mid_up, half, 1.0 - half), 1e-9);
 
   // Selecting another part leaves the pair: its banner and red overlap go (they stayed, naming parts not selected).
   ASSERT_TRUE(run(state, "select-part 3").ok());
