@@ -26,6 +26,7 @@
 #include "analysis/progress_gate.h"
 #include "vox/analysis/thickness.h"
 #include "vox/core/parallel.h"
+#include "vox/core/prefetch.h"
 
 namespace vox {
 namespace {
@@ -97,12 +98,7 @@ class LatticeCover {
   }
   // Asks for the table's row of balls of squared radius sc ahead of the tests that read it.
   void prefetch(int64_t sc) const {
-    if (sc > limit_) return;
-    // every cache line the row touches (7 or 8: 438 bytes from wherever the row starts in a line)
-    const auto first = reinterpret_cast<uintptr_t>(far_.data() + size_t(sc) * kClasses);
-    const uintptr_t last = first + kClasses * sizeof(int16_t) - 1;
-    for (uintptr_t line = first & ~uintptr_t(63); line <= last; line += 64)
-      __builtin_prefetch(reinterpret_cast<const void*>(line));
+    if (sc <= limit_) prefetchBytes(far_.data() + size_t(sc) * kClasses, kClasses * sizeof(int16_t));
   }
   int64_t limit() const { return limit_; }
   // The table's row of balls of squared radius sc <= limit(), by class, and its column of class k, by squared radius:
@@ -372,7 +368,7 @@ namespace {
 class CentreSearch {
  public:
   static constexpr int64_t kTile = 64;
-  static constexpr int64_t kAhead = 2;
+  static constexpr int64_t kAhead = prefetch_distance::kBallTableRows;
   using Step = RidgeOffsets::Step;
 
   CentreSearch(DistanceField& f, ProgressGate& gate, int threads)

@@ -9,6 +9,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "vox/core/prefetch.h"
+
 namespace vox {
 
 void Box3d::expand(const glm::dvec3& p) {
@@ -88,8 +90,8 @@ std::vector<uint32_t> weldCorners(const TriangleMesh& mesh, KeyFn&& key_of, int6
     }
   };
   // A large table misses the cache on nearly every lookup, so the keys and hashes of the next kAhead corners are
-  // computed ahead and their slots prefetched: the misses overlap instead of being waited for one by one.
-  constexpr size_t kAhead = 16;
+  // computed ahead and their slots prefetched.
+  constexpr size_t kAhead = prefetch_distance::kWeldCorners;
   std::array<Key, kAhead> ahead_key{};
   std::array<uint64_t, kAhead> ahead_hash{};
   auto prepare = [&](size_t c) {

@@ -213,7 +213,7 @@ void RayCaster::RowSweep::next(CrossingList& out) {
   if (row_ >= caster_.rows()) return;
   const size_t begin = caster_.row_start_[size_t(row_)], end = caster_.row_start_[size_t(row_) + 1];
   // The triangles of a row lie anywhere in the mesh: fetch a few ahead so their cache misses overlap.
-  constexpr size_t kAhead = 8;
+  constexpr size_t kAhead = prefetch_distance::kRowTriangles;
   for (size_t e = begin; e < std::min(end, begin + kAhead); ++e) caster_.prefetch(e);
   for (size_t e = begin; e < end; ++e) {
     if (e + kAhead < end) caster_.prefetch(e + kAhead);

@@ -14,6 +14,7 @@
 
 #include "vox/core/grid_placement.h"
 #include "vox/core/mesh.h"
+#include "vox/core/prefetch.h"
 
 namespace vox::voxelize_detail {
 
@@ -111,11 +112,7 @@ class RayCaster {
   // cross it.
   bool classify(size_t i, Tri& t) const;
   // Hints the cache to load the mesh triangle of entries_[e] (both lines it may straddle).
-  void prefetch(size_t e) const {
-    const char* p = reinterpret_cast<const char*>(&mesh_.triangles[entries_[e].triangle]);
-    __builtin_prefetch(p);
-    __builtin_prefetch(p + sizeof(Triangle) - 1);
-  }
+  void prefetch(size_t e) const { prefetchBytes(&mesh_.triangles[entries_[e].triangle], sizeof(Triangle)); }
 
   // A triangle's vertices in double and what its crossings need, set up once per sweep when it becomes active.
   struct Plane {

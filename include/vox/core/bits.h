@@ -1,5 +1,6 @@
 #pragma once
-// Bit counting shared by the modules that walk bit planes.
+// Bit counting and searching shared by the modules that walk bit planes.
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 
@@ -23,6 +24,19 @@ inline int64_t popcountWords(const uint64_t* w, int64_t n) {
   int64_t c = 0;
   for (int64_t i = 0; i < n; ++i) c += popcount64(w[i]);
   return c;
+}
+
+// First position in [from, end) whose bit equals `value` (end when none), in padded x.
+inline int64_t nextBit(const uint64_t* row, int64_t from, int64_t end, bool value) {
+  if (from >= end) return end;
+  int64_t w = from >> 6;
+  uint64_t bits = (value ? row[w] : ~row[w]) & (~uint64_t(0) << (from & 63));
+  while (!bits) {
+    ++w;
+    if (w * 64 >= end) return end;
+    bits = value ? row[w] : ~row[w];
+  }
+  return std::min(end, w * 64 + std::countr_zero(bits));
 }
 
 }  // namespace vox
