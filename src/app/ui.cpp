@@ -39,18 +39,18 @@ std::string formatLength(double value, const std::string& units) {
 std::string formatArea(double value, const std::string& units) { return formatLength(value, units) + "^2"; }
 std::string formatVolume(double value, const std::string& units) { return formatLength(value, units) + "^3"; }
 
-void heading(const char* title) {
+namespace {
+// A section's title, with a term's marker beside it when there is a term.
+void headingWith(const char* title, AppState* state, const char* term) {
   ImGui::Spacing();
   ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "%s", title);
+  if (state) termMarker(*state, term);
   ImGui::Separator();
 }
+}  // namespace
 
-void heading(const char* title, AppState& state, const char* term) {
-  ImGui::Spacing();
-  ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "%s", title);
-  termMarker(state, term);
-  ImGui::Separator();
-}
+void heading(const char* title) { headingWith(title, nullptr, nullptr); }
+void heading(const char* title, AppState& state, const char* term) { headingWith(title, &state, term); }
 
 void helpMarker(const char* text) {
   ImGui::SameLine();
