@@ -225,7 +225,12 @@ Status sectionZoom(AppState& s, const ActionArgs& a) {
     return badValues("section-zoom: U and V are voxels along the picture's right and up axes");
   }
   zoomSection(s, zoom, uv);
-  showPanel(s, Panel::kSection);
+  // The panels whose picture is the axis section (the Parts and Print panels show it, the Thickness panel coloured by
+  // thickness) keep it; another panel gives way to the Section panel's.
+  const Panel p = s.panel;
+  if (p != Panel::kSection && p != Panel::kThickness && p != Panel::kParts && p != Panel::kPrint) {
+    showPanel(s, Panel::kSection);
+  }
   return Ok{};
 }
 

@@ -1,8 +1,10 @@
 #include "app/measure.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "app/thickness.h"
 #include "vox/core/units.h"
 
 namespace vox::app {
@@ -21,6 +23,48 @@ const std::vector<glm::ivec3>& measurePicks(const AppState& state) {
   return state.measure.dims == state.model.dims() ? state.measure.picks : none;
 }
 
+namespace {
+
+// "  wall 2 mm (spheres)": the thickness the Thickness panel shows at voxel v; empty without one there.
+std::string wallAt(const AppState& state, const glm::ivec3& v, const std::string& units) {
+  const ThicknessResult* r = currentThickness(state);
+  if (!r) return {};
+  const RayThicknessResult* ray = shownRay(state, *r);
+  const double t = ray ? double(ray->field.at(v.x, v.y, v.z)) : r->thickness.model(v.x, v.y, v.z);
+  if (!(t > 0.0)) return {};
+  char buf[80];
+  std::snprintf(buf, sizeof buf, "  wall %.4g %s (%s)", t, units.c_str(), ray ? "rays" : "spheres");
+  return buf;
+}
+
+bool filledAt(const Image2D<uint8_t>& mask, int32_t u, int32_t row) {
+  return u >= 0 && row >= 0 && u < mask.width && row < mask.height && mask.at(u, row) != 0;
+}
+
+}  // namespace
+
+glm::ivec2 snapToEdge(const Image2D<uint8_t>& mask, int32_t u, int32_t row, double reach) {
+  const int32_t r = int32_t(std::floor(reach));
+  glm::ivec2 best(u, row);
+  double best_d = reach * reach + 1e-9;
+  bool found = false;
+  for (int32_t dv = -r; dv <= r; ++dv) {
+    for (int32_t du = -r; du <= r; ++du) {
+      const int32_t cu = u + du, cr = row + dv;
+      const double d = double(du) * du + double(dv) * dv;
+      if (d > best_d || (found && d == best_d) || !filledAt(mask, cu, cr)) continue;
+      if (filledAt(mask, cu - 1, cr) && filledAt(mask, cu + 1, cr) && filledAt(mask, cu, cr - 1) &&
+          filledAt(mask, cu, cr + 1)) {
+        continue;  // inside the material
+      }
+      best = glm::ivec2(cu, cr);
+      best_d = d;
+      found = true;
+    }
+  }
+  return best;
+}
+
 std::vector<std::string> measureLines(const AppState& state) {
   const std::vector<glm::ivec3>& picks = measurePicks(state);
   std::vector<std::string> lines;
@@ -32,7 +76,7 @@ std::vector<std::string> measureLines(const AppState& state) {
     const glm::dvec3 c = f.voxelCentre(v.x, v.y, v.z);
     std::snprintf(buf, sizeof buf, "%c  voxel (%d, %d, %d)  at (%.5g, %.5g, %.5g) %s", char('A' + i), v.x, v.y, v.z,
                   c.x, c.y, c.z, u.c_str());
-    lines.emplace_back(buf);
+    lines.emplace_back(std::string(buf) + wallAt(state, v, u));
   }
   if (picks.size() == 2) {
     const glm::dvec3 d = glm::dvec3(picks[1] - picks[0]) * f.voxel_size;

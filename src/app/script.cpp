@@ -18,7 +18,7 @@ struct Signature {
 };
 
 // The harness's own commands (script.h); every other command is an action of the table (actions.h).
-constexpr std::array<Signature, 12> kHarnessCommands = {{
+constexpr std::array<Signature, 13> kHarnessCommands = {{
     {"echo", 0, -1},
     {"sweep", 1, 2},
     {"screenshot", 1, -1},
@@ -26,6 +26,7 @@ constexpr std::array<Signature, 12> kHarnessCommands = {{
     {"wait", 1, 2},
     {"wait-file", 1, 2},
     {"hover", 1, 3},
+    {"click", 3, 3},
     {"press", 1, -1},
     {"type", 2, -1},
     {"press-all", 0, 0},

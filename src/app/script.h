@@ -38,6 +38,7 @@
 //   press WIDGET                     press a widget drawn last frame (a button, checkbox, list row, combo, ...) with
 //                                    the mouse as ImGui sees it: over it, down, up; then wait for the work it started.
 //                                    WIDGET is its label, with ImGui's hidden "##id" written "@id" ("Cancel@parts")
+//   click WIDGET FX FY               press at fractions FX, FY of a widget's width and height (a picture's point)
 //   type TEXT WIDGET                 click the field WIDGET, select all, type TEXT (one word) and press Enter
 //   press-all                        press every widget on screen, one after another (fields are given "2"), each
 //                                    found again before it is pressed; dialogs and error messages it raises are

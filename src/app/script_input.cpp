@@ -6,6 +6,7 @@
 
 #include "app/script_runner.h"
 #include "app/script_step.h"
+#include "vox/core/text.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -48,6 +49,25 @@ Step runPress(Context& c, bool typing) {
   if (h.input.active) return Step::kWait;
   if (Step w = waitSettled(c, 1); w != Step::kDone) return w;
   return h.failed ? Step::kFail : Step::kDone;
+}
+
+// click WIDGET FX FY: a press at fractions FX, FY of the widget's width and height (a point of a picture).
+Step runClick(Context& c) {
+  Harness& h = c.h;
+  if (!h.started) {
+    const auto& args = c.cmd.args;
+    float fx = 0.0f, fy = 0.0f;
+    if (args.size() != 3 || !parseNumber(args[1], fx) || !parseNumber(args[2], fy)) {
+      return c.fail("click takes WIDGET FX FY: a widget and fractions of its width and height");
+    }
+    const WidgetRect* w = findWidget(h, args[0]);
+    if (!w) return c.fail("no widget '" + args[0] + "' on screen");
+    startInput(h, *w, false, std::string());
+    h.input.x = w->x0 + (w->x1 - w->x0) * fx;
+    h.input.y = w->y0 + (w->y1 - w->y0) * fy;
+    return Step::kWait;
+  }
+  return runPress(c, false);  // the press under way, then the work it started
 }
 
 // press-all: one widget after another; what a press raises (an error message, a dialog, a file browser) is closed

@@ -14,6 +14,7 @@
 #include <GLFW/glfw3.h>
 
 #include "app/actions.h"
+#include "app/measure.h"
 #include "app/operations.h"
 #include "app/parts.h"
 #include "vox/core/text.h"
@@ -184,6 +185,7 @@ Step runHarnessCommand(Context& c) {
   if (name == "wait-file") return runWaitFile(c);
   if (name == "hover") return runHover(c);
   if (name == "press") return runPress(c, false);
+  if (name == "click") return runClick(c);
   if (name == "type") return runPress(c, true);
   if (name == "press-all") return runPressAll(c);
   if (name == "expect-error") {
@@ -296,6 +298,10 @@ std::string describeState(const AppState& s, const Harness& h) {
   out << "section_axis = " << axisName(s.section.axis) << "\n";
   out << "section_index = " << s.section.index << "\n";
   out << "section_length = " << axisLength(s, s.section.axis) << "\n";
+  out << "section_zoom = " << s.section.zoom << "\n";
+  out << "measure_picks =";
+  for (const glm::ivec3& v : measurePicks(s)) out << " " << v.x << "," << v.y << "," << v.z;
+  out << "\n";
   if (s.section_result && s.section_key.model_version == s.model_version) {
     out << "section_filled = " << s.section_result->filled << "\n";
   }

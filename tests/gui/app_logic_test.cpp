@@ -810,6 +810,42 @@ bool runScript(AppState& state, Harness& h, const std::string& text) {
   return !h.failed && !h.scriptRunning();
 }
 
+// The measure's probe: a pick in a plate 4 voxels (2 mm) thick reads the wall there once the Thickness panel has the
+// thickness (an axis-aligned plate of an even number of voxels reads exactly that many, docs/accuracy.md).
+TEST(AppMeasure, aPickReadsTheWallThicknessOnceTheThicknessPanelHasIt) {
+  test::TempDir dir;
+  VoxelGrid plate(Dims{24, 24, 4},
+                  GridFrame{.origin = glm::dvec3(0.0), .voxel_size = 0.5, .units = "mm", .source = ""});
+  for (int32_t z = 0; z < 4; ++z) {
+    for (int32_t y = 0; y < 24; ++y) plate.fillRun(y, z, 0, 24);
+  }
+  ASSERT_TRUE(io::saveVxm(plate, dir / "plate.vxm").ok());
+  AppState state;
+  Harness h;
+  ASSERT_TRUE(runScript(state, h, "open " + (dir / "plate.vxm").string() + "\nmeasure 12 12 1\n")) << h.last_error;
+  ASSERT_EQ(measureLines(state).size(), 1u);
+  EXPECT_EQ(measureLines(state)[0], "A  voxel (12, 12, 1)  at (6.25, 6.25, 0.75) mm");  // no thickness yet
+  Harness h2;
+  ASSERT_TRUE(runScript(state, h2, "panel-thickness\n")) << h2.last_error;
+  ASSERT_NE(currentThickness(state), nullptr);
+  EXPECT_EQ(measureLines(state)[0], "A  voxel (12, 12, 1)  at (6.25, 6.25, 0.75) mm  wall 2 mm (spheres)");
+}
+
+// A click in a section snaps to the material's edge: the nearest filled cell with an empty neighbour within reach,
+// else the cell clicked.
+TEST(AppMeasure, aSectionClickSnapsToTheNearestEdgeCellWithinReach) {
+  Image2D<uint8_t> mask(10, 10, 0);  // a band of columns 3 to 6, every row
+  for (int32_t row = 0; row < 10; ++row) {
+    for (int32_t u = 3; u <= 6; ++u) mask.at(u, row) = 1;
+  }
+  EXPECT_EQ(snapToEdge(mask, 1, 5, 3.0), glm::ivec2(3, 5));  // empty, two cells left of the band's left face
+  EXPECT_EQ(snapToEdge(mask, 4, 5, 3.0), glm::ivec2(3, 5));  // inside: the nearer face, one cell away
+  EXPECT_EQ(snapToEdge(mask, 6, 5, 3.0), glm::ivec2(6, 5));  // on the right face already
+  EXPECT_EQ(snapToEdge(mask, 9, 5, 2.0), glm::ivec2(9, 5));  // the face three cells away: out of reach
+  EXPECT_EQ(snapToEdge(mask, 1, 5, 0.0), glm::ivec2(1, 5));  // no reach: the cell clicked
+  EXPECT_EQ(snapToEdge(mask, 4, 0, 3.0), glm::ivec2(4, 0));  // the picture's edge is the material's edge too
+}
+
 TEST(AppScriptRun, commandsReachTheDocumentThroughTheActions) {
   test::TempDir dir;
   ASSERT_TRUE(io::saveVxm(block(), dir / "block.vxm").ok());

@@ -9,7 +9,8 @@
 #   - the Print panel finds a sealed void, turns the build direction, searches the directions and waits for a face
 #     to be clicked when its buttons are pressed;
 #   - the Casting panel asks for units, simulates, places a feeder on the part's top and simulates with it;
-#   - every button, field, toggle, list row and combo of every panel is pressed and the window goes on.
+#   - every button, field, toggle, list row and combo of every panel is pressed and the window goes on;
+#   - clicks in the Thickness panel's picture pick voxels to measure, snapped to the material's edge.
 #
 #   press_test.sh VOXMOD SOURCE_DIR OUT_DIR
 #
@@ -32,6 +33,14 @@ if ! xvfb-run -a -s "-screen 0 1400x900x24" "$voxmod" --size 1280x800 --script "
     >"$out/voxmod.log" 2>&1; then
   echo "FAIL: voxmod did not finish the script" >&2
   tail -n 40 "$out/voxmod.log" >&2
+  exit 1
+fi
+
+sed -e "s|@SRC@|$src|g" -e "s|@OUT@|$out|g" "$src/tests/gui/measure.script" >"$out/measure.script"
+if ! xvfb-run -a -s "-screen 0 1400x900x24" "$voxmod" --size 1280x800 --script "$out/measure.script" \
+    >"$out/measure.log" 2>&1; then
+  echo "FAIL: voxmod did not finish the measuring script" >&2
+  tail -n 40 "$out/measure.log" >&2
   exit 1
 fi
 
@@ -99,6 +108,12 @@ expect view_cube.txt view_yaw 0
 expect view_cube.txt view_pitch 0
 expect view_cube.txt view_projection perspective
 expect view_ortho.txt view_projection orthographic
+expect thickness_zoom.txt section_zoom 2
+expect thickness_zoom.txt panel thickness
+# Clicks in the thickness picture: column 1 snapped to the cube's edge voxel, column 20 as it is; both in row 19
+# (the picture's middle row, counted from the top of 40: up index 19), at the section z = 20.
+expect measure.txt section_length 40
+expect measure.txt measure_picks "0,19,20 20,19,20"
 
 # The "(?)" beside the casting's modulus opened Help > Terms at "Modulus", every term listed.
 expect terms.txt help_term modulus

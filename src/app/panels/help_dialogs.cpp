@@ -30,6 +30,7 @@ void drawControlsDialog(AppState& state) {
       {"Ctrl+click in the 3D view", "pick a voxel to measure (two: their distance)"},
       {"Click in the section image", "pick a voxel to measure"},
       {"Hover the section or X-ray image", "read the voxel or ray under the cursor"},
+      {"Wheel, right drag over the section or thickness image", "zoom about the cursor, pan"},
   };
   const auto row = [](const char* what, const std::string& does) {  // unwrapped: the window sizes itself to fit
     ImGui::TableNextRow();

@@ -1,13 +1,17 @@
 // The section image while the Thickness panel is open: the section (Section panel's axis and index) coloured by
-// local thickness, red under the minimum wall, with a colour bar and the thickness under the mouse.
+// local thickness, red under the minimum wall, with a colour bar and the thickness under the mouse; zoomed and panned
+// with the Section panel's picture (section-zoom).
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include <imgui.h>
+#include <imgui_internal.h>  // SetItemUsingMouseWheel
 
+#include "app/measure.h"
 #include "app/operations.h"
 #include "app/panels/panels.h"
+#include "app/panels/section_window.h"
 #include "app/thickness_view.h"
 #include "app/ui.h"
 #include "vox/analysis/thickness_map.h"
@@ -66,7 +70,7 @@ void drawThicknessImage(AppState& state) {
     ImGui::TextUnformatted("Computing thickness...");
     return;
   }
-  currentSection(state);  // clamps the index to the model
+  const Section* section = currentSection(state);  // clamps the index to the model
   int32_t iw = 0, ih = 0;
   if (!uploadThicknessSection(state, *r, iw, ih) || iw <= 0 || ih <= 0) {
     ImGui::TextUnformatted("No section.");
@@ -76,6 +80,7 @@ void drawThicknessImage(AppState& state) {
   const std::string units = state.model.frame().units;
   ImGui::Text("%s in the section %s = %d (Section panel's slider)",
               shownRay(state, *r) ? "Ray thickness" : "Local thickness (spheres)", axisName(axis), state.section.index);
+  zoomButtons(state, "thickness");
   const ImageAxes ax = imageAxes(axis);
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float bar_room = 230.0f;  // the colour bar and its labels ("min wall 0.125 model units")
@@ -88,23 +93,27 @@ void drawThicknessImage(AppState& state) {
   ImGui::Text("%s ^", axisName(Axis(ax.up)));
   const ImVec2 origin(ImGui::GetCursorScreenPos().x + 20.0f, ImGui::GetCursorScreenPos().y);
   ImGui::SetCursorScreenPos(origin);
-  ImGui::Image(textureId(state.thickness_ui.image_texture.id()), size);
+  const SectionWindow win(state.section, origin, size, iw, ih);
+  ImGui::Image(textureId(state.thickness_ui.image_texture.id()), size, win.uvMin(), win.uvMax());
+  ImGui::SetItemUsingMouseWheel();  // (the picture's window scrolls with no wheel anyway: NoScrollWithMouse)
   markWidget("thickness_image");
   const bool hovered = ImGui::IsItemHovered();
+  const bool clicked = ImGui::IsItemClicked(ImGuiMouseButton_Left);
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const float bar_h = std::max(size.y, 6.0f * line);
   drawThicknessBar(dl, ImVec2(origin.x + size.x + 16.0f, origin.y), bar_h, r->thickness.stats.max, minWall(state),
                    units);
   ImGui::SetCursorScreenPos(ImVec2(origin.x + size.x - 40.0f, origin.y + size.y + 2.0f));
   ImGui::Text("%s >", axisName(Axis(ax.right)));
-  drawScaleBar(ImVec2(origin.x, origin.y + size.y + 2.0f + line), scale / float(state.model.voxelSize()), units,
+  drawScaleBar(ImVec2(origin.x, origin.y + size.y + 2.0f + line), win.px / float(state.model.voxelSize()), units,
                std::max(size.x * 0.5f, 60.0f));
   ImGui::Dummy(ImVec2(0.0f, std::max(0.0f, bar_h - size.y) + line));
   // The place clicked in the panel's lists, where the section cuts it: the thin-wall region's box, the hot spot's
   // inscribed ball.
   auto screen = [&](double right, double up) {  // voxel coordinates in the image's plane (corners)
-    return ImVec2(origin.x + float(right) * scale, origin.y + float(double(ih) - up) * scale);
+    return win.screenOf(right, double(ih) - up);
   };
+  dl->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);  // the marks of a zoomed picture
   auto mark = [&](auto&& draw) {
     draw(IM_COL32(0, 0, 0, 255), 4.0f);
     draw(IM_COL32(255, 255, 255, 255), 2.0f);
@@ -122,23 +131,28 @@ void drawThicknessImage(AppState& state) {
     const double rv = spot->radius / state.model.voxelSize(), off = double(state.section.index - spot->voxel[a]);
     if (std::abs(off) < rv) {
       const ImVec2 c = screen(spot->voxel[ax.right] + 0.5, spot->voxel[ax.up] + 0.5);
-      const float radius = std::max(6.0f, float(std::sqrt(rv * rv - off * off)) * scale);
+      const float radius = std::max(6.0f, float(std::sqrt(rv * rv - off * off)) * win.px);
       mark([&](ImU32 col, float t) { dl->AddCircle(c, radius, col, 0, t); });
     }
   }
+  dl->PopClipRect();
+  drawMeasurePicks(state, axis, state.section.index, win);
   if (!hovered) return;
-  const ImVec2 m = ImGui::GetIO().MousePos;
-  const int32_t u = std::clamp(int32_t((m.x - origin.x) / scale), 0, iw - 1);
-  const int32_t row = std::clamp(int32_t((m.y - origin.y) / scale), 0, ih - 1);
+  const glm::dvec2 at = win.cellAt(ImGui::GetIO().MousePos);
+  glm::ivec2 picked(std::clamp(int32_t(std::floor(at.x)), 0, iw - 1), std::clamp(int32_t(std::floor(at.y)), 0, ih - 1));
+  if (section && section->mask.width == iw && section->mask.height == ih) picked = pickedCell(*section, win);
+  const int32_t u = picked.x, row = picked.y;
   int32_t voxel[3];
   voxel[int(axis)] = state.section.index;
   voxel[ax.right] = u;
   voxel[ax.up] = ih - 1 - row;  // row 0 holds the largest "up" index
-  const ImVec2 cell(origin.x + float(u) * scale, origin.y + float(row) * scale);
-  markCell(origin, ImVec2(origin.x + size.x, origin.y + size.y), cell, ImVec2(cell.x + scale, cell.y + scale));
+  const ImVec2 cell = win.screenOf(u, row);
+  markCell(origin, ImVec2(origin.x + size.x, origin.y + size.y), cell, ImVec2(cell.x + win.px, cell.y + win.px));
   const double t = r->thickness.model(voxel[0], voxel[1], voxel[2]);
-  ImGui::SetTooltip("voxel (%d, %d, %d): %s", voxel[0], voxel[1], voxel[2],
+  ImGui::SetTooltip("voxel (%d, %d, %d): %s\nclick to measure (at the edge; Alt: as is)", voxel[0], voxel[1], voxel[2],
                     t > 0.0 ? ("thickness " + formatLength(t, units)).c_str() : "empty");
+  if (clicked && !ImGui::GetIO().KeyShift) addMeasurePick(state, glm::ivec3(voxel[0], voxel[1], voxel[2]));
+  zoomAndPan(state, win);
 }
 
 }  // namespace vox::app
