@@ -9,7 +9,8 @@ usage: bench/tables.py [--build DIR] [--shared DIR] [--runs N] [--write] [TABLE 
   --runs     runs of each CLI command; the table gives the median (default 3).
   --write    replaces, in docs/performance.md, each table's "Command:" paragraph and its table (the lines from the
              heading to the table's last row) with the ones measured; the notes after the table stay as written.
-             Without it the sections are printed.
+             Only for the tables whose sections have the script's layout (WRITABLE); without it the sections are
+             printed, to be merged by hand.
 
 Each section says its command, this machine (CPU model, cores, memory) and the date. Google Benchmark programs run
 with --benchmark_format=json; CLI commands with --json, under /usr/bin/time for wall time and peak memory. Nothing
@@ -21,7 +22,6 @@ import json
 import os
 import re
 import shutil
-import statistics
 import subprocess
 import sys
 import tempfile
@@ -50,8 +50,8 @@ class Bench:
         out = subprocess.run(cmd + list(extra), env={**os.environ, **(env or {})}, check=True, capture_output=True,
                              text=True).stdout
         runs = json.loads(out)["benchmarks"]
-        medians = {r["run_name"]: r for r in runs if r.get("aggregate_name") == "median"}
-        return medians or {r["name"]: r for r in runs if r.get("run_type", "iteration") == "iteration"}
+        medians = {plain(r["run_name"]): r for r in runs if r.get("aggregate_name") == "median"}
+        return medians or {plain(r["name"]): r for r in runs if r.get("run_type", "iteration") == "iteration"}
 
     def cli(self, args):
         """The median over the runs of a voxmod command with --json: (JSON of the median run, wall s, peak MiB)."""
@@ -65,14 +65,12 @@ class Bench:
         results.sort(key=lambda r: r[1])
         return results[len(results) // 2]
 
-    def timed(self, cmd):
-        """The median wall seconds of a shell command over the runs."""
-        times = []
-        for _ in range(self.runs):
-            start = datetime.datetime.now()
-            subprocess.run(cmd, shell=True, check=True, capture_output=True)
-            times.append((datetime.datetime.now() - start).total_seconds())
-        return statistics.median(times)
+
+
+def plain(name):
+    """A benchmark's name as registered: without the suffixes Google Benchmark adds (iterations:3, real_time, ...)."""
+    return re.sub(r"/(iterations:\d+|repeats:\d+|threads:\d+|min_time:[\d.]+|process_time|real_time|manual_time)",
+                  "", name)
 
 
 def machine():
@@ -265,6 +263,10 @@ def render_table(b):
             table(["case", ">wall", ">process CPU", ">points"], rows))
 
 
+# The tables whose sections in docs/performance.md have the layout the script writes (--write replaces only these;
+# the others' sections carry more: rows of other tools, targets, a second machine, and are merged by hand).
+WRITABLE = {"casting"}
+
 TABLES = {"voxelize": voxelize_table, "batch": batch_table, "assemblies": assemblies_table, "io": io_table,
           "analysis": analysis_table, "distance": distance_table, "printability": printability_table,
           "casting": casting_table, "surface": export_tables, "render": render_table}
@@ -310,6 +312,10 @@ def main():
     unknown = [t for t in args.tables if t not in TABLES]
     if unknown:
         raise SystemExit(f"bench/tables.py: no table {', '.join(unknown)} (there are {', '.join(TABLES)})")
+    unwritable = [t for t in args.tables or list(TABLES) if t not in WRITABLE]
+    if args.write and unwritable:
+        raise SystemExit(f"bench/tables.py: --write replaces only {', '.join(sorted(WRITABLE))}: the sections of "
+                         f"{', '.join(unwritable)} hold more than the script measures; print them and merge by hand")
     b = Bench(os.path.join(ROOT, args.build), args.shared, args.runs)
     stamp = f" Measured on {machine()}, {datetime.date.today().isoformat()}."
     doc = open(DOC).read().split("\n")

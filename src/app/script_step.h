@@ -29,8 +29,9 @@ Step waitSettled(Context& c, int frames);
 
 // press WIDGET, or (typing) type TEXT WIDGET: the input over the next frames, then the work it started.
 Step runPress(Context& c, bool typing);
+// click WIDGET FX FY: a press at a point of the widget (script.h).
+Step runClick(Context& c);
 // press-all: every widget on screen pressed one after another (script.h).
-Step runClick(Context& c);  // click WIDGET FX FY
 Step runPressAll(Context& c);
 
 }  // namespace vox::app

@@ -99,7 +99,7 @@ std::vector<uint32_t> weldCorners(const TriangleMesh& mesh, KeyFn&& key_of, int6
     const uint64_t h = hashKey(k);
     ahead_key[c % kAhead] = k;
     ahead_hash[c % kAhead] = h;
-    __builtin_prefetch(&table[size_t(h) & (table.size() - 1)]);
+    prefetchBytes(&table[size_t(h) & (table.size() - 1)], 1);  // the slot's line
   };
   for (size_t c = 0; c < std::min(corners, kAhead); ++c) prepare(c);
   for (size_t c = 0; c < corners; ++c) {

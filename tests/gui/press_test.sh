@@ -110,8 +110,8 @@ expect view_cube.txt view_projection perspective
 expect view_ortho.txt view_projection orthographic
 expect thickness_zoom.txt section_zoom 2
 expect thickness_zoom.txt panel thickness
-# Clicks in the thickness picture: column 1 snapped to the cube's edge voxel, column 20 as it is; both in row 19
-# (the picture's middle row, counted from the top of 40: up index 19), at the section z = 20.
+# Clicks in the thickness picture: column 1 snapped to the cube's edge voxel, column 20 as it is; both in row 20
+# from the top of 40 (up index 19), at the section z = 20.
 expect measure.txt section_length 40
 expect measure.txt measure_picks "0,19,20 20,19,20"
 

@@ -28,7 +28,7 @@ void drawControlsDialog(AppState& state) {
       {"Wheel", "zoom"},
       {"Double-click", "fit the model in the view"},
       {"Ctrl+click in the 3D view", "pick a voxel to measure (two: their distance)"},
-      {"Click in the section image", "pick a voxel to measure"},
+      {"Click in the section or thickness image", "pick a voxel to measure (snapped to the edge; Alt: as is)"},
       {"Hover the section or X-ray image", "read the voxel or ray under the cursor"},
       {"Wheel, right drag over the section or thickness image", "zoom about the cursor, pan"},
   };

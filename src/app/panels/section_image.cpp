@@ -65,24 +65,19 @@ static void drawObliqueImage(AppState& state) {
 
 namespace {
 
-// The voxel under the mouse (snapped to the material's edge): outlined, read out, and picked to measure on a click.
+// The voxel under the mouse: outlined and read out; a click picks it to measure, snapped to the material's edge.
 void hoverReadout(AppState& state, const Section& section, const SectionWindow& win, bool clicked) {
-  const ImageAxes ax = imageAxes(section.axis);
-  const glm::ivec2 cell_at = pickedCell(section, win);
-  const int32_t u = cell_at.x, row = cell_at.y;
-  int32_t voxel[3];
-  voxel[int(section.axis)] = section.index;
-  voxel[ax.right] = u;
-  voxel[ax.up] = win.ih - 1 - row;  // row 0 holds the largest "up" index
+  const glm::ivec2 at = cellUnderMouse(win);
+  const glm::ivec3 voxel = sectionVoxel(section.axis, section.index, win, at);
   const std::string units = state.model.frame().units;
-  const glm::dvec3 c = state.model.frame().voxelCentre(voxel[0], voxel[1], voxel[2]);
-  const ImVec2 cell = win.screenOf(u, row);
+  const glm::dvec3 c = state.model.frame().voxelCentre(voxel.x, voxel.y, voxel.z);
+  const ImVec2 cell = win.screenOf(at.x, at.y);
   markCell(win.origin, ImVec2(win.origin.x + win.size.x, win.origin.y + win.size.y), cell,
            ImVec2(cell.x + win.px, cell.y + win.px));
-  ImGui::SetTooltip("voxel (%d, %d, %d): %s\ncentre (%.4g, %.4g, %.4g) %s\nclick to measure (at the edge; Alt: as is)",
-                    voxel[0], voxel[1], voxel[2], section.mask.at(u, row) ? "material" : "empty", c.x, c.y, c.z,
-                    units == "model" ? "model units" : units.c_str());
-  if (clicked && !ImGui::GetIO().KeyShift) addMeasurePick(state, glm::ivec3(voxel[0], voxel[1], voxel[2]));
+  ImGui::SetTooltip("voxel (%d, %d, %d): %s\ncentre (%.4g, %.4g, %.4g) %s\n%s", voxel.x, voxel.y, voxel.z,
+                    section.mask.at(at.x, at.y) ? "material" : "empty", c.x, c.y, c.z,
+                    units == "model" ? "model units" : units.c_str(), kClickToMeasure);
+  pickOnClick(state, section, win, clicked);
 }
 
 }  // namespace

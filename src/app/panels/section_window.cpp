@@ -43,12 +43,32 @@ void zoomAndPan(AppState& state, const SectionWindow& win) {
       {std::to_string(zoom), std::to_string(centre.x * win.iw - 0.5), std::to_string(centre.y * win.ih - 0.5)});
 }
 
-glm::ivec2 pickedCell(const Section& section, const SectionWindow& win) {
+glm::ivec2 cellUnderMouse(const SectionWindow& win) {
   const glm::dvec2 at = win.cellAt(ImGui::GetIO().MousePos);
-  const int32_t u = std::clamp(int32_t(std::floor(at.x)), 0, win.iw - 1);
-  const int32_t row = std::clamp(int32_t(std::floor(at.y)), 0, win.ih - 1);
-  if (ImGui::GetIO().KeyAlt) return {u, row};
-  return snapToEdge(section.mask, u, row, kSnapPixels / double(win.px));
+  return {std::clamp(int32_t(std::floor(at.x)), 0, win.iw - 1), std::clamp(int32_t(std::floor(at.y)), 0, win.ih - 1)};
+}
+
+glm::ivec3 sectionVoxel(Axis axis, int32_t index, const SectionWindow& win, glm::ivec2 cell) {
+  const ImageAxes ax = imageAxes(axis);
+  glm::ivec3 v(0);
+  v[int(axis)] = index;
+  v[ax.right] = cell.x;
+  v[ax.up] = win.ih - 1 - cell.y;
+  return v;
+}
+
+void pickOnClick(AppState& state, const Section& section, const SectionWindow& win, bool clicked) {
+  const glm::ivec2 under = cellUnderMouse(win);
+  const glm::ivec2 snapped =
+      ImGui::GetIO().KeyAlt ? under : snapToEdge(section.mask, under.x, under.y, kSnapPixels / double(win.px));
+  if (snapped != under) {  // where a click would pick: a yellow square on the edge voxel
+    const ImVec2 p = win.screenOf(snapped.x, snapped.y);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddRect(p, ImVec2(p.x + win.px, p.y + win.px), IM_COL32(0, 0, 0, 255), 0.0f, 0, 3.0f);
+    dl->AddRect(p, ImVec2(p.x + win.px, p.y + win.px), IM_COL32(255, 220, 60, 255), 0.0f, 0, 1.5f);
+  }
+  if (clicked && !ImGui::GetIO().KeyShift)
+    addMeasurePick(state, sectionVoxel(section.axis, section.index, win, snapped));
 }
 
 void drawMeasurePicks(const AppState& state, Axis axis, int32_t index, const SectionWindow& win) {

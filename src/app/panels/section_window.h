@@ -36,10 +36,16 @@ struct SectionWindow {
 // While the mouse is over the picture `win`: the wheel zooms about the point under the mouse; the right or middle
 // button (or Shift and the left) drags the picture. Both dispatch section-zoom, as a script would.
 void zoomAndPan(AppState& state, const SectionWindow& win);
-// The cell (column, row from the top) of an axis section's picture under the mouse that a click picks to measure:
-// snapped to the material's edge within kSnapPixels of the mouse (snapToEdge), or as it is while Alt is held.
+// The cell (column, row from the top) of the picture under the mouse, kept within the picture.
+glm::ivec2 cellUnderMouse(const SectionWindow& win);
+// The voxel of the section (axis, index) at a cell of its picture (row 0 holds the largest "up" index).
+glm::ivec3 sectionVoxel(Axis axis, int32_t index, const SectionWindow& win, glm::ivec2 cell);
+// Measuring by clicking the picture of `section`: the cell under the mouse snapped to the material's edge (snapToEdge,
+// within kSnapPixels of the mouse), or as it is while Alt is held. The cell it snaps to is marked while it is another
+// than the one under the mouse; a click (without Shift, which pans) picks it.
 inline constexpr double kSnapPixels = 10.0;
-glm::ivec2 pickedCell(const Section& section, const SectionWindow& win);
+inline constexpr const char* kClickToMeasure = "click to measure (at the edge, marked; Alt: this voxel)";
+void pickOnClick(AppState& state, const Section& section, const SectionWindow& win, bool clicked);
 // The voxels picked to measure that lie in the section (axis, index) shown by `win`: a ring and its letter each (the
 // 3D view says what they measure).
 void drawMeasurePicks(const AppState& state, Axis axis, int32_t index, const SectionWindow& win);

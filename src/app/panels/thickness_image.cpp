@@ -138,20 +138,15 @@ void drawThicknessImage(AppState& state) {
   dl->PopClipRect();
   drawMeasurePicks(state, axis, state.section.index, win);
   if (!hovered) return;
-  const glm::dvec2 at = win.cellAt(ImGui::GetIO().MousePos);
-  glm::ivec2 picked(std::clamp(int32_t(std::floor(at.x)), 0, iw - 1), std::clamp(int32_t(std::floor(at.y)), 0, ih - 1));
-  if (section && section->mask.width == iw && section->mask.height == ih) picked = pickedCell(*section, win);
-  const int32_t u = picked.x, row = picked.y;
-  int32_t voxel[3];
-  voxel[int(axis)] = state.section.index;
-  voxel[ax.right] = u;
-  voxel[ax.up] = ih - 1 - row;  // row 0 holds the largest "up" index
-  const ImVec2 cell = win.screenOf(u, row);
+  const glm::ivec2 at = cellUnderMouse(win);
+  const glm::ivec3 v = sectionVoxel(axis, state.section.index, win, at);
+  const ImVec2 cell = win.screenOf(at.x, at.y);
   markCell(origin, ImVec2(origin.x + size.x, origin.y + size.y), cell, ImVec2(cell.x + win.px, cell.y + win.px));
-  const double t = r->thickness.model(voxel[0], voxel[1], voxel[2]);
-  ImGui::SetTooltip("voxel (%d, %d, %d): %s\nclick to measure (at the edge; Alt: as is)", voxel[0], voxel[1], voxel[2],
-                    t > 0.0 ? ("thickness " + formatLength(t, units)).c_str() : "empty");
-  if (clicked && !ImGui::GetIO().KeyShift) addMeasurePick(state, glm::ivec3(voxel[0], voxel[1], voxel[2]));
+  const RayThicknessResult* ray = shownRay(state, *r);  // the thickness the picture shows
+  const double t = ray ? double(ray->field.at(v.x, v.y, v.z)) : r->thickness.model(v.x, v.y, v.z);
+  ImGui::SetTooltip("voxel (%d, %d, %d): %s\n%s", v.x, v.y, v.z,
+                    t > 0.0 ? ("thickness " + formatLength(t, units)).c_str() : "empty", kClickToMeasure);
+  if (section && section->mask.width == iw && section->mask.height == ih) pickOnClick(state, *section, win, clicked);
   zoomAndPan(state, win);
 }
 
