@@ -29,11 +29,10 @@ namespace {
 std::string wallAt(const AppState& state, const glm::ivec3& v, const std::string& units) {
   const ThicknessResult* r = currentThickness(state);
   if (!r) return {};
-  const RayThicknessResult* ray = shownRay(state, *r);
-  const double t = ray ? double(ray->field.at(v.x, v.y, v.z)) : r->thickness.model(v.x, v.y, v.z);
+  const double t = shownThickness(state, *r, v);
   if (!(t > 0.0)) return {};
   char buf[80];
-  std::snprintf(buf, sizeof buf, "  wall %.4g %s (%s)", t, units.c_str(), ray ? "rays" : "spheres");
+  std::snprintf(buf, sizeof buf, "  wall %.4g %s (%s)", t, units.c_str(), shownRay(state, *r) ? "rays" : "spheres");
   return buf;
 }
 

@@ -81,6 +81,11 @@ const RayThicknessResult* shownRay(const AppState& state, const ThicknessResult&
   return rays && *rays ? rays->get() : nullptr;
 }
 
+double shownThickness(const AppState& state, const ThicknessResult& r, const glm::ivec3& v) {
+  const RayThicknessResult* ray = shownRay(state, r);
+  return ray ? double(ray->field.at(v.x, v.y, v.z)) : r.thickness.model(v.x, v.y, v.z);
+}
+
 void requestRays(AppState& state) {
   state.rays.poll();
   const ThicknessResult* r = currentThickness(state);

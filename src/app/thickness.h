@@ -32,6 +32,9 @@ const Walls* currentThinWalls(AppState& state);
 std::shared_ptr<const MeshSource> rayMesh(const AppState& state);
 // The ray thickness the views show: when the panel's method is ray and the rays of `r` are cast; else null.
 const RayThicknessResult* shownRay(const AppState& state, const ThicknessResult& r);
+// The thickness the views show at voxel v of the model (model units; 0 where none): the rays' when shownRay, else
+// the local thickness by spheres.
+double shownThickness(const AppState& state, const ThicknessResult& r, const glm::ivec3& v);
 // Each frame (updateDocument): casts the rays of the thickness shown, in the background, while the Thickness panel
 // shows rays and the model is its mesh's voxelization (a job of its own: switching to rays never recomputes the
 // distance or the local thickness, and switching back keeps them).

@@ -46,7 +46,7 @@ void hoverReadout(const AppState& state, const ThicknessResult& r, ImDrawList* d
   const std::string units = state.model.frame().units;
   char line[160];
   const RayThicknessResult* ray = shownRay(state, r);
-  const double t = ray ? double(ray->field.at(v->x, v->y, v->z)) : r.thickness.model(v->x, v->y, v->z);
+  const double t = shownThickness(state, r, *v);
   std::snprintf(line, sizeof line, "%s %s at voxel (%d, %d, %d)", ray ? "Ray thickness" : "Thickness",
                 ray && t <= 0.0 ? "(no wall facing back)" : formatLength(t, units).c_str(), v->x, v->y, v->z);
   const float lh = ImGui::GetTextLineHeightWithSpacing();

@@ -27,22 +27,17 @@ if ! command -v xvfb-run >/dev/null 2>&1; then
 fi
 rm -rf "$out"
 mkdir -p "$out"
-sed -e "s|@SRC@|$src|g" -e "s|@OUT@|$out|g" "$src/tests/gui/press.script" >"$out/press.script"
-
-if ! xvfb-run -a -s "-screen 0 1400x900x24" "$voxmod" --size 1280x800 --script "$out/press.script" \
-    >"$out/voxmod.log" 2>&1; then
-  echo "FAIL: voxmod did not finish the script" >&2
-  tail -n 40 "$out/voxmod.log" >&2
-  exit 1
-fi
-
-sed -e "s|@SRC@|$src|g" -e "s|@OUT@|$out|g" "$src/tests/gui/measure.script" >"$out/measure.script"
-if ! xvfb-run -a -s "-screen 0 1400x900x24" "$voxmod" --size 1280x800 --script "$out/measure.script" \
-    >"$out/measure.log" 2>&1; then
-  echo "FAIL: voxmod did not finish the measuring script" >&2
-  tail -n 40 "$out/measure.log" >&2
-  exit 1
-fi
+# run_script NAME LOG: tests/gui/NAME.script with @SRC@ and @OUT@ filled in, its output in OUT/LOG.
+run_script() {
+  sed -e "s|@SRC@|$src|g" -e "s|@OUT@|$out|g" "$src/tests/gui/$1.script" >"$out/$1.script"
+  if ! xvfb-run -a -s "-screen 0 1400x900x24" "$voxmod" --size 1280x800 --script "$out/$1.script" >"$out/$2" 2>&1; then
+    echo "FAIL: voxmod did not finish $1.script" >&2
+    tail -n 40 "$out/$2" >&2
+    exit 1
+  fi
+}
+run_script press voxmod.log
+run_script measure measure.log
 
 checks=0
 fail() {

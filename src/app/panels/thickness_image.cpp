@@ -142,8 +142,7 @@ void drawThicknessImage(AppState& state) {
   const glm::ivec3 v = sectionVoxel(axis, state.section.index, win, at);
   const ImVec2 cell = win.screenOf(at.x, at.y);
   markCell(origin, ImVec2(origin.x + size.x, origin.y + size.y), cell, ImVec2(cell.x + win.px, cell.y + win.px));
-  const RayThicknessResult* ray = shownRay(state, *r);  // the thickness the picture shows
-  const double t = ray ? double(ray->field.at(v.x, v.y, v.z)) : r->thickness.model(v.x, v.y, v.z);
+  const double t = shownThickness(state, *r, v);  // the thickness the picture shows
   ImGui::SetTooltip("voxel (%d, %d, %d): %s\n%s", v.x, v.y, v.z,
                     t > 0.0 ? ("thickness " + formatLength(t, units)).c_str() : "empty", kClickToMeasure);
   if (section && section->mask.width == iw && section->mask.height == ih) pickOnClick(state, *section, win, clicked);
