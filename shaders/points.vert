@@ -14,9 +14,12 @@ uniform vec3 u_material;        // colour of an intensity-1 surface point
 uniform vec3 u_cut_colour;      // colour of the section (cut-face) points, already shaded
 uniform float u_point_scale;    // point size in pixels times clip w: diameter_px = u_point_scale / w
 uniform float u_fixed_size;     // > 0: use this point size in pixels instead
-uniform int u_section_axis;     // -1: no section; 0, 1, 2: cut perpendicular to X, Y, Z
-uniform int u_section_index;    // the section plane, in point coordinates (voxel index / u_scale)
-uniform bool u_section_keep_below;  // keep coordinates < index (true) or > index (false)
+// The section (vox::render::SectionPlane, in point coordinates): a point whose centre c has
+// s = dot(normal, c) - offset below -half is below the plane's slab, at half or more above it.
+uniform bool u_section_on;
+uniform vec4 u_section_plane;       // normal, offset
+uniform float u_section_half;
+uniform bool u_section_keep_below;  // keep the points below the slab (true) or above it (false)
 // Colour by a scalar volume (PointRenderer::setScalarVolume): GL_R8 texels over a box of voxels, 0 = no value,
 // 1..255 = 0..1 along the ramp; values under u_scalar_threshold (0..1) are red.
 uniform bool u_scalar_on;
@@ -61,9 +64,11 @@ vec3 scalarColour(vec3 shaded_material, float intensity) {
 
 void main() {
   bool cut = (a_code_flags.y & kFlagCut) != 0u;
-  if (u_section_axis >= 0 && !cut) {
-    int c = int(a_voxel[u_section_axis]);
-    bool keep = u_section_keep_below ? c < u_section_index : c > u_section_index;
+  if (u_section_on && !cut) {
+    vec3 c = vec3(a_voxel) + 0.5;
+    vec3 n = u_section_plane.xyz;
+    float s = n.x * c.x + n.y * c.y + n.z * c.z - u_section_plane.w;
+    bool keep = u_section_keep_below ? s < -u_section_half : s >= u_section_half;
     if (!keep) {
       // Outside the clip volume: point primitives are culled by their centre, so nothing is rasterised.
       gl_Position = vec4(2.0, 2.0, 2.0, 1.0);

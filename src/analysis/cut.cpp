@@ -1,8 +1,9 @@
 // The half of a model on one side of a section plane (vox/analysis/cut.h): whole layers dropped along Z, whole rows
-// along Y, and bits masked within the rows along X.
+// along Y, and bits masked within the rows along X; at any angle, voxel by voxel.
 #include "vox/analysis/cut.h"
 
 #include <algorithm>
+#include <bit>
 
 namespace vox {
 namespace {
@@ -42,6 +43,32 @@ VoxelGrid cutAway(const VoxelGrid& grid, Axis axis, int32_t index, bool keep_abo
       uint64_t* dst = nullptr;
       for (int64_t w = 0; w < wpr; ++w) {
         const uint64_t keep = row[w] & rowMask(w, lo, hi);
+        if (keep == row[w]) continue;
+        if (!dst) dst = out.mutableRowWords(y, z);
+        dst[w] = keep;
+      }
+    }
+  }
+  out.releaseEmptyLayers();
+  return out;
+}
+
+VoxelGrid cutAway(const VoxelGrid& grid, const SectionPlane& plane, bool keep_above) {
+  VoxelGrid out = grid;
+  const int64_t wpr = grid.wordsPerRow();
+  const int dropped = keep_above ? -1 : 1;  // the side of the slab that goes
+  for (int32_t z = 0; z < grid.nz(); ++z) {
+    if (!grid.layerAllocated(z)) continue;
+    for (int32_t y = 0; y < grid.ny(); ++y) {
+      const uint64_t* row = grid.rowWords(y, z);
+      uint64_t* dst = nullptr;
+      for (int64_t w = 0; w < wpr; ++w) {
+        uint64_t keep = row[w];
+        for (uint64_t bits = row[w]; bits; bits &= bits - 1) {
+          const int bit = std::countr_zero(bits);
+          const int32_t x = int32_t(64 * w + bit - 1);  // one padding bit before voxel 0
+          if (sectionSlab(plane, glm::ivec3(x, y, z)) == dropped) keep &= ~(uint64_t(1) << bit);
+        }
         if (keep == row[w]) continue;
         if (!dst) dst = out.mutableRowWords(y, z);
         dst[w] = keep;

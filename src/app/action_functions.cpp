@@ -85,7 +85,7 @@ bool hasThickness(const AppState& s) { return currentThickness(s) != nullptr; }
 bool hasDepth(const AppState& s) { return currentDepthMap(s) != nullptr; }
 
 // ---- Edit ----
-void measureClear(AppState& s) { clearMeasure(s); }
+void measureClear(AppState& s) { clearMeasure(s.measure); }
 
 Status measureAt(AppState& s, const ActionArgs& a) {  // I J K: pick a voxel as a click does
   int32_t v[3] = {0, 0, 0};

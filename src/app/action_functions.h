@@ -129,8 +129,9 @@ Status sectionAt(AppState& s, const ActionArgs& a);
 // Z [U V]: the axis section's picture zoomed Z times (1: whole, at most kMaxSectionZoom), about the voxel (U, V) of
 // the picture (along its right and up axes; default: where it is now), kept within the picture.
 Status sectionZoom(AppState& s, const ActionArgs& a);
-void sectionWhole(AppState& s);                         // zoom 1
-Status sectionPlane(AppState& s, const ActionArgs& a);  // NX NY NZ [OFFSET]: a section at any angle
+void sectionWhole(AppState& s);                                // zoom 1
+Status sectionPlane(AppState& s, const ActionArgs& a);         // NX NY NZ [OFFSET]: a section at any angle
+Status sectionPlaneThrough(AppState& s, const ActionArgs& a);  // I J K [x 3]: through picked voxels (section_plane.cpp)
 
 // ---- Skin ----
 void peelOne(AppState& s);

@@ -119,6 +119,7 @@ const Action kActions[] = {
   {ActionId::kSectionNext,    "section-next",    "Section", "Next section",                       {GLFW_KEY_PAGE_UP, 0},       0, 0,  sectionNext,   nullptr,           hasSection,  nullptr},
   {ActionId::kSectionPlay,    "section-play",    "Section", "Play / pause sections",              {GLFW_KEY_SPACE, 0},         0, 0,  sectionPlay,   nullptr,           hasSection,  isPlaying},
   {ActionId::kSectionPlane,   "section-plane",   nullptr,   "Section at an angle",                kNone,                       3, 4,  nullptr,       sectionPlane,      hasSection,  nullptr},
+  {ActionId::kSectionPlaneThrough, "section-plane-through", nullptr, "Section through picked voxels", kNone,                 3, 9,  nullptr,       sectionPlaneThrough, hasSection, nullptr},
   {ActionId::kSectionAt,      "section",         nullptr,   "Section at an index",                kNone,                       2, 2,  nullptr,       sectionAt,         hasSection,  nullptr},
   {ActionId::kSectionZoom,    "section-zoom",    "Section", "Whole section (zoom 1)",             kNone,                       1, 3,  sectionWhole,  sectionZoom,       hasSection,  nullptr},
 

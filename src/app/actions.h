@@ -105,6 +105,7 @@ enum class ActionId {
   kSectionAt,
   kSectionZoom,
   kSectionPlane,
+  kSectionPlaneThrough,
   kPeelOne,
   kPeelN,
   kPeelBack,

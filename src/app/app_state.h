@@ -136,8 +136,8 @@ struct ViewParams {
 struct SectionUi {
   Axis axis = Axis::kZ;
   int32_t index = -1;  // -1: the middle, set when a model arrives
-  // At any angle (section-plane): the plane with this normal, `offset` model units along it from the centre of the
-  // model's box. The 3D view is not cut away meanwhile.
+  // At any angle (section-plane): the plane with this normal, `offset` model units along it (the unit normal) from
+  // the centre of the model's box. The 3D view's cut-away follows it.
   bool oblique = false;
   glm::dvec3 normal{1.0, 1.0, 0.0};
   double offset = 0.0;
@@ -164,7 +164,8 @@ struct XrayUi {
 
 // Voxels picked for measuring (app/measure.h), on the lattice of `dims`.
 struct MeasureUi {
-  std::vector<glm::ivec3> picks;
+  std::vector<glm::ivec3> picks;   // the pair being measured
+  std::vector<glm::ivec3> recent;  // the last three picks, oldest first (a section's plane can go through them)
   Dims dims{0, 0, 0};
 };
 

@@ -7,6 +7,7 @@
 #include "app/autosave.h"
 #include "app/file_browsing.h"
 #include "app/full_section.h"
+#include "app/measure.h"
 #include "app/messages.h"
 #include "app/project.h"
 #include "app/model_jobs.h"
@@ -28,7 +29,7 @@ namespace {
 void keepTheView(AppState& state, const GridFrame& before, bool had_model) {
   const GridFrame& now = state.model.frame();
   // Picked voxels mean nothing on another lattice.
-  if (!had_model || now.voxel_size != before.voxel_size || now.origin != before.origin) state.measure.picks.clear();
+  if (!had_model || now.voxel_size != before.voxel_size || now.origin != before.origin) clearMeasure(state.measure);
   if (!had_model) {
     state.view.fit_pending = true;
   } else if (now.voxel_size != before.voxel_size || now.origin != before.origin) {
@@ -127,7 +128,7 @@ void applyLoaded(AppState& state, LoadedFile loaded) {
   state.view.fit_pending = true;
   state.viewport.dirty = true;
   state.release_memory = true;
-  state.measure.picks.clear();
+  clearMeasure(state.measure);
   clearFullSection(state);
   doc.path = loaded.path;
   if (loaded.recovered) {  // an autosave: the document is the file it was made from, unsaved

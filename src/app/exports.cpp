@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "app/messages.h"
+#include "app/section_plane.h"
 #include "app/thickness.h"
 #include "app/update.h"
 #include "vox/analysis/cut.h"
@@ -32,6 +33,10 @@ bool exportsCutAway(const AppState& state) { return state.panel == Panel::kSecti
 
 VoxelGrid cutAwayModel(const AppState& state) {
   if (!exportsCutAway(state)) return state.model;
+  if (state.section.oblique) {
+    const render::CutAway cut = obliqueCutAway(state.model.frame(), state.model.dims(), state.section);
+    return cutAway(state.model, sectionPlaneOf(cut.normal, cut.offset), state.view.keep_above);
+  }
   return cutAway(state.model, state.section.axis, state.section.index, state.view.keep_above);
 }
 

@@ -11,12 +11,23 @@ namespace vox::app {
 
 void addMeasurePick(AppState& state, const glm::ivec3& voxel) {
   MeasureUi& m = state.measure;
-  if (!(m.dims == state.model.dims()) || m.picks.size() >= 2) m.picks.clear();
+  if (!(m.dims == state.model.dims())) clearMeasure(m);
+  if (m.picks.size() >= 2) m.picks.clear();
   m.dims = state.model.dims();
   m.picks.push_back(voxel);
+  m.recent.push_back(voxel);
+  if (m.recent.size() > 3) m.recent.erase(m.recent.begin());
 }
 
-void clearMeasure(AppState& state) { state.measure.picks.clear(); }
+void clearMeasure(MeasureUi& m) {
+  m.picks.clear();
+  m.recent.clear();
+}
+
+const std::vector<glm::ivec3>& recentPicks(const AppState& state) {
+  static const std::vector<glm::ivec3> none;
+  return state.measure.dims == state.model.dims() ? state.measure.recent : none;
+}
 
 const std::vector<glm::ivec3>& measurePicks(const AppState& state) {
   static const std::vector<glm::ivec3> none;

@@ -14,9 +14,11 @@
 namespace vox::app {
 
 void addMeasurePick(AppState& state, const glm::ivec3& voxel);
-void clearMeasure(AppState& state);
+void clearMeasure(MeasureUi& measure);  // the pair and the recent picks
 // The picks that belong to the current model's lattice (none after it changed dims).
 const std::vector<glm::ivec3>& measurePicks(const AppState& state);
+// The last three picks (fewer when fewer were made) on the current model's lattice, oldest first.
+const std::vector<glm::ivec3>& recentPicks(const AppState& state);
 // What the picks say, a line each: "A  voxel (12, 40, 7)  at (1.25, 4.05, 0.75) mm", then B, then
 // "distance 3.1 mm  (dx 1.2, dy -2.8, dz 0)". With the Thickness panel's result for the model, a filled voxel's line
 // ends with the wall thickness the panel shows there: "  wall 2 mm (spheres)" or "(rays)".

@@ -141,7 +141,9 @@ render::DrawStats drawParts(AppState& state, int w, int h, const render::DrawPar
       const glm::ivec3 offset = v.box.min - first;
       render::Camera camera = state.view.camera;
       camera.target -= glm::dvec3(offset);
-      if (p.section.active()) {
+      if (p.section.axis == render::SectionAxis::kPlane) {
+        p.section.offset -= glm::dot(p.section.normal, glm::vec3(offset));
+      } else if (p.section.active()) {
         const int a = int(p.section.axis) - 1;
         p.section.index = std::clamp(p.section.index - offset[a], -1, v.box.size()[a]);
       }

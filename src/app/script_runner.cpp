@@ -299,6 +299,11 @@ std::string describeState(const AppState& s, const Harness& h) {
   out << "section_index = " << s.section.index << "\n";
   out << "section_length = " << axisLength(s, s.section.axis) << "\n";
   out << "section_zoom = " << s.section.zoom << "\n";
+  out << "section_oblique = " << (s.section.oblique ? 1 : 0) << "\n";
+  out << "section_normal = " << s.section.normal.x << " " << s.section.normal.y << " " << s.section.normal.z << "\n";
+  out << "section_offset = " << s.section.offset << "\n";
+  out << "cut_away = " << (s.view.cut_away ? 1 : 0) << "\n";
+  out << "cut_points = " << s.viewport.stats.cut_points << "\n";
   out << "measure_picks =";
   for (const glm::ivec3& v : measurePicks(s)) out << " " << v.x << "," << v.y << "," << v.z;
   out << "\n";

@@ -16,6 +16,7 @@
 #include "app/casting_view.h"
 #include "app/print.h"
 #include "app/print_view.h"
+#include "app/section_plane.h"
 #include "app/ui.h"
 #include "app/thickness_view.h"
 #include "app/view_cube.h"
@@ -87,9 +88,9 @@ render::DrawParams drawParams(const AppState& state, bool coarse) {
   p.point_size_px = state.view.point_size_px;
   p.coarse = coarse;
   p.lod_point_budget = state.viewport.interacting ? kMovingPointBudget : kRestingPointBudget;
-  if (state.panel == Panel::kSection && state.view.cut_away && !state.section.oblique && !state.model.empty()) {
-    p.section.axis = toRenderAxis(state.section.axis);
-    p.section.index = state.section.index;
+  if (state.panel == Panel::kSection && state.view.cut_away && !state.model.empty()) {
+    p.section = state.section.oblique ? obliqueCutAway(state.model.frame(), state.model.dims(), state.section)
+                                      : render::CutAway{toRenderAxis(state.section.axis), state.section.index};
     p.section.side = state.view.keep_above ? render::SectionSide::kAbove : render::SectionSide::kBelow;
   }
   thicknessDrawParams(state, p);
@@ -135,6 +136,10 @@ std::vector<double> signature(const AppState& state, int w, int h, bool coarse) 
           double(coarse),
           double(int(p.section.axis)),
           double(p.section.index),
+          double(p.section.normal.x),
+          double(p.section.normal.y),
+          double(p.section.normal.z),
+          double(p.section.offset),
           double(int(p.section.side)),
           double(state.thickness_ui.volume_key),
           double(state.print_ui.volume_key),

@@ -100,11 +100,11 @@ Box3 PointCloud::bounds() const { return bounds(CutAway{}); }
 
 Box3 PointCloud::bounds(const CutAway& section) const {
   glm::ivec3 lo(std::numeric_limits<int32_t>::max()), hi(std::numeric_limits<int32_t>::min());
-  const int axis = int(section.axis) - 1;
+  const SectionPlane plane = sectionPlane(section);
   for (const LayerSlice& s : layers_) {
     for (const PackedPoint& p : s.points) {
       const glm::ivec3 v(p.x, p.y, p.z);
-      if (section.active() && v[axis] != section.index && !keepsPoint(section, v)) continue;
+      if (section.active() && sectionSlab(plane, v) != 0 && !keepsPoint(section, v)) continue;
       lo = glm::min(lo, v);
       hi = glm::max(hi, v);
     }
@@ -149,11 +149,55 @@ std::array<bool, kCodeGroups> visibleCodes(const std::array<bool, 6>& visible_di
   return v;
 }
 
+SectionPlane sectionPlane(const CutAway& section, int level) {
+  if (section.axis == SectionAxis::kPlane) {
+    return sectionPlaneOf(section.normal, section.offset / float(int64_t(1) << level));
+  }
+  SectionPlane p;
+  if (section.active()) {
+    const int axis = int(section.axis) - 1;
+    p.normal = glm::vec3(0.0f);
+    p.normal[axis] = 1.0f;
+    p.offset = float(section.index >> level) + 0.5f;
+  }
+  return p;
+}
+
 bool keepsPoint(const CutAway& section, const glm::ivec3& voxel) {
   if (!section.active()) return true;
-  const int32_t c = voxel[int(section.axis) - 1];
-  return section.side == SectionSide::kBelow ? c < section.index : c > section.index;
+  const int slab = sectionSlab(sectionPlane(section), voxel);
+  return section.side == SectionSide::kBelow ? slab < 0 : slab > 0;
 }
+
+namespace {
+
+// The filled voxels of a plane's slab: along the normal's largest component, each line of voxels crosses the slab in
+// at most a few voxels, found from the plane's equation and checked by sectionSlab.
+template <class Add>
+void slabVoxels(const VoxelGrid& grid, const SectionPlane& p, Add add) {
+  const glm::vec3 m = glm::abs(p.normal);
+  const int a = m.x >= m.y && m.x >= m.z ? 0 : m.y >= m.z ? 1 : 2;
+  const int b = (a + 1) % 3, c = (a + 2) % 3;
+  const glm::ivec3 dims(grid.nx(), grid.ny(), grid.nz());
+  for (int32_t vc = 0; vc < dims[c]; ++vc) {
+    if (c == 2 && !grid.layerAllocated(vc)) continue;
+    for (int32_t vb = 0; vb < dims[b]; ++vb) {
+      const float rest = p.normal[b] * (float(vb) + 0.5f) + p.normal[c] * (float(vc) + 0.5f) - p.offset;
+      float lo = (-p.half - rest) / p.normal[a] - 0.5f, hi = (p.half - rest) / p.normal[a] - 0.5f;
+      if (lo > hi) std::swap(lo, hi);
+      const int32_t from = int32_t(std::max(std::floor(lo) - 1.0f, 0.0f));
+      const int32_t to = int32_t(std::min(std::ceil(hi) + 1.0f, float(dims[a] - 1)));
+      glm::ivec3 v;
+      v[b] = vb;
+      v[c] = vc;
+      for (v[a] = from; v[a] <= to; ++v[a]) {
+        if (sectionSlab(p, v) == 0 && grid.get(v.x, v.y, v.z)) add(v.x, v.y, v.z);
+      }
+    }
+  }
+}
+
+}  // namespace
 
 std::vector<PackedPoint> sectionPoints(const VoxelGrid& grid, const CutAway& section) {
   std::vector<PackedPoint> out;
@@ -188,6 +232,9 @@ std::vector<PackedPoint> sectionPoints(const VoxelGrid& grid, const CutAway& sec
     case SectionAxis::kZ:
       if (i < 0 || i >= grid.nz() || !grid.layerAllocated(i)) break;
       for (int32_t y = 0; y < grid.ny(); ++y) row(y, i);
+      break;
+    case SectionAxis::kPlane:
+      slabVoxels(grid, sectionPlane(section), add);
       break;
     case SectionAxis::kNone:
       break;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
@@ -61,10 +62,18 @@ void uploadPoints(GLuint vbo, int64_t& capacity, const PackedPoint* points, int6
 
 // The code a voxel has when its only free face is the cut face: shades the section like a flat face.
 uint8_t cutFaceCode(const CutAway& section) {
-  // kBelow keeps coordinates < index, so the cut face looks towards +axis; kAbove towards -axis.
-  const bool plus = section.side == SectionSide::kBelow;
+  // kBelow keeps coordinates < index, so the cut face looks towards +axis; kAbove towards -axis. A plane at an angle
+  // is shaded as the face of its normal's largest component.
+  SectionAxis axis = section.axis;
+  bool plus = section.side == SectionSide::kBelow;
+  if (axis == SectionAxis::kPlane) {
+    const glm::vec3 m = glm::abs(section.normal);
+    const int a = m.x >= m.y && m.x >= m.z ? 0 : m.y >= m.z ? 1 : 2;
+    axis = SectionAxis(a + 1);
+    plus = plus == (section.normal[a] > 0.0f);
+  }
   uint8_t bit = 0;
-  switch (section.axis) {
+  switch (axis) {
     case SectionAxis::kX:
       bit = plus ? 8 : 16;
       break;
@@ -75,6 +84,7 @@ uint8_t cutFaceCode(const CutAway& section) {
       bit = plus ? 1 : 2;
       break;
     case SectionAxis::kNone:
+    case SectionAxis::kPlane:
       break;
   }
   return uint8_t(63 & ~bit);
@@ -322,8 +332,8 @@ DrawStats PointRenderer::draw(const Camera& camera, int32_t width, int32_t heigh
   stats.point_size_px =
       params.point_size_px > 0.0 ? params.point_size_px : std::clamp(point_scale / depth_at_target, 1.0, 255.0);
 
-  CutAway section = params.section;
-  if (section.active()) section.index = section.index >> k;  // indices >= 0 (validated by callers)
+  const CutAway& section = params.section;
+  const SectionPlane plane = sectionPlane(section, k);  // indices >= 0 (validated by callers)
 
   const GLuint program = programs_[params.round_points ? 1 : 0];
   glUseProgram(program);
@@ -336,8 +346,9 @@ DrawStats PointRenderer::draw(const Camera& camera, int32_t width, int32_t heigh
   glUniform3fv(loc("u_cut_colour"), 1, glm::value_ptr(cut_colour));
   glUniform1f(loc("u_point_scale"), float(point_scale));
   glUniform1f(loc("u_fixed_size"), float(params.point_size_px));
-  glUniform1i(loc("u_section_axis"), int(section.axis) - 1);
-  glUniform1i(loc("u_section_index"), section.index);
+  glUniform1i(loc("u_section_on"), section.active() ? 1 : 0);
+  glUniform4f(loc("u_section_plane"), plane.normal.x, plane.normal.y, plane.normal.z, plane.offset);
+  glUniform1f(loc("u_section_half"), plane.half);
   glUniform1i(loc("u_section_keep_below"), section.side == SectionSide::kBelow ? 1 : 0);
   const bool scalar = params.scalar_colour && scalar_texture_ != 0;
   glUniform1i(loc("u_scalar_on"), scalar ? 1 : 0);
@@ -370,9 +381,11 @@ DrawStats PointRenderer::draw(const Camera& camera, int32_t width, int32_t heigh
   }
 
   if (section.active()) {
-    if (cut_section_.axis != section.axis || cut_section_.index != section.index || cut_level_ != k ||
-        cut_version_ != grid_version_) {
-      const std::vector<PackedPoint> cut = sectionPoints(lvl.grid, section);
+    if (!(cut_section_ == section) || cut_level_ != k || cut_version_ != grid_version_) {
+      CutAway at_level = section;
+      at_level.index = section.index >> k;
+      at_level.offset = plane.offset;
+      const std::vector<PackedPoint> cut = sectionPoints(lvl.grid, at_level);
       uploadPoints(cut_vbo_, cut_capacity_, cut.data(), int64_t(cut.size()));
       cut_section_ = section;
       cut_level_ = k;

@@ -21,7 +21,13 @@ Status validateRenderParams(const VoxelGrid& grid, const RenderParams& p) {
   if (!(p.zoom > 0.0) || !std::isfinite(p.zoom)) return bad("zoom must be a positive number");
   if (!(p.point_size_px >= 0.0 && p.point_size_px <= 255.0)) return bad("point size must lie in [0, 255] pixels");
   if (!(p.ambient >= 0.0 && p.ambient <= 1.0)) return bad("ambient must lie in [0, 1]");
-  if (p.section.active()) {
+  if (p.section.axis == SectionAxis::kPlane) {
+    const glm::vec3 n = p.section.normal;
+    const float length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    if (!std::isfinite(length) || std::abs(length - 1.0f) > 1e-3f || !std::isfinite(p.section.offset)) {
+      return bad("a section at an angle needs a unit normal and a finite offset");
+    }
+  } else if (p.section.active()) {
     const int axis = int(p.section.axis) - 1;
     const int32_t n = axis == 0 ? grid.nx() : axis == 1 ? grid.ny() : grid.nz();
     if (p.section.index < 0 || p.section.index >= n) {

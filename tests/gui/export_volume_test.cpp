@@ -314,6 +314,20 @@ TEST(AppExportVolume, theCutAwayExportsTheHalfTheViewKeeps) {
   ASSERT_TRUE(pump(state, [&] { return !volumeExportRunning(state); }));
   EXPECT_EQ(filledIn(dir / "above.nrrd"), (std::pair<int64_t, int64_t>{700, 10}));
 
+  // At an angle, through the corners' voxels (1, 1, 10), (10, 1, 1), (1, 10, 1): the plane i + j + k = 12 through
+  // their centres, kept below with its slab (centres within half the normal's L1 norm, i + j + k <= 13). Voxels 1..10
+  // each way with i + j + k <= 13: C(13, 3) = 286 less the 3 with one index at 11.
+  state.view.keep_above = false;
+  ASSERT_TRUE(
+      dispatch(state, ActionId::kSectionPlaneThrough, ActionArgs{{"1", "1", "10", "10", "1", "1", "1", "10", "1"}, ""})
+          .ok());
+  ASSERT_TRUE(state.section.oblique);
+  ASSERT_TRUE(
+      dispatch(state, ActionId::kExportVolume, ActionArgs{{"tilted.nrrd"}, (dir / "tilted.nrrd").string()}).ok());
+  ASSERT_TRUE(pump(state, [&] { return !volumeExportRunning(state); }));
+  EXPECT_EQ(filledIn(dir / "tilted.nrrd").first, 283);
+  state.section.oblique = false;
+
   // A cut-away that keeps nothing is an error naming the file, and nothing is written.
   state.view.keep_above = false;
   ASSERT_TRUE(dispatch(state, ActionId::kSectionAt, ActionArgs{{"z", "0"}, ""}).ok());

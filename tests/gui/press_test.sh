@@ -68,6 +68,13 @@ grep -q "expected error: .*more than the" "$out/voxmod.log" || fail "the absurd 
 # The section at an angle shows its plane's facts (and its widgets are pressed below).
 grep -q "^rect_X@normal = " "$out/oblique.txt" || fail "the section at an angle shows no normal fields"
 grep -q "^rect_section_offset = " "$out/oblique.txt" || fail "the section at an angle shows no offset slider"
+# Through (2,3,1), (20,3,4), (2,15,6): the normal (18,0,3) x (0,12,5) = (-36,-90,216), made unit with its largest
+# component positive; the 3D view draws the cut face.
+expect through.txt section_oblique 1
+awk '/^section_normal = /{ ok = ($3 + 0.1521 < 0.001 && $3 + 0.1521 > -0.001 && $4 + 0.3801 < 0.001 &&
+  $4 + 0.3801 > -0.001 && $5 - 0.9123 < 0.001 && $5 - 0.9123 > -0.001) } END { exit !ok }' "$out/through.txt" ||
+  fail "the section through three picked voxels has the wrong normal: $(grep section_normal "$out/through.txt")"
+awk '/^cut_points = /{ exit !($3 > 0) }' "$out/through.txt" || fail "the 3D view shows no cut face at an angle"
 
 # The Print panel: the block's void found, -z pressed turns the build direction (the void's floor then hangs), the
 # search lists the six axes and 100 more directions, and "Lay a face on the plate" waits for a click.

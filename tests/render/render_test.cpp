@@ -1,6 +1,7 @@
 // Render regression tests on Mesa llvmpipe (headless EGL): small scenes against tests/baselines/*.png (metric and
 // threshold in render_fixture.h), plus image properties that need no baseline: a closed surface from any view,
 // culling that changes nothing visible, incremental updates equal to a rebuild, row order of the read-back.
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "render_fixture.h"
@@ -232,6 +233,28 @@ TEST(RenderProperties, sectionShowsTheCutFaceInTheCutColour) {
   const Rgba8 outside = render(g, p).at(128, 128);
   EXPECT_EQ(outside.r, 0);
   EXPECT_GT(outside.g, 100);
+}
+
+// A plane at an angle: seen along its normal, the cut face fills the disc without holes; normal to Z through the
+// centres of an index, it draws the same image as that Z section.
+TEST(RenderProperties, aSectionAtAnAngleShowsAClosedCutFace) {
+  VOX_REQUIRE_GL();
+  const VoxelGrid g = ball(40);
+  RenderParams p = small(0, 0);
+  const glm::vec3 n = glm::normalize(glm::vec3(0.0f, 0.35f, 1.0f));
+  p.section = {SectionAxis::kPlane, 0, SectionSide::kBelow, n, glm::dot(n, glm::vec3(float(g.nx()) / 2.0f))};
+  ASSERT_TRUE(validateRenderParams(g, p));
+  const ImageRgba image = render(g, p);
+  const Rgba8 centre = image.at(128, 128);
+  EXPECT_GT(centre.r, 100);
+  EXPECT_LT(centre.g, centre.r / 2);
+  EXPECT_EQ(holesInsideBall(image, kBlack), 0);
+  p.section = {SectionAxis::kPlane, 0, SectionSide::kBelow, glm::vec3(0.0f, 0.0f, 1.0f), float(g.nz() / 2) + 0.5f};
+  const ImageRgba as_plane = render(g, p);
+  p.section = {SectionAxis::kZ, g.nz() / 2, SectionSide::kBelow};
+  EXPECT_EQ(compareImages(as_plane, render(g, p)).max_difference, 0);
+  p.section = {SectionAxis::kPlane, 0, SectionSide::kBelow, glm::vec3(0.0f, 0.0f, 2.0f), 1.0f};
+  EXPECT_FALSE(validateRenderParams(g, p));  // the normal must be a unit vector
 }
 
 // A scalar volume colours the surface points by the ramp (dark blue at 0, yellow at 1) and paints values under the

@@ -12,6 +12,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "vox/core/section_plane.h"
 #include "vox/core/voxel_grid.h"
 #include "vox/render/camera.h"
 
@@ -115,25 +116,36 @@ std::array<bool, kCodeGroups> visibleCodes(const std::array<bool, 6>& visible_di
 
 // ---- Cut-away (a section plane in the 3D view) ----
 
-enum class SectionAxis { kNone, kX, kY, kZ };
-// Which half is kept: voxels with coordinate < index (kBelow) or > index (kAbove) along the axis. The filled voxels
-// of the plane coordinate == index are drawn as the cut face.
+// kX, kY, kZ: a plane perpendicular to that axis at a voxel index; kPlane: a plane at any angle.
+enum class SectionAxis { kNone, kX, kY, kZ, kPlane };
+// Which half is kept: voxels with coordinate < index (kBelow) or > index (kAbove) along the axis; for kPlane, voxels
+// below or above the plane's slab (sectionSlab). The filled voxels of the plane (coordinate == index, or inside the
+// slab) are drawn as the cut face.
 enum class SectionSide { kBelow, kAbove };
 
 struct CutAway {
   SectionAxis axis = SectionAxis::kNone;
   int32_t index = 0;  // voxel index along the axis
   SectionSide side = SectionSide::kBelow;
+  // kPlane: the plane dot(normal, c) = offset, c a voxel's centre in voxel coordinates (voxel (i, j, k) has its centre
+  // at (i + 0.5, j + 0.5, k + 0.5)); normal of unit length.
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};
+  float offset = 0.0f;
   bool active() const { return axis != SectionAxis::kNone; }
+  bool operator==(const CutAway&) const = default;
 };
+
+// The plane of an active section (vox/core/section_plane.h) in the coordinates of the level of detail with 2^level
+// fine voxels per point.
+SectionPlane sectionPlane(const CutAway& section, int level = 0);
 
 // Whether a surface point at these voxel coordinates is drawn under this section (mirrors points.vert). Always true
 // without a section.
 bool keepsPoint(const CutAway& section, const glm::ivec3& voxel);
 
-// The cut face: every filled voxel of the section plane (interior or not), flagged kPointFlagCut, with the code the
-// voxel has in the grid. Empty without a section or when the plane lies outside the grid. Cost O(plane area) bit
-// reads for X and Y sections, O(layer words) for Z.
+// The cut face: every filled voxel of the section plane (interior or not; for kPlane, of its slab), flagged
+// kPointFlagCut, with the code the voxel has in the grid. Empty without a section or when the plane lies outside the
+// grid. Cost O(plane area) bit reads for X, Y and any-angle sections, O(layer words) for Z.
 std::vector<PackedPoint> sectionPoints(const VoxelGrid& grid, const CutAway& section);
 
 // ---- Level of detail ----

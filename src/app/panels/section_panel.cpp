@@ -1,5 +1,6 @@
 // Section panel (thesis 5.2.1 and 6.3): a plane normal to X, Y or Z moved through the model with a slider or played
-// as successive sections; the 2D section image sits beside the 3D cut-away.
+// as successive sections, or a plane at any angle (its normal and offset, or through picked voxels); the 2D section
+// image sits beside the 3D cut-away.
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -9,6 +10,7 @@
 
 #include "app/actions.h"
 #include "app/full_section.h"
+#include "app/measure.h"
 #include "app/operations.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
@@ -64,6 +66,45 @@ std::string numberWord(double v) {
   return buf;
 }
 
+// Whether and which half the 3D view cuts away at the section (axis or any angle), and the section's export.
+void drawCutAwayControls(AppState& state) {
+  heading("3D view");
+  actionCheckbox(state, ActionId::kViewCut, "Cut away the model at the section");
+  if (state.view.cut_away) {
+    int keep = state.view.keep_above ? 1 : 0;
+    widget::RadioButton("Keep below", &keep, 0);
+    ImGui::SameLine();
+    widget::RadioButton("Keep above", &keep, 1);
+    state.view.keep_above = keep == 1;
+  }
+  ImGui::Spacing();
+  if (widget::Button("Export section PNG...")) dispatch(state, ActionId::kExportSectionPng);
+}
+
+// The plane through picked voxels (clicked in an axis section or the 3D view, as for measuring): the last one, the
+// normal kept, or the last three.
+void drawPlaneThroughPicks(AppState& state) {
+  const std::vector<glm::ivec3>& recent = recentPicks(state);
+  std::vector<std::string> words;
+  std::string listed;
+  for (const glm::ivec3& v : recent) {
+    for (int k = 0; k < 3; ++k) words.push_back(std::to_string(v[k]));
+    listed += (listed.empty() ? "" : ", ") + std::string("(") + std::to_string(v.x) + ", " + std::to_string(v.y) +
+              ", " + std::to_string(v.z) + ")";
+  }
+  ImGui::TextWrapped("Picked voxels: %s",
+                     recent.empty() ? "none (click them in an X, Y or Z section)" : listed.c_str());
+  ImGui::BeginDisabled(recent.empty());
+  if (widget::Button("Through the last pick")) {
+    dispatchValues(state, ActionId::kSectionPlaneThrough, std::vector<std::string>(words.end() - 3, words.end()));
+  }
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(recent.size() < 3);
+  if (widget::Button("Through the last 3 picks")) dispatchValues(state, ActionId::kSectionPlaneThrough, words);
+  ImGui::EndDisabled();
+}
+
 // A section at any angle: the plane's normal and its offset from the centre of the model's box (each edit is the
 // section-plane action), and what the section holds.
 void drawObliqueControls(AppState& state) {
@@ -93,9 +134,11 @@ void drawObliqueControls(AppState& state) {
     dispatchValues(state, ActionId::kSectionPlane,
                    {numberWord(normal.x), numberWord(normal.y), numberWord(normal.z), numberWord(offset)});
   }
+  drawPlaneThroughPicks(state);
   const ObliqueSection* o = currentObliqueSection(state);
   if (!o) {
     if (!state.oblique_error.empty()) ImGui::TextWrapped("%s", state.oblique_error.c_str());
+    drawCutAwayControls(state);
     return;
   }
   heading("This section");
@@ -110,10 +153,7 @@ void drawObliqueControls(AppState& state) {
     tableRow("Through", text);
     ImGui::EndTable();
   }
-  wrappedColoured(ImGui::GetStyle().Colors[ImGuiCol_TextDisabled],
-                  "The 3D view is not cut at an angle; pick X, Y or Z for the cut-away.");
-  ImGui::Spacing();
-  if (widget::Button("Export section PNG...")) dispatch(state, ActionId::kExportSectionPng);
+  drawCutAwayControls(state);
 }
 
 }  // namespace
@@ -198,17 +238,7 @@ void drawSectionPanel(AppState& state) {
 
   if (state.doc.coarse_level > 1) drawFullResolution(state);
 
-  heading("3D view");
-  actionCheckbox(state, ActionId::kViewCut, "Cut away the model at the section");
-  if (state.view.cut_away) {
-    int keep = state.view.keep_above ? 1 : 0;
-    widget::RadioButton("Keep below", &keep, 0);
-    ImGui::SameLine();
-    widget::RadioButton("Keep above", &keep, 1);
-    state.view.keep_above = keep == 1;
-  }
-  ImGui::Spacing();
-  if (widget::Button("Export section PNG...")) dispatch(state, ActionId::kExportSectionPng);
+  drawCutAwayControls(state);
 }
 
 }  // namespace vox::app

@@ -1,4 +1,7 @@
 // cutAway: the half of a model the window's cut-away shows, against a voxel-by-voxel filter.
+#include <cmath>
+
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "grids.h"
@@ -41,6 +44,35 @@ TEST(CutAway, keepsExactlyTheVoxelsOnItsSideOfThePlane) {
       }
     }
   }
+}
+
+// At any angle: a voxel is kept when its centre lies on the kept side of the plane or within half the normal's L1 norm
+// of it (worked out here in double); the two halves overlap in exactly that slab.
+TEST(CutAway, atAnAngleKeepsTheVoxelsOnItsSideOfThePlaneAndItsSlab) {
+  std::mt19937 rng(11);
+  const Dims d{70, 9, 11};
+  VoxelGrid g(d);
+  std::bernoulli_distribution coin(0.5);
+  for (int z = 0; z < d.nz; ++z)
+    for (int y = 0; y < d.ny; ++y)
+      for (int x = 0; x < d.nx; ++x)
+        if (z != 3 && coin(rng)) g.set(x, y, z);
+  const glm::dvec3 n = glm::normalize(glm::dvec3(0.8, -0.4, 0.45));
+  const double offset = 14.137;
+  const SectionPlane plane = sectionPlaneOf(glm::vec3(n), float(offset));
+  const double half = 0.5 * (std::abs(n.x) + std::abs(n.y) + std::abs(n.z));
+  const VoxelGrid below = cutAway(g, plane, false), above = cutAway(g, plane, true);
+  int64_t slab = 0;
+  for (int z = 0; z < d.nz; ++z)
+    for (int y = 0; y < d.ny; ++y)
+      for (int x = 0; x < d.nx; ++x) {
+        const double s = glm::dot(n, glm::dvec3(x, y, z) + 0.5) - offset;
+        ASSERT_EQ(below.get(x, y, z), g.get(x, y, z) && s < half) << x << "," << y << "," << z;
+        ASSERT_EQ(above.get(x, y, z), g.get(x, y, z) && s >= -half) << x << "," << y << "," << z;
+        slab += g.get(x, y, z) && s >= -half && s < half;
+      }
+  EXPECT_GT(slab, 0);
+  EXPECT_EQ(below.filledCount() + above.filledCount(), g.filledCount() + slab);
 }
 
 TEST(CutAway, leavesTheModelItCameFromUnchanged) {

@@ -5,6 +5,7 @@
 #include <map>
 #include <tuple>
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "test_grids.h"
@@ -288,6 +289,60 @@ TEST(CutAway, cutFaceIsEveryFilledVoxelOfThePlane) {
   EXPECT_TRUE(sectionPoints(g, CutAway{SectionAxis::kX, 40, SectionSide::kBelow}).empty());
   EXPECT_TRUE(sectionPoints(g, CutAway{SectionAxis::kZ, -1, SectionSide::kBelow}).empty());
   EXPECT_TRUE(sectionPoints(g, CutAway{}).empty());
+}
+
+// A plane at any angle: the cut face is the standard digital plane's filled voxels, one voxel thick and without
+// gaps, so the kept half and the removed half never touch across a face.
+TEST(CutAway, aPlaneAtAnAngleSeparatesTheHalvesByAGaplessSlab) {
+  for (const glm::vec3 n : {glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f)), glm::normalize(glm::vec3(1.0f, 2.0f, 3.0f)),
+                            glm::normalize(glm::vec3(-0.3f, 0.1f, 1.0f))}) {
+    const SectionPlane plane = sectionPlane(CutAway{SectionAxis::kPlane, 0, SectionSide::kBelow, n, 31.37f});
+    for (int32_t z = 0; z < 30; ++z)
+      for (int32_t y = 0; y < 30; ++y)
+        for (int32_t x = 0; x < 30; ++x) {
+          const int here = sectionSlab(plane, {x, y, z});
+          for (const glm::ivec3 step : {glm::ivec3(1, 0, 0), glm::ivec3(0, 1, 0), glm::ivec3(0, 0, 1)}) {
+            ASSERT_NE(here * sectionSlab(plane, glm::ivec3(x, y, z) + step), -1) << x << " " << y << " " << z;
+          }
+        }
+  }
+}
+
+TEST(CutAway, aPlaneAtAnAngleCutsTheFilledVoxelsOfItsSlab) {
+  const VoxelGrid g = ball(40, 15.7);
+  const glm::vec3 n = glm::normalize(glm::vec3(1.0f, 2.0f, 3.0f));
+  const glm::dvec3 nd = glm::normalize(glm::dvec3(1.0, 2.0, 3.0));
+  const float offset = float(glm::dot(nd, glm::dvec3(20.0))) + 0.123f;  // near the ball's centre
+  const CutAway cut{SectionAxis::kPlane, 0, SectionSide::kBelow, n, offset};
+  const auto pts = sectionPoints(g, cut);
+  // Independently: the filled voxels whose centre lies within half the normal's L1 norm of the plane (double).
+  const double half = 0.5 * (nd.x + nd.y + nd.z);
+  int64_t expected = 0;
+  for (int32_t z = 0; z < 40; ++z)
+    for (int32_t y = 0; y < 40; ++y)
+      for (int32_t x = 0; x < 40; ++x) {
+        const double s = glm::dot(nd, glm::dvec3(x, y, z) + 0.5) - double(offset);
+        const bool in = s >= -half && s < half;
+        expected += in && g.get(x, y, z);
+        if (g.get(x, y, z) && !in) {
+          EXPECT_EQ(keepsPoint(cut, {x, y, z}), s < -half);
+        }
+      }
+  EXPECT_EQ(int64_t(pts.size()), expected);
+  for (const PackedPoint& p : pts) {
+    EXPECT_EQ(p.flags, kPointFlagCut);
+    EXPECT_TRUE(g.get(p.x, p.y, p.z));
+    EXPECT_EQ(sectionSlab(sectionPlane(cut), {p.x, p.y, p.z}), 0);
+  }
+  // A standard plane holds |n|_1 voxels per unit of its area: the disc of radius 15.7 through (about) the centre.
+  const double disc = 3.14159265358979 * 15.7 * 15.7 * (nd.x + nd.y + nd.z);
+  EXPECT_NEAR(double(pts.size()), disc, 0.05 * disc);
+  // Normal to an axis, the plane through the voxel centres of an index is that axis section.
+  const CutAway z20{SectionAxis::kPlane, 0, SectionSide::kBelow, glm::vec3(0.0f, 0.0f, 1.0f), 20.5f};
+  EXPECT_EQ(sectionPoints(g, z20).size(), sectionPoints(g, CutAway{SectionAxis::kZ, 20, SectionSide::kBelow}).size());
+  // At a level of detail with 2^k fine voxels per point the offset is in that level's units.
+  EXPECT_FLOAT_EQ(sectionPlane(cut, 2).offset, offset / 4.0f);
+  EXPECT_FLOAT_EQ(sectionPlane(CutAway{SectionAxis::kX, 21}, 1).offset, 10.5f);
 }
 
 // ---- Level of detail ----
