@@ -10,12 +10,14 @@
 
 #include <glm/common.hpp>
 
+#include "app/document.h"
 #include "app/glossary.h"
 #include "app/measure.h"
 #include "app/operations.h"
 #include "app/parts.h"
 #include "app/print.h"
 #include "vox/core/text.h"
+#include "vox/core/units.h"
 
 namespace vox::app::actions {
 
@@ -99,6 +101,17 @@ Status measureAt(AppState& s, const ActionArgs& a) {  // I J K: pick a voxel as 
 
 // ---- Model ----
 void voxelizeDialog(AppState& s) { s.voxelize.open_requested = true; }
+
+Status modelUnitsAt(AppState& s, const ActionArgs& a) {
+  const std::string& u = a.words[0];
+  if (std::find(kLengthUnits.begin(), kLengthUnits.end(), u) == kLengthUnits.end()) {
+    std::string known;
+    for (std::string_view k : kLengthUnits) known += (known.empty() ? "" : ", ") + std::string(k);
+    return badValues("model-units takes one of " + known + ", found '" + u + "'");
+  }
+  setModelUnits(s, u);
+  return Ok{};
+}
 
 Status voxelizeAt(AppState& s, const ActionArgs& a) {  // R [MODE], as the dialog's Voxelize button
   VoxelizeParams p = s.voxelize.params;

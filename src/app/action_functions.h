@@ -71,6 +71,7 @@ Status measureAt(AppState& s, const ActionArgs& a);
 // ---- Model ----
 void voxelizeDialog(AppState& s);
 Status voxelizeAt(AppState& s, const ActionArgs& a);
+Status modelUnitsAt(AppState& s, const ActionArgs& a);  // U: what the model's coordinates are in (units.h)
 void cancelAll(AppState& s);
 
 // ---- View ----

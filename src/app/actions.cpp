@@ -52,6 +52,7 @@ const Action kActions[] = {
   {ActionId::kMeasure,        "measure",         nullptr,   "Pick a voxel to measure",            kNone,                       3, 3,  nullptr,       measureAt,         hasSection,  nullptr},
 
   {ActionId::kVoxelize,       "voxelize",        "Model",   "Voxelize...",                        {GLFW_KEY_R, kCtrl},         1, 2,  voxelizeDialog, voxelizeAt,       hasMesh,     nullptr},
+  {ActionId::kModelUnits,     "model-units",     nullptr,   "Model units",                        kNone,                       1, 1,  nullptr,       modelUnitsAt,      hasModel,    nullptr},
   {ActionId::kCancelJob,      "cancel",          "Model",   "Cancel voxelizing / loading / thickness / parts / export", {GLFW_KEY_ESCAPE, 0}, 0, 0, cancelAll,   nullptr,           canCancel,   nullptr},
 
   {ActionId::kViewFit,        "fit",             "View",    "Fit model",                          {GLFW_KEY_F, 0},             0, 0,  fit,           nullptr,           nullptr,     nullptr},

@@ -42,6 +42,7 @@ enum class ActionId {
   kMeasureClear,
   kMeasure,
   kVoxelize,
+  kModelUnits,
   kCancelJob,
   kViewFit,
   kViewIso,

@@ -290,6 +290,7 @@ std::string describeState(const AppState& s, const Harness& h) {
   if (!s.model.empty()) {
     out << "dims = " << s.model.nx() << " " << s.model.ny() << " " << s.model.nz() << "\n";
     out << "voxel_size = " << s.model.voxelSize() << "\n";
+    out << "units = " << s.model.frame().units << "\n";
   }
   if (const SurfaceStats* st = s.surface_stats.get(s.model_version)) {
     out << "filled = " << st->filled << "\n";

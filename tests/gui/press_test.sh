@@ -93,7 +93,12 @@ echo "ok $checks - support $up mm^3 up, $down mm^3 down"
 
 # The Casting panel: the block without units says so and is simulated once they are chosen; "Place a feeder" waits for
 # a click; the feeder placed on the top is a part (undone, done again) and is simulated with the block.
-grep -q "^rect_Model units = " "$out/casting_units.txt" || fail "the Casting panel offers no units for a unitless part"
+grep -q "^rect_Model units@prompt = " "$out/casting_units.txt" || fail "the Casting panel offers no units for a unitless part"
+grep -q "^rect_Model units@prompt = " "$out/units_prompt.txt" || fail "the Model panel does not ask a unitless file's units"
+expect units_prompt.txt units model
+expect casting.txt units mm
+expect units_remembered.txt units mm
+grep -q "^rect_Model units@prompt = " "$out/units_remembered.txt" && fail "the Model panel asks for units it knows"
 expect casting.txt casting_run_feeders 0
 expect casting.txt casting_sound 0
 expect casting_placing.txt casting_placing_feeder 1

@@ -9,7 +9,6 @@
 
 #include "app/actions.h"
 #include "app/casting.h"
-#include "app/document.h"  // setModelUnits
 #include "app/parts.h"
 #include "app/panels/panels.h"
 #include "app/ui.h"
@@ -17,21 +16,6 @@
 
 namespace vox::app {
 namespace {
-
-void unitsChoice(AppState& state) {
-  const std::string units = state.model.frame().units;
-  if (metresPerUnit(units) > 0.0) return;
-  wrappedColoured(kWarningColour,
-                  "The part's length units are not known, and a casting's times depend on its size: "
-                  "say what its numbers are in.");
-  ImGui::SetNextItemWidth(120.0f);
-  if (widget::BeginCombo("Model units", unitsLabel(units).c_str())) {
-    for (std::string_view u : kLengthUnits) {
-      if (widget::Selectable(unitsLabel(u).c_str(), u == units)) setModelUnits(state, std::string(u));
-    }
-    ImGui::EndCombo();
-  }
-}
 
 void materials(AppState& state) {
   heading("Metal and mould");
@@ -206,7 +190,7 @@ void drawCastingPanel(AppState& state) {
     return;
   }
   const std::string units = state.model.frame().units;
-  unitsChoice(state);
+  drawUnitsPrompt(state, "A casting's times depend on its size: say what they are.");
   materials(state);
   feeders(state, units);
   const CastingOutcome* r = runOrStatus(state);

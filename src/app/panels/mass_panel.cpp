@@ -19,14 +19,7 @@ namespace {
 
 // Units and density: what turns unit-density volumes into kilograms.
 void materialControls(AppState& state) {
-  const std::string units = state.model.frame().units;
-  ImGui::SetNextItemWidth(120.0f);
-  if (widget::BeginCombo("Model units", unitsLabel(units).c_str())) {
-    for (std::string_view u : kLengthUnits) {
-      if (widget::Selectable(unitsLabel(u).c_str(), u == units)) setModelUnits(state, std::string(u));
-    }
-    ImGui::EndCombo();
-  }
+  drawUnitsCombo(state, "Model units");
   helpMarker("What the model's coordinates are in. STL files do not say; .vxm files keep what you choose here.");
   MassUi& ui = state.mass_ui;
   ImGui::SetNextItemWidth(120.0f);

@@ -45,6 +45,7 @@ void modelSection(AppState& state) {
   const ModelSnapshot& snap = *state.doc.model;
   const VoxelGrid& g = state.model;
   heading("Voxel model");
+  drawUnitsPrompt(state, "Lengths are shown in model units, and masses need them: say what they are.");
   if (beginFactTable("model")) {
     tableRow("Dimensions", std::to_string(g.nx()) + " x " + std::to_string(g.ny()) + " x " + std::to_string(g.nz()) +
                                " (" + groupDigits(g.dims().count()) + ")");

@@ -77,6 +77,9 @@ void modeAndUnits(VoxelizeParams& p) {
     ImGui::EndCombo();
   }
   helpMarker("What the mesh's coordinates are in (STL files do not say): for masses in kg and lengths in mm.");
+  if (metresPerUnit(p.units) == 0.0) {
+    wrappedColoured(kWarningColour, "This file does not say what its numbers are in: choose the units above.");
+  }
 }
 
 void voxelizeButtons(AppState& state, const VoxelizeParams& p, bool can_start) {
