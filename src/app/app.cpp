@@ -230,6 +230,7 @@ std::array<double, 3> drawUi(AppState& state, bool finish, Harness* h) {
   state.building_frame = false;
   state.key_presses.clear();
   ImGui::Render();
+  if (h) h->clipped_text = findClippedText(*ImGui::GetDrawData());
   t[1] = nowSeconds();
   int fb_w = 0, fb_h = 0;
   glfwGetFramebufferSize(state.window, &fb_w, &fb_h);

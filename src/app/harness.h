@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/clipped_text.h"
 #include "app/script.h"
 
 namespace vox::app {
@@ -79,7 +80,8 @@ struct Harness {
   std::string screenshot_on_idle;
   int idle_frames = 0;
 
-  std::vector<WidgetRect> widget_rects;  // refilled every frame
+  std::vector<WidgetRect> widget_rects;   // refilled every frame
+  std::vector<ClippedText> clipped_text;  // text the last frame cut off (clipped_text.h)
   SyntheticInput input;
   PressAll press_all;
   // While sweeping: milliseconds of the last frame spent building the UI (including the section and the 3D view's

@@ -366,6 +366,10 @@ std::string describeState(const AppState& s, const Harness& h) {
   out << "autosave_orphans = " << s.autosave.orphans.size() << "\n";
   out << "document = " << documentName(s) << "\n";
   out << "unsaved_prompt = " << (s.after_unsaved_prompt ? 1 : 0) << "\n";
+  out << "clipped_text = " << h.clipped_text.size() << "\n";
+  for (const ClippedText& c : h.clipped_text) {
+    out << "clipped_in " << c.window << " = " << c.x0 << " " << c.y0 << " " << c.x1 << " " << c.y1 << "\n";
+  }
   for (const WidgetRect& w : h.widget_rects) {
     out << "rect_" << w.name << " = " << w.x0 << " " << w.y0 << " " << w.x1 << " " << w.y1 << "\n";
   }

@@ -39,6 +39,18 @@ std::string formatLength(double value, const std::string& units) {
 std::string formatArea(double value, const std::string& units) { return formatLength(value, units) + "^2"; }
 std::string formatVolume(double value, const std::string& units) { return formatLength(value, units) + "^3"; }
 
+std::string columnHeader(const char* name, const std::string& units, int power) {
+  if (units == "model" || units.empty()) return name;
+  return std::string(name) + ", " + units + (power > 1 ? "^" + std::to_string(power) : "");
+}
+
+std::string columnNumber(double value) {
+  if (std::abs(value) >= 1000.0) return (value < 0 ? "-" : "") + groupDigits(int64_t(std::llround(std::abs(value))));
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.4g", value);
+  return buf;
+}
+
 namespace {
 // A section's title, with a term's marker beside it when there is a term.
 void headingWith(const char* title, AppState* state, const char* term) {

@@ -30,6 +30,11 @@ std::string formatLength(double value, const std::string& units);
 std::string formatArea(double value, const std::string& units);
 // A volume: '4500 mm^3'.
 std::string formatVolume(double value, const std::string& units);
+// A table column's header with the unit of its numbers ("Height, mm", "Volume, mm^3"; power 1 to 3); the bare name
+// in model units (the status bar says so). Its cells then hold columnNumber(value): the column stays narrow.
+std::string columnHeader(const char* name, const std::string& units, int power = 1);
+// Four significant digits, never an exponent: "15 790", "2.77".
+std::string columnNumber(double value);
 
 // A section heading: a gap, the title in the accent colour and a rule (ImGui 1.86 has no SeparatorText).
 void heading(const char* title);

@@ -139,4 +139,18 @@ total=$(awk '/^press-all: pressed/ { n += $3 } END { print n }' "$out/voxmod.log
 checks=$((checks + 1))
 echo "ok $checks - $total widgets pressed over $rounds rounds, the window still up"
 expect end.txt has_model 1
+
+# No text cut off in any state the scripts looked at (every panel, the assembly and one model): a glyph drawn past
+# its window's, child's or table cell's edge (app/clipped_text.h). Units go in a column's header, not each cell.
+states=0
+for f in "$out"/*.txt; do
+  name=$(basename "$f")
+  n=$(get "$name" clipped_text)
+  [[ -n "$n" ]] || continue
+  states=$((states + 1))
+  ((n == 0)) || fail "$name: $n lines of text cut off: $(grep '^clipped_in' "$f" | head -n 3 | tr '\n' ';')"
+done
+((states > 20)) || fail "only $states states say what text was cut off"
+checks=$((checks + 1))
+echo "ok $checks - no text cut off in $states states"
 echo "press test: $checks checks passed"

@@ -129,9 +129,9 @@ void hotSpots(AppState& state, const CastingOutcome& r, const std::string& units
   termMarker(state, "isolated");
   const int rows = std::min(int(spots.size()), 100);
   if (!beginScrollList("casting_hot_spots", 3, rows, 6)) return;
-  ImGui::TableSetupColumn("Freezes at");
-  ImGui::TableSetupColumn("Modulus");
-  ImGui::TableSetupColumn("Where");
+  ImGui::TableSetupColumn("Freezes at", ImGuiTableColumnFlags_WidthFixed, 95.0f);
+  ImGui::TableSetupColumn(columnHeader("Modulus", units).c_str(), ImGuiTableColumnFlags_WidthFixed, 95.0f);
+  ImGui::TableSetupColumn("Where", ImGuiTableColumnFlags_WidthStretch);
   ImGui::TableHeadersRow();
   for (int i = 0; i < rows; ++i) {
     const CastingHotSpot& s = spots[size_t(i)];
@@ -150,7 +150,7 @@ void hotSpots(AppState& state, const CastingOutcome& r, const std::string& units
     ImGui::PopStyleColor();
     ImGui::PopID();
     ImGui::TableSetColumnIndex(1);
-    ImGui::TextUnformatted(formatLength(s.modulus, units).c_str());
+    ImGui::TextUnformatted(columnNumber(s.modulus).c_str());
     ImGui::TableSetColumnIndex(2);
     ImGui::Text("%.4g, %.4g, %.4g", s.centre.x, s.centre.y, s.centre.z);
   }

@@ -24,20 +24,6 @@ namespace {
 
 constexpr int kMostPairs = 500;  // more would not be read; the count above the list says how many there are
 
-// A volume column's header: with the unit when the model has one ("Volume, mm^3"), else "Volume" (in model units).
-std::string volumeHeader(const std::string& units) {
-  return units == "model" || units.empty() ? std::string("Volume") : "Volume, " + unitsLabel(units) + "^3";
-}
-
-// A volume for a column headed with its unit: four significant digits, never an exponent ("15 790", "2.77").
-std::string volumeText(int64_t voxels, double voxel_size) {
-  const double v = double(voxels) * voxel_size * voxel_size * voxel_size;
-  if (v >= 1000.0) return groupDigits(int64_t(std::llround(v)));
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
-
 bool beginList(const char* id, int columns, int rows, int most_rows) {
   const float row_h = ImGui::GetTextLineHeightWithSpacing() + 2.0f;
   const float height = float(std::min(rows, most_rows) + 1) * row_h + 6.0f;
@@ -110,7 +96,7 @@ void drawPartRow(AppState& state, const Assembly& parts, size_t i, int64_t voxel
     }
   }
   ImGui::TableSetColumnIndex(2);
-  ImGui::TextUnformatted(volumeText(voxels, parts.lattice().voxel_size).c_str());
+  ImGui::TextUnformatted(columnNumber(double(voxels) * std::pow(parts.lattice().voxel_size, 3)).c_str());
   ImGui::PopID();
 }
 
@@ -122,7 +108,8 @@ void drawPartList(AppState& state, const Assembly& parts) {
   if (!beginList("parts", 3, int(parts.size()), 10)) return;
   ImGui::TableSetupColumn("Show", ImGuiTableColumnFlags_WidthFixed, 58.0f);
   ImGui::TableSetupColumn("Part");
-  ImGui::TableSetupColumn(volumeHeader(parts.lattice().units).c_str(), ImGuiTableColumnFlags_WidthFixed, 110.0f);
+  ImGui::TableSetupColumn(columnHeader("Volume", parts.lattice().units, 3).c_str(), ImGuiTableColumnFlags_WidthFixed,
+                          110.0f);
   ImGui::TableHeadersRow();
   ImGuiListClipper clipper;
   clipper.Begin(int(parts.size()));
@@ -259,7 +246,7 @@ void drawPairList(AppState& state, const Assembly& parts, const Interference& in
   ImGui::TableSetupColumn("A");
   ImGui::TableSetupColumn("B");
   ImGui::TableSetupColumn("Voxels", ImGuiTableColumnFlags_WidthFixed, 48.0f);
-  ImGui::TableSetupColumn(volumeHeader(units).c_str(), ImGuiTableColumnFlags_WidthFixed, 72.0f);
+  ImGui::TableSetupColumn(columnHeader("Volume", units, 3).c_str(), ImGuiTableColumnFlags_WidthFixed, 72.0f);
   ImGui::TableSetupColumn("Thick", ImGuiTableColumnFlags_WidthFixed, 56.0f);
   ImGui::TableHeadersRow();
   for (int i = 0; i < rows; ++i) {
@@ -279,7 +266,7 @@ void drawPairList(AppState& state, const Assembly& parts, const Interference& in
     ImGui::TableSetColumnIndex(2);
     ImGui::TextUnformatted(groupDigits(p.voxels).c_str());
     ImGui::TableSetColumnIndex(3);
-    ImGui::TextUnformatted(volumeText(p.voxels, h).c_str());
+    ImGui::TextUnformatted(columnNumber(double(p.voxels) * h * h * h).c_str());
     ImGui::TableSetColumnIndex(4);
     ImGui::TextUnformatted(formatLength(p.thickness, units).c_str());
     if (touches) ImGui::PopStyleColor();

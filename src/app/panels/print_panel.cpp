@@ -92,16 +92,16 @@ void cavityList(AppState& state, const PrintResult& r, const std::string& units)
                      formatVolume(r.check.trapped_volume, units).c_str());
   const int rows = std::min(int(cavities.size()), 200);
   if (!beginScrollList("print_cavities", 3, rows, 5)) return;
-  ImGui::TableSetupColumn("Volume");
+  ImGui::TableSetupColumn(columnHeader("Volume", units, 3).c_str());
   ImGui::TableSetupColumn("Centre");
-  ImGui::TableSetupColumn("Shortest drain");
+  ImGui::TableSetupColumn(columnHeader("Shortest drain", units).c_str());
   ImGui::TableHeadersRow();
   for (int i = 0; i < rows; ++i) {
     const TrappedCavity& c = cavities[size_t(i)];
     ImGui::TableNextRow();
     ImGui::TableSetColumnIndex(0);
     ImGui::PushID(i);
-    if (widget::Selectable(formatVolume(c.volume, units).c_str(), selectedCavity(state) == &c,
+    if (widget::Selectable(columnNumber(c.volume).c_str(), selectedCavity(state) == &c,
                            ImGuiSelectableFlags_SpanAllColumns)) {
       dispatchValues(state, ActionId::kPrintCavity, {std::to_string(i + 1)});
     }
@@ -109,7 +109,7 @@ void cavityList(AppState& state, const PrintResult& r, const std::string& units)
     ImGui::TableSetColumnIndex(1);
     ImGui::Text("%.4g, %.4g, %.4g", c.centre.x, c.centre.y, c.centre.z);
     ImGui::TableSetColumnIndex(2);
-    ImGui::TextUnformatted(c.drain ? formatLength(c.drain->length, units).c_str() : "none straight");
+    ImGui::TextUnformatted(c.drain ? columnNumber(c.drain->length).c_str() : "none straight");
   }
   ImGui::EndTable();
 }
@@ -127,8 +127,8 @@ void orientationList(AppState& state, const PrintResult& r, const std::string& u
   const int rows = std::min(int(list.size()), kMostOrientationRows);
   if (!beginScrollList("print_orientations", 3, rows, 8)) return;
   ImGui::TableSetupColumn("Up", ImGuiTableColumnFlags_WidthFixed, 135.0f);
-  ImGui::TableSetupColumn("Support");
-  ImGui::TableSetupColumn("Height");
+  ImGui::TableSetupColumn(columnHeader("Support", units, 3).c_str());
+  ImGui::TableSetupColumn(columnHeader("Height", units).c_str());
   ImGui::TableHeadersRow();
   const std::string now = printDirectionName(state.print_ui.up);
   for (int i = 0; i < rows; ++i) {
@@ -142,9 +142,9 @@ void orientationList(AppState& state, const PrintResult& r, const std::string& u
     }
     ImGui::PopID();
     ImGui::TableSetColumnIndex(1);
-    ImGui::TextUnformatted(formatVolume(s.support_volume, units).c_str());
+    ImGui::TextUnformatted(columnNumber(s.support_volume).c_str());
     ImGui::TableSetColumnIndex(2);
-    ImGui::TextUnformatted(formatLength(s.height, units).c_str());
+    ImGui::TextUnformatted(columnNumber(s.height).c_str());
   }
   ImGui::EndTable();
 }
