@@ -6,6 +6,8 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <imgui.h>
+#include <imgui_internal.h>  // GetActiveID
 
 #include "app/actions.h"
 #include "app/ui.h"
@@ -61,20 +63,30 @@ void drawViewCube(AppState& state, ImVec2 centre, float half) {
     if (glm::dot(f.normal, eye) > kSeen) seen.push_back(&f);
   std::sort(seen.begin(), seen.end(),
             [&](const Face* a, const Face* b) { return glm::dot(a->normal, eye) < glm::dot(b->normal, eye); });
-  // a button over the cube's box takes the click before the view's orbit does
-  const float reach = half * 1.75f;
-  const ImVec2 box_min(centre.x - reach, centre.y - reach);
-  ImGui::SetCursorScreenPos(box_min);
-  const bool clicked = ImGui::InvisibleButton("##view_cube", ImVec2(2.0f * reach, 2.0f * reach));
-  const bool hovered = ImGui::IsItemHovered();
+  std::vector<std::array<ImVec2, 4>> quads;
   const ImVec2 mouse = ImGui::GetIO().MousePos;
-  ImDrawList* dl = ImGui::GetWindowDrawList();
   const Face* under = nullptr;
   for (const Face* f : seen) {
-    const std::array<ImVec2, 4> q = {screen(f->normal - f->u - f->v), screen(f->normal + f->u - f->v),
-                                     screen(f->normal + f->u + f->v), screen(f->normal - f->u + f->v)};
-    const bool over = hovered && insideQuad(q, mouse);
-    if (over) under = f;
+    quads.push_back({screen(f->normal - f->u - f->v), screen(f->normal + f->u - f->v), screen(f->normal + f->u + f->v),
+                     screen(f->normal - f->u + f->v)});
+    if (insideQuad(quads.back(), mouse)) under = f;
+  }
+  // A button takes the click before the view's orbit does, only over a face (or while it is held): a click beside
+  // the cube orbits the view.
+  const float reach = half * 1.75f;
+  const ImGuiID id = ImGui::GetID("##view_cube");
+  bool clicked = false, hovered = false;
+  if (under || ImGui::GetActiveID() == id) {
+    ImGui::SetCursorScreenPos(ImVec2(centre.x - reach, centre.y - reach));
+    clicked = ImGui::InvisibleButton("##view_cube", ImVec2(2.0f * reach, 2.0f * reach));
+    hovered = ImGui::IsItemHovered();
+  }
+  if (!hovered) under = nullptr;
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  for (size_t i = 0; i < seen.size(); ++i) {
+    const Face* f = seen[i];
+    const std::array<ImVec2, 4>& q = quads[i];
+    const bool over = f == under;
     const int shade = 70 + int(110.0 * glm::dot(f->normal, eye));
     dl->AddQuadFilled(q[0], q[1], q[2], q[3],
                       over ? IM_COL32(90, 140, 220, 230) : IM_COL32(shade, shade, shade + 25, 210));
