@@ -263,13 +263,133 @@ def render_table(b):
             table(["case", ">wall", ">process CPU", ">points"], rows))
 
 
+def gib(mib):
+    return f"{mib / 1024:.2f} GiB" if mib >= 1024 else f"{mib:.0f} MiB"
+
+
+def streamed_table(b):
+    """Grids larger than memory: streamed voxelization and reading in windows"""
+    rows = []
+    for res, limit in ((2048, None), (2048, "512M"), (4096, None), (4096, "512M"), (8192, None)):
+        vxm = b.scratch(f"igea{res}.vxm")
+        extra = ["--memory-limit", limit] if limit else []
+        j, wall, peak = b.cli(["voxelize", b.mesh("igea_refined_508k.stl"), "--res", str(res), "-o", vxm] + extra)
+        nx, _, nz = j["dims"]
+        reads = (["info"], ["mass"], ["section", "--axis", "z", "--index", str(nz // 2)],
+                 ["section", "--axis", "x", "--index", str(nx // 2)], ["xray", "--axis", "z", "--mode", "max"])
+        cells = [f"{res} ({' x '.join(str(d) for d in j['dims'])}; `.vxm` {os.path.getsize(vxm) / 2**20:.1f} MiB)",
+                 ("streamed, " + (limit or "default limit")) if j.get("streamed") else "in memory",
+                 f"{sec(wall)}, {gib(peak)}"]
+        for read in reads:
+            out = [b.scratch("read.png")] if read[0] in ("section", "xray") else []
+            _, w, pk = b.cli([read[0], vxm] + read[1:] + (["-o"] + out if out else []) + extra)
+            cells.append(f"{sec(w)}, {gib(pk)}")
+        os.remove(vxm)
+        rows.append(cells)
+    return ("Grids larger than memory: streamed voxelization and reading in windows",
+            "Command: `bench/tables.py streamed` (`voxmod voxelize igea_refined_508k.stl --res R -o igea.vxm --json "
+            "[--memory-limit 512M]`, then `info`, `mass`, `section --axis z|x` (the middle index), `xray --axis z "
+            "--mode max` on the file with the same limit, under `/usr/bin/time`). Wall, peak resident.",
+            table(["R (dims; `.vxm`)", "how", ">voxelize", ">info", ">mass", ">section z", ">section x",
+                   ">xray z max"], rows))
+
+
+def parts_move_table(b):
+    """The window: moving a part of the cycloidal drive"""
+    r = b.gbench("parts_move_bench", ".*", env={"VOXMOD_BENCH_R": "1000"})
+    rows = [[n.split("/")[-1], ms(x["real_time"]) + " ms", ms(x["placePart_ms"]) + " ms",
+             ms(x["syncRenderers_ms"]) + " ms", int(x["parts"])] for n, x in r.items()]
+    return ("The window: moving a part of the cycloidal drive",
+            "Command: `bench/tables.py parts-move` (`VOXMOD_BENCH_R=1000 parts_move_bench`, EGL, llvmpipe): part N "
+            "of the drive's bodies moved a voxel along X and back, mean of 4 moves, the frame's drawing left out.",
+            table([">part", ">whole move", ">placePart (new state, union)", ">syncRenderers", ">parts"], rows))
+
+
+def cad_table(b):
+    """CAD input: a STEP assembly opened, tessellated and voxelized at R = 500"""
+    rows = []
+    for cad in ("as1-oc-214.stp", "box_sides.STEP"):
+        r = b.gbench("cad_bench", ".*", env={"VOXMOD_BENCH_CAD": cad}, extra=["--benchmark_min_time=1"])
+        read, tess = r["BM_CadRead"], r["BM_CadTessellate"]
+        vox, whole = r["BM_CadVoxelize"], r["BM_CadOpenTessellateVoxelize"]
+        j, wall, peak = b.cli(["voxelize", os.path.join(b.shared, "meshes", "cad", cad), "--res", "500", "-o",
+                               b.scratch("cad.vxm")])
+        rows.append([f"{cad} ({' x '.join(str(d) for d in j['dims'])})", int(read["solids"]),
+                     ms(read["real_time"]) + " ms", ms(tess["real_time"]) + " ms", f"{int(tess['triangles']):,}",
+                     ms(vox["real_time"]) + " ms", ms(whole["real_time"]) + " ms", sec(wall), f"{peak:.0f} MiB"])
+    return ("CAD input: a STEP assembly opened, tessellated and voxelized at R = 500",
+            "Command: `bench/tables.py cad` (`VOXMOD_BENCH_CAD=FILE cad_bench --benchmark_min_time=1`; the CLI: "
+            "`voxmod voxelize cad/FILE --res 500 -o x.vxm --json` under `/usr/bin/time`). Wall time.",
+            table(["file", ">solids", ">read + heal", ">tessellate", ">triangles", ">voxelize", ">all three",
+                   ">CLI wall", ">CLI peak"], rows))
+
+
+def report_table(b):
+    """The report"""
+    out = b.scratch("r.html")
+    j, wall, peak = b.cli(["report", b.mesh("rocker_arm.stl"), "--res", "300", "--units", "mm", "--min-wall", "0.02",
+                           "--material", "aluminium", "-o", out])
+    rows = [["rocker_arm, R = 300", sec(j["report_s"]), sec(wall), f"{peak:.0f} MiB",
+             f"{os.path.getsize(out) / 1e3:.0f} kB"]]
+    return ("The report", "Command: `bench/tables.py report` (`voxmod report rocker_arm.stl --res 300 --units mm "
+            "--min-wall 0.02 --material aluminium -o r.html --json` under `/usr/bin/time`; `report_s`: the analyses, "
+            "the pictures and the page). No peer.",
+            table(["part", ">report_s", ">whole command", ">peak", ">page"], rows))
+
+
+def window_script(b, script, args=()):
+    """A window run under Xvfb with a script: (its output, peak resident MiB)."""
+    path = b.scratch("run.script")
+    open(path, "w").write(script)
+    timing = b.scratch("time.txt")
+    cmd = ["/usr/bin/time", "-f", "%e %M", "-o", timing, "xvfb-run", "-a", "-s", "-screen 0 1280x800x24", b.voxmod,
+           *args, "--size", "1280x800", "--script", path]
+    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
+    return out, float(open(timing).read().split()[-1]) / 1024
+
+
+def peel_table(b):
+    """The window: peel to core at R = 4096"""
+    script = (f"open {b.mesh('rocker_arm.stl')}\nvoxelize 4096\nstate {b.scratch('model.txt')}\npanel-skin\n"
+              f"peel-core\nstate {b.scratch('peeled.txt')}\nexit\n")
+    t0 = datetime.datetime.now()
+    _, peak = window_script(b, script)
+    wall = (datetime.datetime.now() - t0).total_seconds()
+    state = dict(l.split(" = ", 1) for l in open(b.scratch("peeled.txt")).read().splitlines() if " = " in l)
+    rows = [[state.get("dims", "?").replace(" ", " x "), state.get("layers", "?"), state.get("peeled", "?"), sec(wall), gib(peak)]]
+    return ("The window: peel to core at R = 4096",
+            "Command: `bench/tables.py peel` (the window under Xvfb with a script: `open rocker_arm.stl`, "
+            "`voxelize 4096`, `panel-skin`, `peel-core`; the whole run under `/usr/bin/time`). The window refuses "
+            "skin layers when the bound plus the model exceeds 80% of physical memory.",
+            table(["grid", ">skin layers", ">peeled", ">whole run (voxelize, depth map, peel)", ">peak"], rows))
+
+
+def slider_table(b):
+    """The window: dragging the section slider"""
+    sweep = open(os.path.join(ROOT, "tests", "gui", "bench_section_sweep.script")).read()
+    out, _ = window_script(b, sweep, [b.mesh("igea_refined_508k.stl")])
+    rows = []
+    for line in out.splitlines():
+        m = re.match(r"sweep (\w): (\d+) frames, (.*?) voxels, (\d+) surface points .* lod (\w+): mean ([\d.]+) ms, "
+                     r"median [\d.]+ ms, ([\d.]+) fps", line)
+        if m:
+            rows.append([f"along {m[1].upper()}, {m[3]}, {int(m[4]) / 1e3:.0f} k points, lod {m[5]}", m[2],
+                         m[6] + " ms", m[7]])
+    return ("The window: dragging the section slider",
+            "Command: `bench/tables.py slider` (`voxmod igea_refined_508k.stl --size 1280x800 --script "
+            "tests/gui/bench_section_sweep.script` under Xvfb: one section per frame; llvmpipe).",
+            table(["sweep", ">frames", ">frame mean", ">frames per second"], rows))
+
+
 # The tables whose sections in docs/performance.md have the layout the script writes (--write replaces only these;
 # the others' sections carry more: rows of other tools, targets, a second machine, and are merged by hand).
 WRITABLE = {"casting"}
 
-TABLES = {"voxelize": voxelize_table, "batch": batch_table, "assemblies": assemblies_table, "io": io_table,
+TABLES = {"voxelize": voxelize_table, "streamed": streamed_table, "batch": batch_table,
+          "assemblies": assemblies_table, "parts-move": parts_move_table, "io": io_table, "cad": cad_table,
           "analysis": analysis_table, "distance": distance_table, "printability": printability_table,
-          "casting": casting_table, "surface": export_tables, "render": render_table}
+          "casting": casting_table, "report": report_table, "surface": export_tables, "peel": peel_table,
+          "render": render_table, "slider": slider_table}
 
 
 def replace_section(doc, heading, paragraph, lines):

@@ -51,9 +51,11 @@ std::string eglErrorName(EGLint e) {
 // EGL displays are per process and shared: eglTerminate on one would kill every context on it. Count the live
 // HeadlessContexts per display and terminate with the last one.
 std::mutex g_display_mutex;
+// Never destroyed: a context held by a static object (a benchmark's scene) is released after this file's function
+// statics would have gone, at exit.
 std::map<EGLDisplay, int>& displayUsers() {
-  static std::map<EGLDisplay, int> users;
-  return users;
+  static auto* users = new std::map<EGLDisplay, int>;
+  return *users;
 }
 
 bool hasExtension(const char* list, const std::string& name) {
