@@ -185,8 +185,9 @@ void slabVoxels(const VoxelGrid& grid, const SectionPlane& p, Add add) {
       const float rest = p.normal[b] * (float(vb) + 0.5f) + p.normal[c] * (float(vc) + 0.5f) - p.offset;
       float lo = (-p.half - rest) / p.normal[a] - 0.5f, hi = (p.half - rest) / p.normal[a] - 0.5f;
       if (lo > hi) std::swap(lo, hi);
-      const int32_t from = int32_t(std::max(std::floor(lo) - 1.0f, 0.0f));
-      const int32_t to = int32_t(std::min(std::ceil(hi) + 1.0f, float(dims[a] - 1)));
+      // clamped as floats first: a plane far outside the grid gives bounds no int32 holds
+      const int32_t from = int32_t(std::clamp(std::floor(lo) - 1.0f, 0.0f, float(dims[a])));
+      const int32_t to = int32_t(std::clamp(std::ceil(hi) + 1.0f, -1.0f, float(dims[a] - 1)));
       glm::ivec3 v;
       v[b] = vb;
       v[c] = vc;

@@ -340,6 +340,10 @@ TEST(CutAway, aPlaneAtAnAngleCutsTheFilledVoxelsOfItsSlab) {
   // Normal to an axis, the plane through the voxel centres of an index is that axis section.
   const CutAway z20{SectionAxis::kPlane, 0, SectionSide::kBelow, glm::vec3(0.0f, 0.0f, 1.0f), 20.5f};
   EXPECT_EQ(sectionPoints(g, z20).size(), sectionPoints(g, CutAway{SectionAxis::kZ, 20, SectionSide::kBelow}).size());
+  // A plane far outside the grid cuts nothing.
+  for (const float far : {1e12f, -1e12f}) {
+    EXPECT_TRUE(sectionPoints(g, CutAway{SectionAxis::kPlane, 0, SectionSide::kBelow, n, far}).empty());
+  }
   // At a level of detail with 2^k fine voxels per point the offset is in that level's units.
   EXPECT_FLOAT_EQ(sectionPlane(cut, 2).offset, offset / 4.0f);
   EXPECT_FLOAT_EQ(sectionPlane(CutAway{SectionAxis::kX, 21}, 1).offset, 10.5f);
