@@ -14,7 +14,7 @@ uniform vec3 u_material;        // colour of an intensity-1 surface point
 uniform vec3 u_cut_colour;      // colour of the section (cut-face) points, already shaded
 uniform float u_point_scale;    // point size in pixels times clip w: diameter_px = u_point_scale / w
 uniform float u_fixed_size;     // > 0: use this point size in pixels instead
-// The section (vox::render::SectionPlane, in point coordinates): a point whose centre c has
+// The section (vox::SectionPlane, vox/core/section_plane.h, in point coordinates): a point whose centre c has
 // s = dot(normal, c) - offset below -half is below the plane's slab, at half or more above it.
 uniform bool u_section_on;
 uniform vec4 u_section_plane;       // normal, offset

@@ -1,9 +1,9 @@
 // The half of a model on one side of a section plane (vox/analysis/cut.h): whole layers dropped along Z, whole rows
-// along Y, and bits masked within the rows along X; at any angle, voxel by voxel.
+// along Y, and bits masked within the rows along X; at any angle, each row's kept run masked.
 #include "vox/analysis/cut.h"
 
 #include <algorithm>
-#include <bit>
+#include <utility>
 
 namespace vox {
 namespace {
@@ -53,6 +53,25 @@ VoxelGrid cutAway(const VoxelGrid& grid, Axis axis, int32_t index, bool keep_abo
   return out;
 }
 
+namespace {
+
+// The run [first, last] of x that the plane keeps in row (y, z), empty when first > last. The slab's value is monotone
+// along the row (the row's x term of the plane's sum grows or falls with x, the rest is fixed), so what is kept is
+// all, none, a prefix or a suffix: its end is found by bisection on sectionSlab itself.
+std::pair<int32_t, int32_t> keptRun(const SectionPlane& plane, int32_t y, int32_t z, int32_t nx, int dropped) {
+  const auto kept = [&](int32_t x) { return sectionSlab(plane, glm::ivec3(x, y, z)) != dropped; };
+  const bool first = kept(0), last = kept(nx - 1);
+  if (first == last) return first ? std::pair{0, nx - 1} : std::pair{0, -1};
+  int32_t lo = 0, hi = nx - 1;  // kept(lo) == first, kept(hi) == last
+  while (hi - lo > 1) {
+    const int32_t mid = lo + (hi - lo) / 2;
+    (kept(mid) == first ? lo : hi) = mid;
+  }
+  return first ? std::pair{0, lo} : std::pair{hi, nx - 1};
+}
+
+}  // namespace
+
 VoxelGrid cutAway(const VoxelGrid& grid, const SectionPlane& plane, bool keep_above) {
   VoxelGrid out = grid;
   const int64_t wpr = grid.wordsPerRow();
@@ -61,14 +80,11 @@ VoxelGrid cutAway(const VoxelGrid& grid, const SectionPlane& plane, bool keep_ab
     if (!grid.layerAllocated(z)) continue;
     for (int32_t y = 0; y < grid.ny(); ++y) {
       const uint64_t* row = grid.rowWords(y, z);
+      if (std::all_of(row, row + wpr, [](uint64_t w) { return w == 0; })) continue;
+      const auto [first, last] = keptRun(plane, y, z, grid.nx(), dropped);
       uint64_t* dst = nullptr;
       for (int64_t w = 0; w < wpr; ++w) {
-        uint64_t keep = row[w];
-        for (uint64_t bits = row[w]; bits; bits &= bits - 1) {
-          const int bit = std::countr_zero(bits);
-          const int32_t x = int32_t(64 * w + bit - 1);  // one padding bit before voxel 0
-          if (sectionSlab(plane, glm::ivec3(x, y, z)) == dropped) keep &= ~(uint64_t(1) << bit);
-        }
+        const uint64_t keep = row[w] & rowMask(w, first, last);
         if (keep == row[w]) continue;
         if (!dst) dst = out.mutableRowWords(y, z);
         dst[w] = keep;

@@ -7,6 +7,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "vox/core/section_plane.h"
+
 namespace vox {
 namespace {
 
@@ -27,11 +29,11 @@ Result<ObliqueSection> computeObliqueSection(const VoxelGrid& grid, const Obliqu
   const double h = f.voxel_size;
   const glm::dvec3 box_min = f.origin;
   const glm::dvec3 box_max = f.origin + glm::dvec3(grid.nx(), grid.ny(), grid.nz()) * h;
-  if (!finite(params.normal) || glm::length(params.normal) == 0.0) {
+  glm::dvec3 unit;
+  if (!finite(params.normal) || !unitVector(params.normal, unit)) {
     return makeError(ErrorCode::kInvalidArgument, "the section's normal must be a non-zero vector");
   }
-  const glm::dvec3 point =
-      (params.point_given ? params.point : (box_min + box_max) * 0.5) + glm::normalize(params.normal) * params.offset;
+  const glm::dvec3 point = (params.point_given ? params.point : (box_min + box_max) * 0.5) + unit * params.offset;
   if (!finite(point)) {
     return makeError(ErrorCode::kInvalidArgument, "the section's point and offset must be finite");
   }
@@ -43,7 +45,7 @@ Result<ObliqueSection> computeObliqueSection(const VoxelGrid& grid, const Obliqu
     return makeError(ErrorCode::kInvalidArgument, "the section's pixel size is larger than the whole model");
   }
   ObliqueSection s;
-  s.normal = glm::normalize(params.normal);
+  s.normal = unit;
   s.point = point;
   s.pixel = pixel;
   planeAxes(s.normal, s.u, s.v);

@@ -17,10 +17,11 @@ Result<glm::dvec3> planeNormal(const glm::dvec3& a, const glm::dvec3& b, const g
   if (!(scale > 0.0) || !(glm::length(n) > 1e-9 * scale)) {
     return makeError(ErrorCode::kInvalidArgument, "the three points lie on one line; pick three that span a plane");
   }
-  glm::dvec3 unit = glm::normalize(n);
-  const glm::dvec3 m = glm::abs(unit);
-  const int big = m.x >= m.y && m.x >= m.z ? 0 : m.y >= m.z ? 1 : 2;
-  if (unit[big] < 0.0) unit = -unit;
+  glm::dvec3 unit;
+  if (!unitVector(n, unit)) {
+    return makeError(ErrorCode::kInvalidArgument, "the three points are too close together to give a plane");
+  }
+  if (unit[dominantAxis(unit)] < 0.0) unit = -unit;
   return unit;
 }
 
@@ -43,21 +44,25 @@ Status placeSectionPlane(SectionUi& section, const GridFrame& frame, const Dims&
     if (!n) return n.error();
     normal = *n;
   }
-  if (!(glm::length(normal) > 0.0)) return makeError(ErrorCode::kInvalidArgument, "the section's normal is zero");
+  glm::dvec3 unit;
+  if (!unitVector(normal, unit)) return makeError(ErrorCode::kInvalidArgument, "the section's normal is zero");
   const glm::dvec3 centre = frame.origin + 0.5 * frame.voxel_size * glm::dvec3(dims.nx, dims.ny, dims.nz);
   section.normal = normal;
-  section.offset = glm::dot(glm::normalize(normal), points[0] - centre);
+  section.offset = glm::dot(unit, points[0] - centre);
   section.oblique = true;
   return Ok{};
 }
 
 render::CutAway obliqueCutAway(const GridFrame& frame, const Dims& dims, const SectionUi& section) {
   render::CutAway cut;
-  cut.axis = render::SectionAxis::kPlane;
-  const glm::dvec3 n = glm::normalize(section.normal);
+  glm::dvec3 n;
+  if (!unitVector(section.normal, n) || !(frame.voxel_size > 0.0)) return cut;  // no cut
   const glm::dvec3 centre = 0.5 * glm::dvec3(dims.nx, dims.ny, dims.nz);
+  const double offset = glm::dot(n, centre) + section.offset / frame.voxel_size + kPlaneNudge;
+  if (!std::isfinite(offset)) return cut;
+  cut.axis = render::SectionAxis::kPlane;
   cut.normal = glm::vec3(n);
-  cut.offset = float(glm::dot(n, centre) + section.offset / frame.voxel_size);
+  cut.offset = float(offset);
   return cut;
 }
 

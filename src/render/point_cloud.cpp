@@ -175,9 +175,9 @@ namespace {
 // at most a few voxels, found from the plane's equation and checked by sectionSlab.
 template <class Add>
 void slabVoxels(const VoxelGrid& grid, const SectionPlane& p, Add add) {
-  const glm::vec3 m = glm::abs(p.normal);
-  const int a = m.x >= m.y && m.x >= m.z ? 0 : m.y >= m.z ? 1 : 2;
+  const int a = dominantAxis(p.normal);
   const int b = (a + 1) % 3, c = (a + 2) % 3;
+  if (!(std::abs(p.normal[a]) > 0.0f) || !std::isfinite(p.normal[a]) || !std::isfinite(p.offset)) return;
   const glm::ivec3 dims(grid.nx(), grid.ny(), grid.nz());
   for (int32_t vc = 0; vc < dims[c]; ++vc) {
     if (c == 2 && !grid.layerAllocated(vc)) continue;

@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
@@ -67,8 +66,7 @@ uint8_t cutFaceCode(const CutAway& section) {
   SectionAxis axis = section.axis;
   bool plus = section.side == SectionSide::kBelow;
   if (axis == SectionAxis::kPlane) {
-    const glm::vec3 m = glm::abs(section.normal);
-    const int a = m.x >= m.y && m.x >= m.z ? 0 : m.y >= m.z ? 1 : 2;
+    const int a = dominantAxis(section.normal);
     axis = SectionAxis(a + 1);
     plus = plus == (section.normal[a] > 0.0f);
   }

@@ -63,5 +63,23 @@ TEST(SectionPlane, throughOneVoxelTheNormalIsKeptAndBadPicksLeaveTheSectionAsItW
   EXPECT_EQ(s.offset, before.offset);
 }
 
+// A normal of any size gives a direction (its largest component scaled to 1 first), so a tiny or huge one cuts as its
+// unit vector does; one that gives no direction cuts nothing. The cut is moved kPlaneNudge voxels off the plane.
+TEST(SectionPlane, theCutAwayTakesANormalOfAnySizeAndMovesOffTheVoxelCentres) {
+  const Dims dims{40, 30, 20};
+  SectionUi s;
+  s.offset = 0.0;
+  for (const glm::dvec3 n : {glm::dvec3(1e-200, 0.0, 0.0), glm::dvec3(1e200, 0.0, 1e-300), glm::dvec3(3.0, 0.0, 0.0)}) {
+    s.normal = n;
+    const render::CutAway cut = obliqueCutAway(frame(), dims, s);
+    ASSERT_EQ(cut.axis, render::SectionAxis::kPlane);
+    EXPECT_FLOAT_EQ(cut.normal.x, 1.0f);
+    EXPECT_FLOAT_EQ(cut.normal.z, 0.0f);
+    EXPECT_FLOAT_EQ(cut.offset, float(20.0 + kPlaneNudge));  // the box's centre, x = 20 voxels
+  }
+  s.normal = glm::dvec3(0.0);
+  EXPECT_EQ(obliqueCutAway(frame(), dims, s).axis, render::SectionAxis::kNone);
+}
+
 }  // namespace
 }  // namespace vox::app

@@ -31,13 +31,12 @@ void drawThicknessPanel(AppState& state);
 void drawPartsPanel(AppState& state);    // parts of a scene, Booleans, interference (parts_panel.cpp)
 void drawPrintPanel(AppState& state);    // overhangs, support, trapped cavities, the best way up (print_panel.cpp)
 void drawCastingPanel(AppState& state);  // alloy, mould, feeders, the run, hot spots, verdict (casting_panel.cpp)
-
-// The 2D images beside the 3D view (Section and X-ray panels).
-// The model's length units (units_choice.cpp): a combo dispatching model-units, and while the units are not known a
-// prompt saying why they matter here, with the combo (false when they are known: nothing drawn).
+// The model's length units (units_choice.cpp): a combo dispatching model-units, and while the units are not known
+// ("model units") a prompt saying why they matter here, with the combo (false when they are known: nothing drawn).
 void drawUnitsCombo(AppState& state, const char* label);
 bool drawUnitsPrompt(AppState& state, const char* why);
 
+// The 2D images beside the 3D view (Section and X-ray panels).
 void drawSectionImage(AppState& state);
 void drawXrayImage(AppState& state);
 void drawThicknessImage(AppState& state);  // the section coloured by thickness (Thickness panel)

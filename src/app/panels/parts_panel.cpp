@@ -246,7 +246,7 @@ void drawPairList(AppState& state, const Assembly& parts, const Interference& in
   ImGui::TableSetupColumn("A");
   ImGui::TableSetupColumn("B");
   ImGui::TableSetupColumn("Voxels", ImGuiTableColumnFlags_WidthFixed, 48.0f);
-  ImGui::TableSetupColumn(columnHeader("Volume", units, 3).c_str(), ImGuiTableColumnFlags_WidthFixed, 72.0f);
+  ImGui::TableSetupColumn(columnHeader("Volume", units, 3).c_str(), ImGuiTableColumnFlags_WidthFixed, 92.0f);
   ImGui::TableSetupColumn("Thick", ImGuiTableColumnFlags_WidthFixed, 56.0f);
   ImGui::TableHeadersRow();
   for (int i = 0; i < rows; ++i) {

@@ -66,8 +66,9 @@ std::string numberWord(double v) {
   return buf;
 }
 
-// Whether and which half the 3D view cuts away at the section (axis or any angle), and the section's export.
-void drawCutAwayControls(AppState& state) {
+// Whether and which half the 3D view cuts away at the section (axis or any angle), and the section's export when
+// there is a section.
+void drawCutAwayControls(AppState& state, bool can_export = true) {
   heading("3D view");
   actionCheckbox(state, ActionId::kViewCut, "Cut away the model at the section");
   if (state.view.cut_away) {
@@ -77,6 +78,7 @@ void drawCutAwayControls(AppState& state) {
     widget::RadioButton("Keep above", &keep, 1);
     state.view.keep_above = keep == 1;
   }
+  if (!can_export) return;
   ImGui::Spacing();
   if (widget::Button("Export section PNG...")) dispatch(state, ActionId::kExportSectionPng);
 }
@@ -130,6 +132,7 @@ void drawObliqueControls(AppState& state) {
     edited = true;
   }
   markWidget("section_offset");
+  if (ImGui::IsItemActive()) state.viewport.interacting = true;  // coarse 3D points while dragging
   if (edited && normal != glm::dvec3(0.0)) {
     dispatchValues(state, ActionId::kSectionPlane,
                    {numberWord(normal.x), numberWord(normal.y), numberWord(normal.z), numberWord(offset)});
@@ -138,7 +141,7 @@ void drawObliqueControls(AppState& state) {
   const ObliqueSection* o = currentObliqueSection(state);
   if (!o) {
     if (!state.oblique_error.empty()) ImGui::TextWrapped("%s", state.oblique_error.c_str());
-    drawCutAwayControls(state);
+    drawCutAwayControls(state, false);
     return;
   }
   heading("This section");

@@ -1,5 +1,6 @@
 // The model's length units chosen in the window (the model-units action): one combo, and the prompt a panel shows
-// while the model's units are not known (a file that names none, and nothing remembered for it).
+// while the model's units are not known: "model units", as a file that names none opens until units are chosen (a
+// choice is remembered for the file).
 #include <string>
 
 #include <imgui.h>

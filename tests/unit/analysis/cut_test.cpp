@@ -57,22 +57,26 @@ TEST(CutAway, atAnAngleKeepsTheVoxelsOnItsSideOfThePlaneAndItsSlab) {
     for (int y = 0; y < d.ny; ++y)
       for (int x = 0; x < d.nx; ++x)
         if (z != 3 && coin(rng)) g.set(x, y, z);
-  const glm::dvec3 n = glm::normalize(glm::dvec3(0.8, -0.4, 0.45));
-  const double offset = 14.137;
-  const SectionPlane plane = sectionPlaneOf(glm::vec3(n), float(offset));
-  const double half = 0.5 * (std::abs(n.x) + std::abs(n.y) + std::abs(n.z));
-  const VoxelGrid below = cutAway(g, plane, false), above = cutAway(g, plane, true);
-  int64_t slab = 0;
-  for (int z = 0; z < d.nz; ++z)
-    for (int y = 0; y < d.ny; ++y)
-      for (int x = 0; x < d.nx; ++x) {
-        const double s = glm::dot(n, glm::dvec3(x, y, z) + 0.5) - offset;
-        ASSERT_EQ(below.get(x, y, z), g.get(x, y, z) && s < half) << x << "," << y << "," << z;
-        ASSERT_EQ(above.get(x, y, z), g.get(x, y, z) && s >= -half) << x << "," << y << "," << z;
-        slab += g.get(x, y, z) && s >= -half && s < half;
-      }
-  EXPECT_GT(slab, 0);
-  EXPECT_EQ(below.filledCount() + above.filledCount(), g.filledCount() + slab);
+  // Leaning along +X, along -X (each row's kept run a suffix, not a prefix) and nearly along -Z.
+  for (const glm::dvec3 normal :
+       {glm::dvec3(0.8, -0.4, 0.45), glm::dvec3(-0.9, 0.2, 0.1), glm::dvec3(0.1, 0.3, -0.95)}) {
+    const glm::dvec3 n = glm::normalize(normal);
+    const double offset = glm::dot(n, glm::dvec3(35.0, 4.5, 5.5)) + 0.137;  // near the grid's centre
+    const SectionPlane plane = sectionPlaneOf(glm::vec3(n), float(offset));
+    const double half = 0.5 * (std::abs(n.x) + std::abs(n.y) + std::abs(n.z));
+    const VoxelGrid below = cutAway(g, plane, false), above = cutAway(g, plane, true);
+    int64_t slab = 0;
+    for (int z = 0; z < d.nz; ++z)
+      for (int y = 0; y < d.ny; ++y)
+        for (int x = 0; x < d.nx; ++x) {
+          const double s = glm::dot(n, glm::dvec3(x, y, z) + 0.5) - offset;
+          ASSERT_EQ(below.get(x, y, z), g.get(x, y, z) && s < half) << x << "," << y << "," << z;
+          ASSERT_EQ(above.get(x, y, z), g.get(x, y, z) && s >= -half) << x << "," << y << "," << z;
+          slab += g.get(x, y, z) && s >= -half && s < half;
+        }
+    EXPECT_GT(slab, 0);
+    EXPECT_EQ(below.filledCount() + above.filledCount(), g.filledCount() + slab);
+  }
 }
 
 TEST(CutAway, leavesTheModelItCameFromUnchanged) {

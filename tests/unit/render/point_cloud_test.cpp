@@ -308,15 +308,16 @@ TEST(CutAway, aPlaneAtAnAngleSeparatesTheHalvesByAGaplessSlab) {
   }
 }
 
-TEST(CutAway, aPlaneAtAnAngleCutsTheFilledVoxelsOfItsSlab) {
-  const VoxelGrid g = ball(40, 15.7);
-  const glm::vec3 n = glm::normalize(glm::vec3(1.0f, 2.0f, 3.0f));
-  const glm::dvec3 nd = glm::normalize(glm::dvec3(1.0, 2.0, 3.0));
+// Checks a plane with this normal (any signs, any largest component) through about the ball's centre.
+void checkSlabOfBall(const VoxelGrid& g, const glm::dvec3& normal) {
+  const glm::vec3 n = glm::vec3(glm::normalize(normal));
+  const glm::dvec3 nd = glm::dvec3(n);
   const float offset = float(glm::dot(nd, glm::dvec3(20.0))) + 0.123f;  // near the ball's centre
   const CutAway cut{SectionAxis::kPlane, 0, SectionSide::kBelow, n, offset};
   const auto pts = sectionPoints(g, cut);
   // Independently: the filled voxels whose centre lies within half the normal's L1 norm of the plane (double).
-  const double half = 0.5 * (nd.x + nd.y + nd.z);
+  const double l1 = std::abs(nd.x) + std::abs(nd.y) + std::abs(nd.z);
+  const double half = 0.5 * l1;
   int64_t expected = 0;
   for (int32_t z = 0; z < 40; ++z)
     for (int32_t y = 0; y < 40; ++y)
@@ -335,8 +336,19 @@ TEST(CutAway, aPlaneAtAnAngleCutsTheFilledVoxelsOfItsSlab) {
     EXPECT_EQ(sectionSlab(sectionPlane(cut), {p.x, p.y, p.z}), 0);
   }
   // A standard plane holds |n|_1 voxels per unit of its area: the disc of radius 15.7 through (about) the centre.
-  const double disc = 3.14159265358979 * 15.7 * 15.7 * (nd.x + nd.y + nd.z);
+  const double disc = 3.14159265358979 * 15.7 * 15.7 * l1;
   EXPECT_NEAR(double(pts.size()), disc, 0.05 * disc);
+}
+
+TEST(CutAway, aPlaneAtAnAngleCutsTheFilledVoxelsOfItsSlab) {
+  const VoxelGrid g = ball(40, 15.7);
+  for (const glm::dvec3 n : {glm::dvec3(1, 2, 3), glm::dvec3(-3, 1, 0.5), glm::dvec3(0.2, -2, 0.7)}) {
+    SCOPED_TRACE(::testing::Message() << "normal " << n.x << " " << n.y << " " << n.z);
+    checkSlabOfBall(g, n);
+  }
+  const glm::vec3 n = glm::normalize(glm::vec3(1.0f, 2.0f, 3.0f));
+  const float offset = float(glm::dot(glm::dvec3(n), glm::dvec3(20.0))) + 0.123f;
+  const CutAway cut{SectionAxis::kPlane, 0, SectionSide::kBelow, n, offset};
   // Normal to an axis, the plane through the voxel centres of an index is that axis section.
   const CutAway z20{SectionAxis::kPlane, 0, SectionSide::kBelow, glm::vec3(0.0f, 0.0f, 1.0f), 20.5f};
   EXPECT_EQ(sectionPoints(g, z20).size(), sectionPoints(g, CutAway{SectionAxis::kZ, 20, SectionSide::kBelow}).size());
