@@ -20,6 +20,18 @@ uint64_t rowMask(int64_t w, int64_t lo, int64_t hi) {
   return ones << (b0 - 64 * w);
 }
 
+// Row (y, z) of `out` (sharing `grid`'s layers) keeps only x in [lo, hi]; the row is copied only when that changes it.
+void keepRun(const VoxelGrid& grid, VoxelGrid& out, int32_t y, int32_t z, int64_t lo, int64_t hi) {
+  const uint64_t* row = grid.rowWords(y, z);
+  uint64_t* dst = nullptr;
+  for (int64_t w = 0; w < grid.wordsPerRow(); ++w) {
+    const uint64_t keep = row[w] & rowMask(w, lo, hi);
+    if (keep == row[w]) continue;
+    if (!dst) dst = out.mutableRowWords(y, z);
+    dst[w] = keep;
+  }
+}
+
 }  // namespace
 
 VoxelGrid cutAway(const VoxelGrid& grid, Axis axis, int32_t index, bool keep_above) {
@@ -40,13 +52,7 @@ VoxelGrid cutAway(const VoxelGrid& grid, Axis axis, int32_t index, bool keep_abo
         if (!kept(y, index, keep_above)) std::fill_n(out.mutableRowWords(y, z), wpr, uint64_t(0));
         continue;
       }
-      uint64_t* dst = nullptr;
-      for (int64_t w = 0; w < wpr; ++w) {
-        const uint64_t keep = row[w] & rowMask(w, lo, hi);
-        if (keep == row[w]) continue;
-        if (!dst) dst = out.mutableRowWords(y, z);
-        dst[w] = keep;
-      }
+      keepRun(grid, out, y, z, lo, hi);
     }
   }
   out.releaseEmptyLayers();
@@ -82,13 +88,7 @@ VoxelGrid cutAway(const VoxelGrid& grid, const SectionPlane& plane, bool keep_ab
       const uint64_t* row = grid.rowWords(y, z);
       if (std::all_of(row, row + wpr, [](uint64_t w) { return w == 0; })) continue;
       const auto [first, last] = keptRun(plane, y, z, grid.nx(), dropped);
-      uint64_t* dst = nullptr;
-      for (int64_t w = 0; w < wpr; ++w) {
-        const uint64_t keep = row[w] & rowMask(w, first, last);
-        if (keep == row[w]) continue;
-        if (!dst) dst = out.mutableRowWords(y, z);
-        dst[w] = keep;
-      }
+      keepRun(grid, out, y, z, first, last);
     }
   }
   out.releaseEmptyLayers();

@@ -24,15 +24,16 @@ void clearMeasure(MeasureUi& m) {
   m.recent.clear();
 }
 
-const std::vector<glm::ivec3>& recentPicks(const AppState& state) {
+namespace {
+// The picks when they were made on the current model's lattice, else none.
+const std::vector<glm::ivec3>& onModel(const AppState& state, const std::vector<glm::ivec3>& picks) {
   static const std::vector<glm::ivec3> none;
-  return state.measure.dims == state.model.dims() ? state.measure.recent : none;
+  return state.measure.dims == state.model.dims() ? picks : none;
 }
+}  // namespace
 
-const std::vector<glm::ivec3>& measurePicks(const AppState& state) {
-  static const std::vector<glm::ivec3> none;
-  return state.measure.dims == state.model.dims() ? state.measure.picks : none;
-}
+const std::vector<glm::ivec3>& recentPicks(const AppState& state) { return onModel(state, state.measure.recent); }
+const std::vector<glm::ivec3>& measurePicks(const AppState& state) { return onModel(state, state.measure.picks); }
 
 namespace {
 
